@@ -1,0 +1,216 @@
+"""The project's code generator: SymPy expressions in, a plain NumPy module out.
+
+Three steps, one backend (NumPy source with common subexpressions eliminated):
+
+- ``render(...)`` returns the module text;
+- ``write(...)`` rewrites ``mech/_generated/<stem>.py`` only when the input hash changed,
+  then checks the module numerically against mpmath;
+- ``check_fresh(...)`` checks the committed module without writing it.
+
+A derivation notebook ends with one ``write`` call. With the environment variable
+``MECH_CODEGEN=check`` (set by ``python -m derivations --check`` and by the freshness
+test), ``write`` only checks. SymPy's CSE output is not deterministic across machines, so
+freshness is the hash of the ``srepr`` of the inputs plus numeric agreement, never the text.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import mpmath
+import numpy as np
+import sympy as sm
+from sympy.printing.numpy import NumPyPrinter
+
+__all__ = ["Function", "render", "write", "check_fresh", "input_hash", "GENERATED_DIR"]
+
+#: Bump when the template changes, so every module is regenerated.
+GENERATOR_VERSION = "1"
+GENERATED_DIR = Path(__file__).resolve().parent.parent / "mech" / "_generated"
+
+
+@dataclass(frozen=True)
+class Function:
+    """One generated function: named arguments in, named expressions out.
+
+    Parameters
+    ----------
+    name : str
+        Python name of the function, after the quantity it computes (``fourbar_psi``).
+    summary : str
+        One-line docstring summary.
+    args : sequence of (Symbol, str)
+        Arguments in call order, each with a short description (shape, unit).
+    outputs : sequence of (str, Expr, str)
+        Returned quantities: name, expression and description. One output is returned
+        bare, several as a tuple in this order.
+    domain : dict Symbol -> (low, high)
+        Where the numeric check samples each argument (uniformly).
+    """
+
+    name: str
+    summary: str
+    args: tuple
+    outputs: tuple
+    domain: dict = field(default_factory=dict)
+
+    def symbols(self):
+        return [s for s, _ in self.args]
+
+    def exprs(self):
+        return [sm.sympify(e) for _, e, _ in self.outputs]
+
+
+def _canonical_text(functions, equations):
+    parts = [f"generator={GENERATOR_VERSION}", f"equations={equations}"]
+    for f in functions:
+        parts.append(f"def {f.name}(" + ",".join(sm.srepr(s) for s in f.symbols()) + ")")
+        for out_name, expr, _ in f.outputs:
+            parts.append(f"{out_name}={sm.srepr(sm.sympify(expr))}")
+    return "\n".join(parts)
+
+
+def input_hash(functions, equations=""):
+    """SHA-256 of the ``srepr`` of every argument and output expression."""
+    return "sha256:" + hashlib.sha256(_canonical_text(functions, equations).encode()).hexdigest()
+
+
+def _validate(f):
+    names = [s.name for s in f.symbols()]
+    if len(set(names)) != len(names):
+        raise ValueError(f"Expected distinct argument names for `{f.name}`, got {names}")
+    allowed = set(f.symbols())
+    for out_name, expr, _ in f.outputs:
+        extra = sm.sympify(expr).free_symbols - allowed
+        if extra:
+            bad = ", ".join(sorted(s.name for s in extra))
+            raise ValueError(
+                f"Expected only the arguments of `{f.name}` in output `{out_name}`, "
+                f"got free symbol(s) {bad}"
+            )
+
+
+def _print(expr):
+    return NumPyPrinter({"fully_qualified_modules": True}).doprint(expr).replace("numpy.", "np.")
+
+
+def _render_body(f, cse=True):
+    exprs = f.exprs()
+    lines = []
+    if cse:
+        symbols = sm.numbered_symbols("x")
+        replacements, reduced = sm.cse(exprs, symbols=symbols, order="none")
+    else:
+        replacements, reduced = [], exprs
+    for sym, sub in replacements:
+        lines.append(f"    {sym} = {_print(sub)}")
+    outs = [_print(e) for e in reduced]
+    if len(outs) == 1:
+        lines.append(f"    return {outs[0]}")
+    else:
+        lines.append("    return (")
+        lines.extend(f"        {o}," for o in outs)
+        lines.append("    )")
+    return lines
+
+
+def _render_doc(f, notebook, equations):
+    lines = [f'    """{f.summary}', "", f"    Generated from ``{notebook}``, equations {equations}.", ""]
+    lines += ["    Parameters", "    ----------"]
+    for sym, desc in f.args:
+        lines += [f"    {sym.name} : array_like", f"        {desc}"]
+    lines += ["", "    Returns", "    -------"]
+    for out_name, _, desc in f.outputs:
+        lines += [f"    {out_name} : ndarray", f"        {desc}"]
+    lines += ["", "    Arguments broadcast against each other like a NumPy ufunc.", '    """']
+    return lines
+
+
+def render(stem, notebook, equations, functions, *, cse=True):
+    """Return the text of ``mech/_generated/<stem>.py`` for ``functions``."""
+    for f in functions:
+        _validate(f)
+    out = [
+        f"# GENERATED by {notebook} — do not edit",
+        f"# Equations: {equations}",
+        f"# SymPy {sm.__version__}; regenerate with `python -m derivations`",
+        f'"""Generated NumPy functions for {notebook} ({equations})."""',
+        "",
+        "import numpy as np",
+        "",
+        f'INPUT_HASH = "{input_hash(functions, equations)}"',
+        "",
+        "__all__ = [" + ", ".join(repr(f.name) for f in functions) + "]",
+    ]
+    for f in functions:
+        args = ", ".join(s.name for s in f.symbols())
+        out += ["", "", f"def {f.name}({args}):"]
+        out += _render_doc(f, notebook, equations)
+        out += _render_body(f, cse=cse)
+    return "\n".join(out) + "\n"
+
+
+def _load(path, module_name):
+    spec = importlib.util.spec_from_file_location(module_name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def _numeric_check(module, functions, samples, rtol):
+    """Compare every generated function with mpmath at 50 digits on random samples."""
+    rng = np.random.default_rng(20261121)
+    for f in functions:
+        syms = f.symbols()
+        values = {}
+        for s in syms:
+            low, high = f.domain.get(s, (-2.0, 2.0))
+            values[s] = rng.uniform(low, high, samples)
+        got = getattr(module, f.name)(*(values[s] for s in syms))
+        got = [got] if len(f.outputs) == 1 else list(got)
+        reference = sm.lambdify(syms, f.exprs(), modules="mpmath")
+        with mpmath.workdps(50):
+            for i in range(samples):
+                ref = reference(*(mpmath.mpf(float(values[s][i])) for s in syms))
+                for (out_name, _, _), g, r in zip(f.outputs, got, ref):
+                    g_i = complex(np.broadcast_to(g, (samples,))[i])
+                    r_i = complex(r)
+                    if not np.isfinite(r_i) and not np.isfinite(g_i):
+                        continue
+                    if abs(g_i - r_i) > rtol * max(1.0, abs(r_i)):
+                        point = {s.name: float(values[s][i]) for s in syms}
+                        raise AssertionError(
+                            f"{f.name}.{out_name} disagrees with mpmath at {point}: "
+                            f"{g_i!r} vs {r_i!r}"
+                        )
+
+
+def check_fresh(stem, notebook, equations, functions, *, samples=25, rtol=1e-11):
+    """Raise ``AssertionError`` unless the committed module matches these inputs."""
+    path = GENERATED_DIR / f"{stem}.py"
+    if not path.exists():
+        raise AssertionError(f"{path} is missing: run `python -m derivations`")
+    committed = re.search(r'^INPUT_HASH = "([^"]+)"', path.read_text(), re.M)
+    expected = input_hash(functions, equations)
+    if committed is None or committed.group(1) != expected:
+        raise AssertionError(f"{path.name} is stale (hash differs): run `python -m derivations`")
+    _numeric_check(_load(path, f"_fresh_{stem}"), functions, samples, rtol)
+    return path
+
+
+def write(stem, notebook, equations, functions, *, samples=25, rtol=1e-11):
+    """Write ``mech/_generated/<stem>.py`` if its inputs changed, then check it.
+
+    Returns the path. With ``MECH_CODEGEN=check`` in the environment, nothing is written.
+    """
+    path = GENERATED_DIR / f"{stem}.py"
+    if os.environ.get("MECH_CODEGEN") != "check":
+        committed = path.read_text() if path.exists() else ""
+        if f'INPUT_HASH = "{input_hash(functions, equations)}"' not in committed:
+            path.write_text(render(stem, notebook, equations, functions))
+    return check_fresh(stem, notebook, equations, functions, samples=samples, rtol=rtol)

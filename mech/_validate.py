@@ -1,0 +1,44 @@
+"""Input checks that raise ``ValueError("Expected X, got Y")`` naming the argument."""
+
+import numpy as np
+
+__all__ = ["positive_length", "finite_array", "branch_sign", "nonnegative_int"]
+
+
+def _show(value):
+    arr = np.asarray(value)
+    return repr(arr.item()) if arr.ndim == 0 else np.array2string(arr, threshold=6)
+
+
+def positive_length(name, value):
+    """Return ``value`` as a float after checking that it is finite and > 0."""
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"Expected `{name}` to be a real number, got {value!r}") from None
+    if not np.isfinite(x) or x <= 0.0:
+        raise ValueError(f"Expected `{name}` > 0, got {x!r}")
+    return x
+
+
+def finite_array(name, value):
+    """Return ``value`` as a float array after checking that every entry is finite."""
+    arr = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(arr)):
+        bad = arr[~np.isfinite(arr)].ravel()[0] if arr.ndim else arr.item()
+        raise ValueError(f"Expected finite `{name}`, got {bad!r}")
+    return arr
+
+
+def branch_sign(value, name="branch"):
+    """Return ``value`` as the int +1 or -1."""
+    if value not in (1, -1) or isinstance(value, bool):
+        raise ValueError(f"Expected `{name}` to be +1 or -1, got {value!r}")
+    return int(value)
+
+
+def nonnegative_int(name, value, maximum):
+    """Return ``value`` as an int in ``[0, maximum]``."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= value <= maximum:
+        raise ValueError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
+    return int(value)
