@@ -1,0 +1,208 @@
+"""The book's configuration keeps the strictness that makes a broken page fail the build.
+
+See STYLE.md item 13: without ``raise_on_error`` a failing cell only warns; without
+``stderr_output: warn`` (and ``-W``) a NumPy RuntimeWarning, i.e. a NaN, slips through.
+The table of contents must name existing files, include every derivation notebook, and
+every page must carry a ``(label)=`` line before its title so that ``{ref}`` works.
+"""
+
+import re
+from pathlib import Path
+
+import pytest
+
+yaml = pytest.importorskip("yaml")
+
+ROOT = Path(__file__).resolve().parents[1]
+BOOK = ROOT / "book"
+DERIVATIONS = ROOT / "derivations"
+LABEL = re.compile(r"^\(([A-Za-z0-9_-]+)\)=\s*$")
+FENCE = re.compile(r"^(`{3,}|~{3,}|:{3,})")
+
+
+def _config():
+    return yaml.safe_load((BOOK / "_config.yml").read_text(encoding="utf-8"))
+
+
+def _toc_files():
+    """Every ``file:`` entry of ``book/_toc.yml``, the root first."""
+    toc = yaml.safe_load((BOOK / "_toc.yml").read_text(encoding="utf-8"))
+    files = [toc["root"]]
+
+    def walk(node):
+        if isinstance(node, dict):
+            if "file" in node:
+                files.append(node["file"])
+            for value in node.values():
+                walk(value)
+        elif isinstance(node, list):
+            for item in node:
+                walk(item)
+
+    walk({k: v for k, v in toc.items() if k != "root"})
+    return files
+
+
+def _page_path(entry):
+    """The file a TOC entry names (with or without its extension), or None."""
+    for suffix in ("", ".md", ".ipynb"):
+        path = BOOK / f"{entry}{suffix}"
+        if path.is_file():
+            return path
+    return None
+
+
+def _all_keys(node):
+    if isinstance(node, dict):
+        for key, value in node.items():
+            yield key
+            yield from _all_keys(value)
+    elif isinstance(node, list):
+        for item in node:
+            yield from _all_keys(item)
+
+
+def _label_and_title(text):
+    """Return (labels before the first ``# `` title, the title line) of a MyST page."""
+    lines = text.splitlines()
+    if lines and lines[0].strip() == "---":  # front matter
+        end = next(i for i in range(1, len(lines)) if lines[i].strip() == "---")
+        lines = lines[end + 1 :]
+    labels, fence = [], None
+    for line in lines:
+        match = FENCE.match(line)
+        if fence is None and match:
+            fence = match.group(1)
+            continue
+        if fence is not None:
+            if line.strip() == fence:
+                fence = None
+            continue
+        label = LABEL.match(line)
+        if label:
+            labels.append(label.group(1))
+        elif line.startswith("# "):
+            return labels, line
+    return labels, None
+
+
+# --- execution strictness -------------------------------------------------------------
+
+
+def test_config_execute_raise_on_error():
+    assert _config()["execute"]["raise_on_error"] is True
+
+
+def test_config_execute_allow_errors_false():
+    assert _config()["execute"]["allow_errors"] is False
+
+
+def test_config_execute_stderr_output_warn():
+    assert _config()["execute"]["stderr_output"] == "warn"
+
+
+def test_config_execute_notebooks_cache():
+    assert _config()["execute"]["execute_notebooks"] == "cache"
+
+
+# --- offline: nothing fetched at build or read time -----------------------------------
+
+
+def test_config_no_mathjax_path_or_intersphinx():
+    keys = set(_all_keys(_config()))
+    assert "mathjax_path" not in keys
+    assert "intersphinx_mapping" not in keys
+    sphinx = _config().get("sphinx", {})
+    extensions = (sphinx.get("extra_extensions") or []) + (sphinx.get("local_extensions") or [])
+    assert "sphinx.ext.intersphinx" not in extensions
+
+
+def test_config_mathjax_offline_extension():
+    extensions = _config()["sphinx"]["extra_extensions"]
+    # With underscores the package fails to import (STYLE.md): the hyphenated name is required.
+    assert "sphinx-mathjax-offline" in extensions
+
+
+def test_config_launch_buttons_off():
+    launch = _config().get("launch_buttons") or {}
+    for key in ("binderhub_url", "jupyterhub_url", "colab_url", "deepnote_url"):
+        assert not launch.get(key), f"launch button {key} is on: {launch.get(key)!r}"
+    assert not launch.get("thebe")
+
+
+# --- table of contents and page labels ------------------------------------------------
+
+
+def test_toc_files_exist():
+    missing = [entry for entry in _toc_files() if _page_path(entry) is None]
+    assert missing == [], f"TOC entries without a file: {missing}"
+
+
+def test_toc_has_no_duplicates():
+    files = _toc_files()
+    assert len(files) == len(set(files))
+
+
+def test_toc_lists_every_derivation():
+    notebooks = sorted(
+        p for p in DERIVATIONS.rglob("*.md") if p.name != "README.md" and "_build" not in p.parts
+    )
+    assert notebooks, "no derivation notebooks found"
+    listed = {entry.removesuffix(".md") for entry in _toc_files()}
+    absent = [
+        str(p.relative_to(ROOT)) for p in notebooks
+        if f"derivations/{p.relative_to(DERIVATIONS).with_suffix('').as_posix()}" not in listed
+    ]
+    assert absent == [], f"derivation notebooks missing from book/_toc.yml: {absent}"
+
+
+def test_toc_pages_have_label_before_title():
+    problems = []
+    for entry in _toc_files():
+        path = _page_path(entry)
+        if path is None or path.suffix != ".md":
+            continue
+        labels, title = _label_and_title(path.read_text(encoding="utf-8"))
+        if title is None:
+            problems.append(f"{entry}: no '# ' title")
+        elif not labels:
+            problems.append(f"{entry}: no '(label)=' line before {title!r}")
+    assert problems == [], "\n".join(problems)
+
+
+def test_toc_page_labels_unique():
+    seen = {}
+    for entry in _toc_files():
+        path = _page_path(entry)
+        if path is None or path.suffix != ".md":
+            continue
+        for label in _label_and_title(path.read_text(encoding="utf-8"))[0]:
+            seen.setdefault(label, []).append(entry)
+    repeated = {label: pages for label, pages in seen.items() if len(pages) > 1}
+    assert repeated == {}
+
+
+def test_label_and_title_ignores_code_comments():
+    """The page parser itself: a ``# comment`` in a code cell is not a title."""
+    text = "---\nkernelspec: {}\n---\n\n```{code-cell} ipython3\n# not a title\n```\n(x-y)=\n# Title\n"
+    assert _label_and_title(text) == (["x-y"], "# Title")
+    assert _label_and_title("# Title\n(late)=\n") == ([], "# Title")
+
+
+REQUIRED_LABELS = {
+    "deriv-grashof", "deriv-fourbar-position", "deriv-fourbar-limit-positions",
+    "deriv-transmission-angle", "deriv-slider-crank",
+    "book-intro", "book-how-to-read", "book-structure", "book-kinematics", "book-examples",
+    "book-motion-diagrams", "book-exercises", "book-benchmarks", "book-glossary",
+    "book-errata", "book-status",
+}
+
+
+def test_toc_pages_define_required_labels():
+    """The labels other pages cross-reference ({ref}`deriv-grashof` ...) all exist."""
+    found = set()
+    for entry in _toc_files():
+        path = _page_path(entry)
+        if path is not None and path.suffix == ".md":
+            found.update(_label_and_title(path.read_text(encoding="utf-8"))[0])
+    assert sorted(REQUIRED_LABELS - found) == []
