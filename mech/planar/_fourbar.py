@@ -1,11 +1,272 @@
-"""The planar four-bar (stub, being written)."""
+"""The planar revolute four-bar: positions, velocities and accelerations."""
+
+import numpy as np
+
+from mech._errors import AssemblyError
+from mech._generated import fourbar_position as _gen
+from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
 
 __all__ = ["FourBar", "FourBarPose"]
 
 
+def _complex(x, y):
+    """Pack two real arrays into one complex array (a scalar for 0-d input)."""
+    x, y = np.broadcast_arrays(x, y)
+    out = np.empty(x.shape, dtype=complex)
+    out.real = x
+    out.imag = y
+    return out[()]
+
+
 class FourBarPose:
-    pass
+    """Poses of a four-bar at an array of input angles (returned by `FourBar.solve`).
+
+    Attributes
+    ----------
+    theta, valid : ndarray
+        The input angles, and False where the linkage cannot be assembled (NaN there).
+    B, C, P : ndarray of complex
+        Crank pin, rocker pin and coupler point.
+    phi, psi : ndarray
+        Angles of B->C and D->C in (-pi, pi], computed by atan2 when first read.
+    omega_coupler, omega_output, vB, vC, vP : ndarray
+        Present when solved with ``order >= 1``.
+    alpha_coupler, alpha_output, aB, aC, aP : ndarray
+        Present when solved with ``order >= 2``.
+    """
+
+    _ORDER_OF = {
+        "omega_coupler": 1, "omega_output": 1, "vB": 1, "vC": 1, "vP": 1,
+        "alpha_coupler": 2, "alpha_output": 2, "aB": 2, "aC": 2, "aP": 2,
+    }
+
+    def __init__(self, d, order, fields):
+        object.__setattr__(self, "_d", d)
+        object.__setattr__(self, "order", order)
+        object.__setattr__(self, "_fields", fields)
+
+    def __getattr__(self, name):
+        fields = self.__dict__.get("_fields", {})
+        if name in fields:
+            return fields[name]
+        if name == "phi":
+            value = np.angle(fields["C"] - fields["B"])[()]
+        elif name == "psi":
+            value = np.angle(fields["C"] - self._d)[()]
+        elif name in self._ORDER_OF:
+            raise AttributeError(
+                f"`{name}` needs solve(..., order={self._ORDER_OF[name]}) or higher; "
+                f"this pose was solved with order={self.order}"
+            )
+        else:
+            raise AttributeError(f"FourBarPose has no attribute {name!r}")
+        fields[name] = value
+        return value
+
+    def __setattr__(self, name, value):
+        raise AttributeError("FourBarPose is immutable")
+
+    def __repr__(self):
+        shape = np.shape(self._fields["theta"])
+        return f"FourBarPose(order={self.order}, shape={shape}, valid={int(np.sum(self.valid))}/{int(np.size(self.valid))})"
 
 
 class FourBar:
-    pass
+    """A planar revolute four-bar ABCD with ground pivots A = 0 and D = d.
+
+    Parameters
+    ----------
+    a, b, c, d : float
+        Crank AB, coupler BC, rocker CD and ground AD, in any one length unit.
+    branch : {1, -1}, optional
+        Assembly branch: +1 puts C to the left of the directed line B->D.
+    coupler : (float, float), optional
+        Coupler point ``(p, q)``: ``P = B + (p + 1j*q) * exp(1j*phi)``.
+    rtol : float, optional
+        Relative tolerance (of a + b + c + d) within which the linkage counts as a
+        change-point linkage, s + l = p + q.
+
+    Raises
+    ------
+    ValueError
+        If a length is not positive and finite, if one link is at least as long as the
+        other three together, or if `branch` is not +1 or -1.
+
+    Notes
+    -----
+    Positions come from the loop-closure equation in atan2 form with a factored,
+    half-angle area term (derivation page :ref:`deriv-fourbar-position`), so they stay
+    accurate up to the limit positions. At a change point the two branches meet and the
+    solution continues smoothly onto the other sign of the area term (a parallelogram
+    stays a parallelogram); `branch` names the branch by its sign just after
+    theta = 0. Exactly at such a meeting point the loop equations do not fix the rates,
+    so velocities and accelerations are NaN there while positions are valid.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.planar import FourBar
+    >>> linkage = FourBar(10, 40, 30, 35)           # example 2-1
+    >>> pose = linkage.solve(np.pi / 2)
+    >>> round(abs(pose.C - pose.B), 12), round(abs(pose.C - 35), 12)
+    (40.0, 30.0)
+    >>> linkage.solve(np.linspace(0, np.pi, 5), order=1).omega_output.shape
+    (5,)
+    """
+
+    def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), rtol=1e-12):
+        lengths = {name: positive_length(name, value) for name, value in zip("abcd", (a, b, c, d))}
+        total = sum(lengths.values())
+        for name, value in lengths.items():
+            if value >= total - value:
+                raise ValueError(
+                    f"Expected `{name}` shorter than the other three links together "
+                    f"({total - value!r}), got {value!r}"
+                )
+        self._a, self._b, self._c, self._d = (lengths[n] for n in "abcd")
+        self._branch = branch_sign(branch)
+        try:
+            p, q = (float(v) for v in coupler)
+        except (TypeError, ValueError):
+            raise ValueError(f"Expected `coupler` to be a pair of numbers (p, q), got {coupler!r}") from None
+        if not (np.isfinite(p) and np.isfinite(q)):
+            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
+        self._coupler = (p, q)
+        gaps = [float(g) for g in _gen.fourbar_assembly_gaps(*(lengths[n] for n in "abcd"))]
+        zero = [abs(g) <= rtol * total for g in gaps]
+        self._gaps = tuple(0.0 if z else g for g, z in zip(gaps, zero))
+        self._m23 = int(zero[0]) + int(zero[1])
+        self._m4 = int(zero[2])
+
+    a = property(lambda self: self._a, doc="Crank length AB.")
+    b = property(lambda self: self._b, doc="Coupler length BC.")
+    c = property(lambda self: self._c, doc="Rocker length CD.")
+    d = property(lambda self: self._d, doc="Ground length AD.")
+    branch = property(lambda self: self._branch, doc="Assembly branch, +1 or -1.")
+    coupler = property(lambda self: self._coupler, doc="Coupler point (p, q).")
+
+    @property
+    def change_point(self):
+        """True if two branches of the linkage meet (s + l = p + q within `rtol`)."""
+        return self._m23 + self._m4 > 0
+
+    def __repr__(self):
+        return (f"FourBar({self._a!r}, {self._b!r}, {self._c!r}, {self._d!r}, "
+                f"branch={self._branch}, coupler={self._coupler!r})")
+
+    def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
+        """Solve the loop-closure equation at the input angles `theta`.
+
+        Positions by the atan2 form of the loop-closure equation, eqs. (2-11), (2-12);
+        rates by differentiating it once (``order=1``) or twice (``order=2``).
+
+        Parameters
+        ----------
+        theta : array_like, shape (...)
+            Crank angle of A->B from +x, counter-clockwise, radians.
+        order : {0, 1, 2}, optional
+            Highest time derivative to compute; nothing above it is computed.
+        omega, alpha : array_like, optional
+            Angular velocity and acceleration of the crank, broadcast against `theta`.
+        strict : bool, optional
+            Raise `AssemblyError` instead of returning NaN where it cannot assemble.
+
+        Returns
+        -------
+        FourBarPose
+            ``B, C, P`` (complex), ``phi, psi``, ``valid``; with ``order >= 1`` also
+            ``omega_coupler, omega_output, vB, vC, vP``; with ``order >= 2`` also
+            ``alpha_coupler, alpha_output, aB, aC, aP``.
+
+        Raises
+        ------
+        AssemblyError
+            With ``strict=True``, naming the first input angle that cannot be assembled.
+        ValueError
+            For a non-finite `theta`, `omega` or `alpha`, or an `order` outside 0..2.
+
+        Notes
+        -----
+        See :ref:`deriv-fourbar-position` for the derivation and the branch convention.
+
+        Examples
+        --------
+        >>> from mech.planar import FourBar
+        >>> pose = FourBar(10, 40, 30, 35, coupler=(20, 10)).solve([0.0, 1.0], order=2)
+        >>> pose.valid.tolist(), pose.aP.shape
+        ([True, True], (2,))
+        """
+        order = nonnegative_int("order", order, 2)
+        theta = finite_array("theta", theta)
+        a, b, c, d, (p, q), branch = self._a, self._b, self._c, self._d, self._coupler, self._branch
+        with np.errstate(invalid="ignore", divide="ignore"):
+            Bx, By, Cx, Cy, Px, Py, S = _gen.fourbar_position(
+                a, b, c, d, p, q, theta, branch, *self._gaps, self._m23, self._m4
+            )
+        valid = ~np.isnan(S)
+        if strict and not np.all(valid):
+            bad = np.broadcast_to(theta, valid.shape)[~valid].ravel()[0]
+            raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
+        fields = {"theta": theta[()], "valid": valid[()],
+                  "B": _complex(Bx, By), "C": _complex(Cx, Cy), "P": _complex(Px, Py)}
+        if order >= 1:
+            omega = finite_array("omega", omega)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                w2, w3, vBx, vBy, vCx, vCy, vPx, vPy = _gen.fourbar_velocity(
+                    b, d, p, q, Bx, By, Cx, Cy, S, branch, omega
+                )
+            fields.update(omega_coupler=np.asarray(w2)[()], omega_output=np.asarray(w3)[()],
+                          vB=_complex(vBx, vBy), vC=_complex(vCx, vCy), vP=_complex(vPx, vPy))
+            if order >= 2:
+                alpha = finite_array("alpha", alpha)
+                with np.errstate(invalid="ignore", divide="ignore"):
+                    a2, a3, aBx, aBy, aCx, aCy, aPx, aPy = _gen.fourbar_acceleration(
+                        b, d, p, q, Bx, By, Cx, Cy, S, branch, omega, alpha, w2, w3
+                    )
+                fields.update(alpha_coupler=np.asarray(a2)[()], alpha_output=np.asarray(a3)[()],
+                              aB=_complex(aBx, aBy), aC=_complex(aCx, aCy), aP=_complex(aPx, aPy))
+        return FourBarPose(d, order, fields)
+
+    def limit_positions(self):
+        """Limit positions of a crank-rocker: see `mech.planar.LimitPositions`.
+
+        Returns the crank and rocker angles at the extended and folded limit positions,
+        the swing, the extreme angle and the time ratio K (2-9) of this branch.
+
+        Examples
+        --------
+        >>> from mech.planar import FourBar
+        >>> lp = FourBar(10, 40, 30, 35).limit_positions()     # example 2-1
+        >>> round(float(np.degrees(lp.swing)), 4), round(float(lp.time_ratio), 5)
+        (45.9719, 1.22404)
+        """
+        from mech.planar._limit_positions import limit_positions
+
+        return limit_positions(self._a, self._b, self._c, self._d, branch=self._branch)
+
+    def transmission_angle(self, theta):
+        """Transmission angle gamma in [0, pi/2] at crank angles `theta`, eq. (2-30).
+
+        Examples
+        --------
+        >>> from mech.planar import FourBar
+        >>> round(float(np.degrees(FourBar(30, 70, 60, 80).transmission_angle(0.0))), 4)
+        44.4153
+        """
+        from mech.planar._transmission import transmission_angle
+
+        return transmission_angle(self._a, self._b, self._c, self._d, theta)
+
+    def min_transmission_angle(self):
+        """The smallest transmission angle and the crank angle where it occurs, ``(gamma_min, theta_at)``.
+
+        Examples
+        --------
+        >>> from mech.planar import FourBar
+        >>> gamma_min, theta_at = FourBar(30, 70, 60, 80).min_transmission_angle()
+        >>> round(float(np.degrees(gamma_min)), 4)
+        44.4153
+        """
+        from mech.planar._transmission import min_transmission_angle
+
+        return min_transmission_angle(self._a, self._b, self._c, self._d)
