@@ -1,0 +1,59 @@
+"""Textbook exercises with generated solutions and variants (chapter 2: 2-2, 2-3, 2-6).
+
+Each exercise is an :class:`Exercise` record: a statement with named givens (the
+textbook's numbers by default), a solver built on :mod:`mech.planar`, and a generator of
+other valid numbers. Solutions render themselves as Markdown.
+
+>>> import mech.exercises as ex
+>>> sorted(ex.EXERCISES)
+['2-2', '2-3', '2-6']
+>>> sol = ex.get("2-3").solve()
+>>> round(float(sol["time ratio K"].value), 4)
+1.2299
+
+From the command line: ``python -m mech.exercises list``, ``... show 2-3`` and
+``... variant 2-3 --seed 7``.
+"""
+
+from types import MappingProxyType
+
+from mech.exercises import chapter2
+from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
+
+__all__ = [
+    "EXERCISES",
+    "Exercise",
+    "Interval",
+    "Parameter",
+    "Part",
+    "Result",
+    "Solution",
+    "chapter2",
+    "get",
+]
+
+#: Every exercise with a generated solution, keyed by the textbook's number.
+EXERCISES = MappingProxyType({ex.number: ex for ex in chapter2.EXERCISES})
+
+
+def get(number):
+    """Return the :class:`Exercise` with the textbook's number ``number``, e.g. ``"2-3"``.
+
+    Raises
+    ------
+    ValueError
+        If no exercise has that number; the message lists the known numbers.
+
+    Examples
+    --------
+    >>> get("2-2").title
+    'Ranges of the crank length for each type of four-bar'
+    >>> get("2-9")
+    Traceback (most recent call last):
+    ...
+    ValueError: Expected an exercise number among 2-2, 2-3, 2-6, got '2-9'
+    """
+    key = str(number).strip()
+    if key not in EXERCISES:
+        raise ValueError(f"Expected an exercise number among {', '.join(EXERCISES)}, got {number!r}")
+    return EXERCISES[key]

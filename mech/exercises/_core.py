@@ -1,0 +1,244 @@
+"""Exercises as data plus a solver: the records behind ``mech.exercises``.
+
+An :class:`Exercise` states a textbook exercise with named parameters (the textbook's
+numbers are the defaults), draws other valid numbers with :meth:`Exercise.variant`, and
+solves it with :meth:`Exercise.solve`, which returns a :class:`Solution`: named results with
+units and a note on how each was computed, grouped by the parts of the exercise, that
+renders itself as Markdown. Only NumPy is imported here.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable
+
+import numpy as np
+
+__all__ = ["Parameter", "Interval", "Result", "Part", "Solution", "Exercise"]
+
+
+# ----------------------------------------------------------------------------- formatting
+def _fmt_number(x, digits=6):
+    """Format a float with ``digits`` significant digits, integers without a point."""
+    x = float(x)
+    if math.isfinite(x) and x == round(x) and abs(x) < 1e12:
+        return str(int(round(x)))
+    return f"{x:.{digits}g}"
+
+
+def _fmt_value(value, unit):
+    """Render a result value with its unit; radians are shown in degrees as well."""
+    if isinstance(value, (bool, np.bool_)):
+        return "yes" if value else "no"
+    if isinstance(value, str):
+        return value
+    if isinstance(value, tuple) and all(isinstance(v, Interval) for v in value):
+        if not value:
+            return "none (empty)"
+        return f"{' ∪ '.join(str(v) for v in value)} {unit}".rstrip()
+    if isinstance(value, (frozenset, set)):
+        return ", ".join(sorted(value)) if value else "none"
+    if unit == "rad":
+        return f"{math.degrees(float(value)):.4f}° ({float(value):.6f} rad)"
+    return f"{_fmt_number(value)} {unit}".rstrip()
+
+
+# ----------------------------------------------------------------------------- records
+@dataclass(frozen=True)
+class Parameter:
+    """One given quantity of an exercise: a name used in templates, a default, a unit."""
+
+    name: str
+    default: float
+    unit: str = "mm"
+    description: str = ""
+
+
+@dataclass(frozen=True)
+class Interval:
+    """A real interval with open or closed ends, rendered as ``(15, 45]``."""
+
+    low: float
+    high: float
+    closed_low: bool = False
+    closed_high: bool = False
+
+    def __contains__(self, x):
+        above = x >= self.low if self.closed_low else x > self.low
+        below = x <= self.high if self.closed_high else x < self.high
+        return bool(above and below)
+
+    def __str__(self):
+        left = "[" if self.closed_low else "("
+        right = "]" if self.closed_high else ")"
+        return f"{left}{_fmt_number(self.low)}, {_fmt_number(self.high)}{right}"
+
+
+@dataclass(frozen=True)
+class Result:
+    """A named result: its value, unit and how it was computed.
+
+    ``value`` is a float (angles in radians with ``unit="rad"``), a bool, a string, a
+    frozenset of joint names, or a tuple of :class:`Interval`. ``latex`` optionally holds
+    a formula (without dollars) shown before the value.
+    """
+
+    name: str
+    value: Any
+    unit: str = ""
+    how: str = ""
+    latex: str = ""
+
+    def as_markdown(self):
+        """Return one Markdown list item for this result."""
+        formula = f"${self.latex}$" if self.latex else ""
+        if formula and self.value is not None:
+            formula += ", "
+        shown = "" if self.value is None else _fmt_value(self.value, self.unit)
+        how = f" — {self.how}" if self.how else ""
+        return f"- **{self.name}**: {formula}{shown}{how}"
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of a solution: a heading, its results and explanatory remarks."""
+
+    title: str
+    results: tuple = ()
+    remarks: tuple = ()
+
+
+@dataclass(frozen=True)
+class Solution:
+    """The solution of one exercise for one set of given values.
+
+    Attributes
+    ----------
+    number : str
+        The textbook's exercise number, e.g. ``"2-3"``.
+    params : dict
+        The given values used (name to float).
+    conventions : tuple of str
+        Assumptions and conventions the solution states before its results.
+    parts : tuple of Part
+        The answers, part by part.
+    units : dict
+        The unit of each given value (name to unit), for display.
+    """
+
+    number: str
+    title: str
+    params: dict
+    conventions: tuple = ()
+    parts: tuple = ()
+    units: dict = field(default_factory=dict)
+
+    def results(self):
+        """Return every :class:`Result` of every part, in order."""
+        return tuple(r for part in self.parts for r in part.results)
+
+    def __getitem__(self, name):
+        for r in self.results():
+            if r.name == name:
+                return r
+        names = ", ".join(r.name for r in self.results())
+        raise KeyError(f"Expected a result name among {names}; got {name!r}")
+
+    def values(self):
+        """Return a dict of result name to value."""
+        return {r.name: r.value for r in self.results()}
+
+    def as_markdown(self, *, heading_level=3):
+        """Render the solution as Markdown (LaTeX between dollars, angles in degrees)."""
+        h = "#" * heading_level
+        given = ", ".join(
+            f"{k} = {_fmt_number(v)} {self.units.get(k, '')}".rstrip() for k, v in self.params.items()
+        )
+        lines = [f"{h} Solution of exercise {self.number}", "", f"Given: {given}.", ""]
+        if self.conventions:
+            lines += ["Conventions:", ""] + [f"- {c}" for c in self.conventions] + [""]
+        for part in self.parts:
+            lines += [f"**{part.title}**", ""]
+            lines += [r.as_markdown() for r in part.results]
+            if part.results:
+                lines.append("")
+            for remark in part.remarks:
+                lines += [remark, ""]
+        return "\n".join(lines).rstrip() + "\n"
+
+    def _repr_markdown_(self):
+        return self.as_markdown()
+
+
+@dataclass(frozen=True)
+class Exercise:
+    """A textbook exercise stated as data, with a solver and a variant generator.
+
+    Attributes
+    ----------
+    number : str
+        The textbook's number, e.g. ``"2-3"``.
+    title : str
+        A short English title.
+    tag : str
+        The catalog's tag: ``"N"`` (the text alone determines it), ``"A"`` or ``"G"``.
+    statement : str
+        The problem in English, a :meth:`str.format` template over the parameter names.
+    parameters : tuple of Parameter
+        The givens; their defaults are the textbook's numbers.
+    solver : callable
+        ``solver(params: dict) -> Solution``; raises ``ValueError`` when the numbers do
+        not make a valid instance of the problem.
+    sampler : callable
+        ``sampler(rng: numpy.random.Generator) -> dict``, a candidate variant; candidates
+        the solver rejects are drawn again.
+    """
+
+    number: str
+    title: str
+    tag: str
+    statement: str
+    parameters: tuple
+    solver: Callable = field(repr=False)
+    sampler: Callable = field(repr=False)
+
+    @property
+    def defaults(self):
+        """The textbook's givens as a dict of name to value."""
+        return {p.name: p.default for p in self.parameters}
+
+    def params(self, params=None, **overrides):
+        """Return a complete dict of givens: defaults, updated by ``params`` and overrides."""
+        out = self.defaults
+        given = dict(params or {}, **overrides)
+        unknown = sorted(set(given) - set(out))
+        if unknown:
+            raise ValueError(
+                f"Expected parameters of exercise {self.number} among {', '.join(out)}, "
+                f"got {unknown[0]!r}"
+            )
+        out.update({k: float(v) for k, v in given.items()})
+        return out
+
+    def statement_text(self, params=None, **overrides):
+        """Return the statement with the given values filled in."""
+        p = self.params(params, **overrides)
+        return self.statement.format(**{k: _fmt_number(v) for k, v in p.items()})
+
+    def solve(self, params=None, **overrides):
+        """Solve the exercise for the textbook's numbers, or for the given ones."""
+        solution = self.solver(self.params(params, **overrides))
+        return replace(solution, units={p.name: p.unit for p in self.parameters})
+
+    def variant(self, rng=None, *, max_tries=1000):
+        """Draw other valid givens (a dict) from ``rng`` (a Generator, a seed, or None)."""
+        rng = np.random.default_rng(rng)
+        for _ in range(max_tries):
+            candidate = self.params(self.sampler(rng))
+            try:
+                self.solver(candidate)
+            except ValueError:
+                continue
+            return candidate
+        raise RuntimeError(f"No valid variant of exercise {self.number} in {max_tries} draws")

@@ -1,0 +1,423 @@
+"""Exercises 2-2, 2-3 and 2-6 of chapter 2 (planar linkages), stated as data and solved.
+
+Each solver uses only public functions of :mod:`mech.planar`; the statements are written
+anew in English with the textbook's numbers as defaults. Lengths are in millimetres,
+angles in radians (the rendered solutions show degrees too).
+
+>>> from mech.exercises import chapter2
+>>> [ex.number for ex in chapter2.EXERCISES]
+['2-2', '2-3', '2-6']
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from mech._validate import positive_length
+from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
+from mech.planar import FourBar, SliderCrank, grashof
+from mech.planar import _grashof
+
+__all__ = ["EXERCISE_2_2", "EXERCISE_2_3", "EXERCISE_2_6", "EXERCISES", "merge_intervals"]
+
+_DEG = math.pi / 180.0
+
+
+def merge_intervals(intervals):
+    """Sort intervals and join those that touch, e.g. ``(0, 1] ∪ (1, 2)`` into ``(0, 2)``."""
+    merged = []
+    for iv in sorted(intervals, key=lambda v: (v.low, not v.closed_low)):
+        if merged:
+            last = merged[-1]
+            touches = iv.low < last.high or (
+                iv.low == last.high and (iv.closed_low or last.closed_high)
+            )
+            if touches:
+                high, closed = (last.high, last.closed_high)
+                if iv.high > high or (iv.high == high and iv.closed_high):
+                    high, closed = iv.high, iv.closed_high
+                merged[-1] = Interval(last.low, high, last.closed_low, closed)
+                continue
+        merged.append(iv)
+    return tuple(merged)
+
+
+# ----------------------------------------------------------------------------- 2-2
+_STATEMENT_2_2 = (
+    "A hinged four-bar ABCD (铰链四杆机构) has BC = {BC} mm, CD = {CD} mm and AD = {AD} mm, "
+    "and AD is the fixed link (机架). Find every length of AB for which the linkage is "
+    "(1) a crank-rocker (曲柄摇杆机构) in which AB is the crank; (2) a double-crank "
+    "(双曲柄机构); (3) a double-rocker (双摇杆机构)."
+)
+
+
+def _solve_2_2(p):
+    b = positive_length("BC", p["BC"])
+    c = positive_length("CD", p["CD"])
+    d = positive_length("AD", p["AD"])
+    for name, x, rest in (("BC", b, c + d), ("CD", c, b + d), ("AD", d, b + c)):
+        if x >= rest:
+            raise ValueError(
+                f"Expected `{name}` < the sum of the other two given links ({rest:g}), "
+                f"got {x!r}: then no AB can close the loop and leave a crank-rocker range"
+            )
+    records = _grashof.kind_intervals((b, c, d), "a")
+    by_kind = {}
+    for rec in records:
+        iv = Interval(rec.low, rec.high, rec.closed_low, rec.closed_high)
+        by_kind.setdefault(rec.kind, []).append(iv)
+    how = "`kind_intervals((BC, CD, AD), 'a')`, i.e. `grashof` as AB varies"
+    crank_rocker = merge_intervals(by_kind.get("crank-rocker", ()))
+    double_crank = merge_intervals(by_kind.get("double-crank", ()))
+    grashof_dr = merge_intervals(by_kind.get("double-rocker", ()))
+    triple = merge_intervals(by_kind.get("triple-rocker", ()))
+    rocker_crank = merge_intervals(by_kind.get("rocker-crank", ()))
+    both = merge_intervals(grashof_dr + triple)
+    total = b + c + d
+
+    conventions = (
+        "Grashof condition: with s the shortest and l the longest of the four links, a link "
+        "can turn fully only if s + l ≤ p + q (p, q the other two); the joints that turn "
+        "fully are the two ends of the shortest link.",
+        "Boundary convention (the text does not say): when s + l = p + q exactly, the "
+        "linkage is a change-point linkage. Like `grashof`, this solution counts it as "
+        "Grashof, so such end points belong to the crank-rocker or double-crank range "
+        "(closed brackets). At those lengths all four links can line up and the motion is "
+        "indeterminate there, so a designer would keep away from them.",
+        f"AB must be shorter than BC + CD + AD = {total:g} mm, or the loop cannot close.",
+        "'Double-rocker' in part (3) means any linkage with neither side link turning "
+        "fully: the Grashof double-rocker (the coupler is the shortest link) and the "
+        "non-Grashof triple-rocker (no link turns fully) both count.",
+    )
+    parts = [
+        Part(
+            "(1) Crank-rocker with AB as the crank",
+            (Result("AB for a crank-rocker", crank_rocker, "mm", how),),
+            _remarks_2_2_crank(b, c, d),
+        ),
+        Part(
+            "(2) Double-crank",
+            (Result("AB for a double-crank", double_crank, "mm", how),),
+            _remarks_2_2_double_crank(b, c, d),
+        ),
+        Part(
+            "(3) Double-rocker",
+            (
+                Result("AB for a double-rocker", both, "mm", how),
+                Result("of which Grashof double-rocker", grashof_dr, "mm", how),
+                Result("of which triple-rocker", triple, "mm", how),
+            ),
+            (
+                "Every other AB in (0, "
+                f"{total:g}) mm gives a linkage in which neither AB nor CD turns fully. "
+                + (
+                    "No Grashof double-rocker occurs: that would need the coupler BC to be "
+                    "the shortest link."
+                    if not grashof_dr
+                    else "Part of the range is a Grashof double-rocker (the coupler BC is "
+                    "the shortest link and turns fully relative to both side links)."
+                ),
+            ),
+        ),
+    ]
+    if rocker_crank:
+        parts.append(
+            Part(
+                "Also: CD is the crank (rocker-crank)",
+                (Result("AB for a rocker-crank", rocker_crank, "mm", how),),
+            )
+        )
+    return Solution("2-2", EXERCISE_2_2.title, dict(p), conventions, tuple(parts))
+
+
+def _remarks_2_2_crank(b, c, d):
+    longest = max(b, c, d)
+    others = b + c + d - longest
+    shortest = min(b, c, d)
+    bound = others - longest
+    return (
+        "AB must be the shortest link: then A and B are the joints that turn fully and, "
+        "with AD fixed, AB is the crank. The longest link is then the longest given one, "
+        f"{longest:g} mm, and the Grashof condition AB + {longest:g} ≤ {others:g} gives "
+        f"AB ≤ {bound:g} mm"
+        + (f"; with AB ≤ {shortest:g} mm (shortest) this leaves AB ≤ {min(bound, shortest):g} mm."
+           if bound > shortest else "."),
+    )
+
+
+def _remarks_2_2_double_crank(b, c, d):
+    if not d < min(b, c):
+        return ("A double-crank needs the frame AD to be the shortest link.",)
+    lo = d + max(b, c) - min(b, c)
+    hi = b + c - d
+    return (
+        "The frame AD must be the shortest link, so AB ≥ AD. "
+        f"If AB ≤ {max(b, c):g} mm the longest link is {max(b, c):g} mm and "
+        f"{d:g} + {max(b, c):g} ≤ AB + {min(b, c):g} gives AB ≥ {lo:g} mm; "
+        f"if AB ≥ {max(b, c):g} mm, AB is the longest and {d:g} + AB ≤ {b:g} + {c:g} "
+        f"gives AB ≤ {hi:g} mm.",
+    )
+
+
+def _sample_2_2(rng):
+    d = int(rng.integers(20, 41))
+    c = d + int(rng.integers(3, 21))
+    b = int(rng.integers(c - 5, c + d - 4))
+    b = max(b, d + 3)
+    return {"BC": b, "CD": c, "AD": d}
+
+
+# ----------------------------------------------------------------------------- 2-3
+_STATEMENT_2_3 = (
+    "A hinged four-bar has AB = {AB} mm, BC = {BC} mm, CD = {CD} mm and AD = {AD} mm. "
+    "(1) With AD as the frame, find the extreme-position angle θ (极位夹角, the crank angle "
+    "between the two limit positions), the time ratio K (行程时间比系数), the largest swing "
+    "φ of CD and the minimum transmission angle γ_min. (2) With AB as the frame instead, "
+    "what kind of linkage is it, and why? Are the revolute joints C and D full-rotation "
+    "joints (整转副) or oscillating joints (摇转副)?"
+)
+
+# Relabelling for part (2): the linkage with AB as the frame, read as A'B'C'D' with
+# A' = A, B' = D, C' = C, D' = B: input a' = AD, coupler b' = DC, output c' = CB, frame
+# d' = BA. New joint name -> textbook joint name.
+_FRAME_AB = {"A": "A", "B": "D", "C": "C", "D": "B"}
+
+_KIND_TEXT_AB_FRAME = {
+    "crank-rocker": "a crank-rocker: AD turns fully, BC rocks",
+    "rocker-crank": "a crank-rocker: BC turns fully, AD rocks",
+    "double-crank": "a double-crank: AD and BC both turn fully",
+    "double-rocker": "a double-rocker (Grashof): neither AD nor BC turns fully",
+    "triple-rocker": "a triple-rocker: no link turns fully",
+}
+
+
+def _solve_2_3(p):
+    a = positive_length("AB", p["AB"])
+    b = positive_length("BC", p["BC"])
+    c = positive_length("CD", p["CD"])
+    d = positive_length("AD", p["AD"])
+    g = grashof(a, b, c, d)
+    if g.kind != "crank-rocker":
+        raise ValueError(
+            f"Expected a crank-rocker with AD as the frame, got a {g.kind} "
+            f"(AB={a!r}, BC={b!r}, CD={c!r}, AD={d!r})"
+        )
+    linkage = FourBar(a, b, c, d)
+    lp = linkage.limit_positions()
+    gamma_min, theta_at = linkage.min_transmission_angle()
+    how_lp = "`FourBar(AB, BC, CD, AD).limit_positions()`"
+    how_g = "`FourBar(AB, BC, CD, AD).min_transmission_angle()`"
+    part1 = Part(
+        "(1) AD is the frame",
+        (
+            Result("type", g.kind, "", "`grashof(AB, BC, CD, AD).kind`"),
+            Result("extreme-position angle θ", lp.extreme_angle, "rad", how_lp),
+            Result("time ratio K", lp.time_ratio, "", how_lp + ", K = (180° + θ)/(180° − θ)"),
+            Result("swing φ of CD", lp.swing, "rad", how_lp),
+            Result("minimum transmission angle γ_min", gamma_min, "rad", how_g),
+            Result("crank angle at γ_min", theta_at, "rad", how_g),
+        ),
+        (
+            f"AB = {a:g} mm is the shortest link and {a:g} + {max(b, c, d):g} ≤ "
+            f"{b + c + d - max(b, c, d):g} (Grashof), so with AD as the frame AB is a "
+            "crank and CD a rocker.",
+            "The rocker stops where crank and coupler line up: stretched out "
+            f"(AC = BC + AB = {b + a:g} mm) and folded (AC = BC − AB = {b - a:g} mm). θ is "
+            "the angle between the two crank positions there, K follows from (2-9), and the "
+            "swing is the angle DC turns between the two positions.",
+            "By (2-30) the angle BCD is smallest at θ = 0 and largest at θ = 180° (crank "
+            "along the frame); γ_min is the smaller of δ_min and 180° − δ_max.",
+        ),
+    )
+    g2 = grashof(d, c, b, a)
+    revolving = frozenset(_FRAME_AB[j] for j in g2.revolving)
+    joint = {j: ("full-rotation joint (整转副)" if j in revolving else "oscillating joint (摇转副)")
+             for j in "CD"}
+    part2 = Part(
+        "(2) AB is the frame",
+        (
+            Result("type", _KIND_TEXT_AB_FRAME[g2.kind], "",
+                   "`grashof(AD, DC, CB, BA)`: the linkage relabelled with AB as the frame"),
+            Result("joints that turn fully", revolving, "", "`.revolving`, names mapped back"),
+            Result("joint C", joint["C"], "", ""),
+            Result("joint D", joint["D"], "", ""),
+        ),
+        (
+            "To reuse the convention that the fourth link is the frame, read the loop "
+            "starting at A the other way round: A' = A, B' = D, C' = C, D' = B. Then the "
+            "input link is a' = AD, the coupler b' = DC, the output c' = CB and the frame "
+            "d' = BA, and a joint named A', B', C', D' in the result is the textbook's A, D, "
+            "C, B.",
+            "Why: whether a joint turns fully depends only on the link lengths, not on which "
+            f"link is fixed. The chain satisfies the Grashof condition with AB = {a:g} mm the "
+            "shortest link, so exactly the two joints at the ends of AB (A and B) turn "
+            "fully. Fixing AB therefore lets both links hinged to the frame (AD at A, BC at "
+            "B) turn fully: a double-crank (双曲柄机构). C and D, away from the shortest "
+            "link, stay oscillating joints (摇转副) whichever link is fixed.",
+        ),
+    )
+    return Solution("2-3", EXERCISE_2_3.title, dict(p), (), (part1, part2))
+
+
+def _sample_2_3(rng):
+    while True:
+        a = int(rng.integers(15, 36))
+        b, c, d = (int(x) for x in rng.integers(a + 6, a + 61, size=3))
+        if a + max(b, c, d) <= b + c + d - max(b, c, d) - 3:
+            return {"AB": a, "BC": b, "CD": c, "AD": d}
+
+
+# ----------------------------------------------------------------------------- 2-6
+_STATEMENT_2_6 = (
+    "An offset slider-crank (偏置曲柄滑块机构) has crank r, connecting rod l and offset e "
+    "(the textbook keeps them symbolic; here r = {r} mm, l = {l} mm, e = {e} mm). "
+    "(1) With the crank driving, give an expression for the transmission angle γ and say "
+    "how r, l and e affect it. (2) In which position does the minimum transmission angle "
+    "occur? (3) For e = 0 (a centric slider-crank, 对心曲柄滑块机构), where is γ largest and "
+    "where smallest, and how does the stroke H compare with the offset linkage?"
+)
+
+
+def _solve_2_6(p):
+    r = positive_length("r", p["r"])
+    length = positive_length("l", p["l"])
+    e = float(p["e"])
+    if not math.isfinite(e) or e < 0.0:
+        raise ValueError(f"Expected `e` >= 0 (the side of the offset is fixed by the convention), got {e!r}")
+    if r + e >= length:
+        raise ValueError(
+            f"Expected `r` + `e` < `l` so that the crank turns fully, got r + e = {r + e!r} "
+            f">= l = {length!r}"
+        )
+    sc = SliderCrank(r, length, e)
+    sc0 = SliderCrank(r, length, 0.0)
+    gamma_min, theta_min = sc.min_transmission_angle()
+    # largest gamma: 90 deg where B lies on the guide line (r sin theta = e), else at 90 deg
+    theta_max = math.asin(min(e / r, 1.0))
+    gamma_max = float(sc.transmission_angle(theta_max))
+    gamma0_min, theta0_min = sc0.min_transmission_angle()
+    gamma0_max = float(sc0.transmission_angle(0.0))
+    stroke, stroke0 = sc.stroke(), sc0.stroke()
+    how_t = "`SliderCrank(r, l, e).transmission_angle(θ)`"
+    how_m = "`SliderCrank(r, l, e).min_transmission_angle()`"
+    conventions = (
+        "Crank pivot A at the origin, crank angle θ from the +x axis, counter-clockwise; "
+        "the slider pin C moves on the line y = e (e ≥ 0), parallel to the x axis, to the "
+        "right of B.",
+        "Transmission angle γ: the acute angle between the rod BC and the normal to the "
+        "guide (the slider's path), so that γ = 90° − α with α the pressure angle.",
+        "The textbook keeps r, l, e symbolic; the numbers only illustrate the formulas.",
+    )
+    part1 = Part(
+        "(1) The transmission angle",
+        (
+            Result("transmission angle", None, "", "the height of B above the guide line "
+                   "is r sin θ − e, and the rod spans it", latex=r"\cos\gamma = \frac{|r\sin\theta - e|}{l}"),
+            Result("range of γ: smallest", gamma_min, "rad", how_m),
+            Result("range of γ: largest", gamma_max, "rad", how_t),
+        ),
+        (
+            r"Over a turn $|r\sin\theta - e|$ runs up to $r + e$, so "
+            r"$\gamma_{\min} = \arccos\frac{r + e}{l}$. A longer crank $r$ or a larger offset "
+            r"$e$ lowers $\gamma_{\min}$; a longer rod $l$ raises it. The crank turns fully "
+            r"only if $r + e < l$ (at $r + e = l$ the rod is perpendicular to the guide and "
+            r"$\gamma_{\min} = 0$).",
+        ),
+    )
+    part2 = Part(
+        "(2) Where γ_min occurs",
+        (
+            Result("γ_min", gamma_min, "rad", how_m, latex=r"\gamma_{\min} = \arccos\frac{r+e}{l}"),
+            Result("crank angle at γ_min", theta_min, "rad", how_m),
+        ),
+        (
+            "γ is smallest when the crank is perpendicular to the guide and points away from "
+            r"the side of the offset ($\theta = -90°$ with this convention): the crank pin is "
+            "then farthest from the slider's line.",
+        ),
+    )
+    part3 = Part(
+        "(3) The centric slider-crank (e = 0)",
+        (
+            Result("largest γ (at θ = 0° and 180°)", gamma0_max, "rad",
+                   "`SliderCrank(r, l, 0).transmission_angle(0)`"),
+            Result("smallest γ (at θ = ±90°)", gamma0_min, "rad",
+                   "`SliderCrank(r, l, 0).min_transmission_angle()`", latex=r"\arccos\frac{r}{l}"),
+            Result("stroke, centric", stroke0, "mm", "`SliderCrank(r, l, 0).stroke()`", latex="H_0 = 2r"),
+            Result("stroke, offset", stroke, "mm", "`SliderCrank(r, l, e).stroke()`",
+                   latex=r"H = \sqrt{(l+r)^2 - e^2} - \sqrt{(l-r)^2 - e^2}"),
+            Result("extreme-position angle, offset", sc.extreme_angle(), "rad",
+                   "`SliderCrank(r, l, e).extreme_angle()`"),
+            Result("time ratio K, offset", sc.time_ratio(), "", "`SliderCrank(r, l, e).time_ratio()`"),
+        ),
+        (
+            "With e = 0, γ = 90° in the two limit (dead-centre) positions of the slider, where "
+            "crank and rod both lie along the guide and the rod pushes the slider straight "
+            "along its path (pressure angle 0). γ is smallest, "
+            r"$\arccos(r/l)$, at both positions where the crank is perpendicular to the guide; "
+            "the two are equal by symmetry.",
+            r"The stroke is the distance between the slider's extreme positions, where crank "
+            r"and rod line up: $H = f(l + r) - f(l - r)$ with $f(s) = \sqrt{s^2 - e^2}$. "
+            r"Since $f'(s) = s/\sqrt{s^2 - e^2} > 1$ for $e \neq 0$, $H > 2r$: the offset "
+            r"lengthens the stroke (and brings a quick return, $K > 1$), while the centric "
+            r"linkage has $H = 2r$ and $K = 1$; the price is a smaller $\gamma_{\min}$.",
+        ),
+    )
+    return Solution("2-6", EXERCISE_2_6.title, dict(p), conventions, (part1, part2, part3))
+
+
+def _sample_2_6(rng):
+    r = int(rng.integers(10, 51))
+    e = int(rng.integers(1, max(2, int(0.8 * r))))
+    low = int(math.ceil(r + e + 0.3 * r))
+    length = int(rng.integers(low, max(low + 1, 5 * r)))
+    return {"r": r, "l": length, "e": e}
+
+
+# ----------------------------------------------------------------------------- registry
+EXERCISE_2_2 = Exercise(
+    number="2-2",
+    title="Ranges of the crank length for each type of four-bar",
+    tag="N",
+    statement=_STATEMENT_2_2,
+    parameters=(
+        Parameter("BC", 50.0, "mm", "coupler"),
+        Parameter("CD", 35.0, "mm", "side link at D"),
+        Parameter("AD", 30.0, "mm", "frame"),
+    ),
+    solver=_solve_2_2,
+    sampler=_sample_2_2,
+)
+
+EXERCISE_2_3 = Exercise(
+    number="2-3",
+    title="Quick return, swing and transmission angle; the inversion with AB as frame",
+    tag="N",
+    statement=_STATEMENT_2_3,
+    parameters=(
+        Parameter("AB", 28.0, "mm", "crank"),
+        Parameter("BC", 52.0, "mm", "coupler"),
+        Parameter("CD", 50.0, "mm", "rocker"),
+        Parameter("AD", 72.0, "mm", "frame"),
+    ),
+    solver=_solve_2_3,
+    sampler=_sample_2_3,
+)
+
+EXERCISE_2_6 = Exercise(
+    number="2-6",
+    title="Transmission angle and stroke of the offset slider-crank",
+    tag="N",
+    statement=_STATEMENT_2_6,
+    parameters=(
+        Parameter("r", 30.0, "mm", "crank (illustrative; symbolic in the text)"),
+        Parameter("l", 100.0, "mm", "connecting rod (illustrative)"),
+        Parameter("e", 20.0, "mm", "offset (illustrative)"),
+    ),
+    solver=_solve_2_6,
+    sampler=_sample_2_6,
+)
+
+EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_6)
