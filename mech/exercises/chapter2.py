@@ -215,7 +215,7 @@ def _solve_2_3(p):
             Result("type", g.kind, "", "`grashof(AB, BC, CD, AD).kind`"),
             Result("extreme-position angle θ", lp.extreme_angle, "rad", how_lp),
             Result("time ratio K", lp.time_ratio, "", how_lp + ", K = (180° + θ)/(180° − θ)"),
-            Result("swing φ of CD", lp.swing, "rad", how_lp),
+            Result("swing φ of CD", abs(lp.swing), "rad", how_lp + " (its size)"),
             Result("minimum transmission angle γ_min", gamma_min, "rad", how_g),
             Result("crank angle at γ_min", theta_at, "rad", how_g),
         ),
