@@ -1,11 +1,127 @@
-"""Transmission angle of the four-bar (stub, being written)."""
+"""Transmission angle of the four-bar: eq. (2-30) and its minimum (textbook §2.3, F50-F55)."""
+
+import numpy as np
+
+from mech._generated.transmission_angle import (
+    fourbar_crank_angle_at_diagonal,
+    fourbar_transmission,
+)
+from mech._validate import finite_array, positive_length
+from mech.planar._grashof import grashof
 
 __all__ = ["transmission_angle", "min_transmission_angle"]
 
+_CRANK_TURNS = ("crank-rocker", "double-crank")
+
+
+def _lengths(a, b, c, d):
+    return tuple(positive_length(n, v) for n, v in zip("abcd", (a, b, c, d)))
+
 
 def transmission_angle(a, b, c, d, theta):
-    raise NotImplementedError
+    """Transmission angle of the four-bar at crank angle theta.
+
+    The angle delta = BCD between coupler and output follows from eq. (2-30),
+    cos(delta) = (b^2 + c^2 - d^2 - a^2 + 2 a d cos(theta)) / (2 b c), and the transmission
+    angle (传动角) is gamma = delta or pi - delta, whichever is in [0, pi/2] (F50).
+
+    Parameters
+    ----------
+    a, b, c, d : float
+        Crank AB, coupler BC, output CD and ground AD, > 0.
+    theta : array_like, shape (...)
+        Crank angle, radians (the textbook's phi_1).
+
+    Returns
+    -------
+    gamma : float or ndarray, shape (...)
+        Transmission angle in [0, pi/2], radians; NaN where the linkage cannot be assembled
+        at `theta`. A float for scalar `theta`.
+
+    Raises
+    ------
+    ValueError
+        If a length is not > 0 or `theta` is not finite.
+
+    Notes
+    -----
+    Derived in :ref:`deriv-transmission-angle`: delta = 2 atan2(sqrt(P), sqrt(Q)) with
+    P = k^2 - (b - c)^2 and Q = (b + c)^2 - k^2 written through sin^2(theta/2) and
+    cos^2(theta/2), so no digits are lost near theta = 0 or pi. The value does not depend
+    on the assembly branch (the mirror image has the same angle BCD). Where P < 0 or Q < 0
+    the triangle BCD does not close; NaN is returned there without a NumPy warning.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.planar._transmission import transmission_angle
+    >>> round(float(np.degrees(transmission_angle(30, 70, 60, 80, 0.0))), 4)
+    44.4153
+    >>> np.degrees(transmission_angle(30, 70, 60, 80, [np.pi / 2, np.pi])).round(4)
+    array([81.7868, 64.6231])
+    >>> transmission_angle(40, 20, 30, 35, 0.0)   # cannot be assembled at theta = 0
+    nan
+    """
+    a, b, c, d = _lengths(a, b, c, d)
+    theta = finite_array("theta", theta)
+    with np.errstate(invalid="ignore"):
+        _, gamma = fourbar_transmission(a, b, c, d, theta)
+    return float(gamma) if np.ndim(gamma) == 0 else gamma
 
 
 def min_transmission_angle(a, b, c, d):
-    raise NotImplementedError
+    """Minimum transmission angle over the motion of the four-bar, and where it occurs.
+
+    For a linkage whose crank AB turns fully (a crank-rocker or a double-crank), the
+    diagonal BD is shortest at theta = 0 and longest at theta = pi, so the angle BCD takes
+    its extremes there (F53, F54) and gamma_min = min(gamma(0), gamma(pi)): the rule F55.
+
+    Parameters
+    ----------
+    a, b, c, d : float
+        Crank AB, coupler BC, output CD and ground AD, > 0.
+
+    Returns
+    -------
+    gamma_min : float
+        Minimum transmission angle, radians, in [0, pi/2].
+    theta_at : float
+        Crank angle where it occurs: 0.0 or pi when the crank turns fully (0.0 on a tie).
+
+    Raises
+    ------
+    ValueError
+        If a length is not > 0 or the four lengths cannot form a linkage.
+
+    Notes
+    -----
+    Derived in :ref:`deriv-transmission-angle`. If the crank does not turn fully
+    (``grashof(a, b, c, d).kind`` not "crank-rocker" or "double-crank"), the input rocks
+    between dead-centre positions where coupler and output are collinear (BD = b + c or
+    |b - c|). The transmission angle is 0 there, so the function returns ``(0.0,
+    theta_at)`` with ``theta_at`` the smallest crank angle in [0, pi] of such a position
+    (its mirror -theta_at is another): a linkage driven at AB locks there.
+
+    Examples
+    --------
+    The textbook's check case (F55): delta_min = 44.4153 deg at theta = 0.
+
+    >>> import numpy as np
+    >>> from mech.planar._transmission import min_transmission_angle
+    >>> gamma_min, theta_at = min_transmission_angle(30, 70, 60, 80)
+    >>> round(float(np.degrees(gamma_min)), 4), theta_at
+    (44.4153, 0.0)
+    >>> gamma_min, theta_at = min_transmission_angle(10, 40, 30, 35)   # Example 2-1
+    >>> round(float(np.degrees(gamma_min)), 4), theta_at
+    (38.6248, 0.0)
+    """
+    a, b, c, d = _lengths(a, b, c, d)
+    kind = grashof(a, b, c, d).kind
+    if kind in _CRANK_TURNS:
+        _, (gamma_0, gamma_pi) = fourbar_transmission(a, b, c, d, np.array([0.0, np.pi]))
+        if gamma_pi < gamma_0:
+            return float(gamma_pi), float(np.pi)
+        return float(gamma_0), 0.0
+    with np.errstate(invalid="ignore"):
+        theta_locks = fourbar_crank_angle_at_diagonal(a, d, np.array([b + c, abs(b - c)]))
+    return 0.0, float(np.nanmin(theta_locks))
