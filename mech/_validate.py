@@ -25,7 +25,7 @@ def finite_array(name, value):
     """Return ``value`` as a float array after checking that every entry is finite."""
     arr = np.asarray(value, dtype=float)
     if not np.all(np.isfinite(arr)):
-        bad = arr[~np.isfinite(arr)].ravel()[0] if arr.ndim else arr.item()
+        bad = float(arr[~np.isfinite(arr)].ravel()[0])
         raise ValueError(f"Expected finite `{name}`, got {bad!r}")
     return arr
 

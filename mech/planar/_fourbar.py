@@ -108,7 +108,7 @@ class FourBar:
     >>> from mech.planar import FourBar
     >>> linkage = FourBar(10, 40, 30, 35)           # example 2-1
     >>> pose = linkage.solve(np.pi / 2)
-    >>> round(abs(pose.C - pose.B), 12), round(abs(pose.C - 35), 12)
+    >>> round(float(abs(pose.C - pose.B)), 12), round(float(abs(pose.C - 35)), 12)
     (40.0, 30.0)
     >>> linkage.solve(np.linspace(0, np.pi, 5), order=1).omega_output.shape
     (5,)
@@ -205,7 +205,7 @@ class FourBar:
             )
         valid = ~np.isnan(S)
         if strict and not np.all(valid):
-            bad = np.broadcast_to(theta, valid.shape)[~valid].ravel()[0]
+            bad = float(np.broadcast_to(theta, valid.shape)[~valid].ravel()[0])
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
         fields = {"theta": theta[()], "valid": valid[()],
                   "B": _complex(Bx, By), "C": _complex(Cx, Cy), "P": _complex(Px, Py)}
