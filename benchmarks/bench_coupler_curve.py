@@ -547,8 +547,8 @@ def table(results):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--quick", action="store_true", help="small sizes, few repeats; writes nothing")
-    parser.add_argument("--output", type=Path, default=OUTPUT)
+    parser.add_argument("--quick", action="store_true", help="small sizes, few repeats; writes only to --output")
+    parser.add_argument("--output", type=Path, default=None, help=f"default {OUTPUT.relative_to(ROOT)}")
     args = parser.parse_args(argv)
     if args.quick:
         sizes, samples, rs, rl, sl = (2_000, 20_000), 200, 3, 2, 2_000
@@ -585,10 +585,11 @@ def main(argv=None):
         "goals": GOALS,
         "notes": notes,
     }
-    if not args.quick:
-        args.output.parent.mkdir(parents=True, exist_ok=True)
-        args.output.write_text(json.dumps(doc, indent=1) + "\n")
-        print(f"wrote {args.output.relative_to(ROOT) if args.output.is_relative_to(ROOT) else args.output}")
+    output = args.output or (None if args.quick else OUTPUT)
+    if output is not None:
+        output.parent.mkdir(parents=True, exist_ok=True)
+        output.write_text(json.dumps(doc, indent=1) + "\n")
+        print(f"wrote {output}")
     return 0
 
 
