@@ -19,7 +19,7 @@ setup: $(STAMP)
 
 ## Set everything up and build the book (fails on any warning or failing cell).
 book: $(STAMP)
-	set -o pipefail; MPLBACKEND=Agg $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
+	set -o pipefail; $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
 	$(BIN)/python book/_check_offline.py book/_build/html
 
 ## Regenerate mech/_generated from the derivation notebooks.
