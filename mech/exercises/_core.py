@@ -149,13 +149,18 @@ class Solution:
         """Return a dict of result name to value."""
         return {r.name: r.value for r in self.results()}
 
-    def as_markdown(self, *, heading_level=3):
-        """Render the solution as Markdown (LaTeX between dollars, angles in degrees)."""
-        h = "#" * heading_level
+    def as_markdown(self, *, heading_level=None):
+        """Render the solution as Markdown (LaTeX between dollars, angles in degrees).
+
+        The title is a heading of ``heading_level`` (1 to 6), or bold text when None (the
+        default, safe inside a book page's output).
+        """
+        title = f"Solution of exercise {self.number}"
+        title = f"{'#' * heading_level} {title}" if heading_level else f"**{title}**"
         given = ", ".join(
             f"{k} = {_fmt_number(v)} {self.units.get(k, '')}".rstrip() for k, v in self.params.items()
         )
-        lines = [f"{h} Solution of exercise {self.number}", "", f"Given: {given}.", ""]
+        lines = [title, "", f"Given: {given}.", ""]
         if self.conventions:
             lines += ["Conventions:", ""] + [f"- {c}" for c in self.conventions] + [""]
         for part in self.parts:

@@ -127,7 +127,8 @@ def test_variant_reproducible_and_valid(number):
 def test_as_markdown_lists_every_result(number):
     solution = ex.get(number).solve()
     text = solution.as_markdown()
-    assert text.startswith(f"### Solution of exercise {number}")
+    assert text.startswith(f"**Solution of exercise {number}**")
+    assert solution.as_markdown(heading_level=2).startswith(f"## Solution of exercise {number}")
     for r in solution.results():
         assert f"**{r.name}**" in text
 
