@@ -1,4 +1,4 @@
-"""Planar linkages: the four-bar and the slider-crank (textbook chapter 2).
+"""Planar linkages: the four-bar, the slider-crank and the guide-bar (textbook chapter 2).
 
 Conventions (``CONVENTIONS.md``): angles in radians, points as complex numbers
 ``x + 1j*y``, ground pivots ``A = 0`` and ``D = d``.
@@ -6,20 +6,27 @@ Conventions (``CONVENTIONS.md``): angles in radians, points as complex numbers
 
 from mech._errors import AssemblyError
 from mech.planar._fourbar import FourBar, FourBarPose
-from mech.planar._grashof import GrashofResult, grashof
+from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_intervals
+from mech.planar._guide_bar import GuideBar, GuideBarPose
 from mech.planar._limit_positions import LimitPositions
 from mech.planar._quick_return import extreme_angle, time_ratio
-from mech.planar._slider_crank import SliderCrank, SliderCrankPose
+from mech.planar._slider_crank import SliderCrank, SliderCrankLimits, SliderCrankPose, SliderCrankSeries
 
 __all__ = [
     "AssemblyError",
     "FourBar",
     "FourBarPose",
     "GrashofResult",
+    "GuideBar",
+    "GuideBarPose",
+    "KindInterval",
     "LimitPositions",
     "SliderCrank",
+    "SliderCrankLimits",
     "SliderCrankPose",
+    "SliderCrankSeries",
     "extreme_angle",
     "grashof",
+    "kind_intervals",
     "time_ratio",
 ]
