@@ -227,11 +227,11 @@ class SliderCrank:
         s = self._e - self._a * np.sin(theta)
         valid = np.abs(s) <= self._b
         if strict and not np.all(valid):
-            first = theta[~valid].ravel()[0] if theta.ndim else theta.item()
+            first = float(theta[~valid].ravel()[0] if theta.ndim else theta.item())
+            reach = float(abs(self._e - self._a * np.sin(first)))
             raise AssemblyError(
-                f"Expected |a sin(theta) - e| <= b for every crank angle, got "
-                f"|{self._a!r} sin({first!r}) - {self._e!r}| = {abs(self._e - self._a * np.sin(first))!r}"
-                f" > b = {self._b!r} at theta = {first!r}"
+                f"Expected |a sin(theta) - e| <= b = {self._b!r}, got {reach!r} at theta = "
+                f"{first!r}: the rod cannot reach the guide there"
             )
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             x, phi, B, C = _gen.slider_crank_position(*args, theta, self._branch)
