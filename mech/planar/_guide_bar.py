@@ -58,7 +58,7 @@ class GuideBar:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._guide_bar import GuideBar
+    >>> from mech.planar import GuideBar
     >>> mechanism = GuideBar.from_swing(300.0, np.radians(60.0))    # example 2-2
     >>> round(mechanism.a, 9), round(mechanism.time_ratio(), 9), round(mechanism.min_guide_length(), 9)
     (150.0, 2.0, 450.0)
@@ -85,7 +85,7 @@ class GuideBar:
         ``a = d sin(swing / 2)`` (F30), for ``0 < swing < pi``.
 
         >>> import numpy as np
-        >>> from mech.planar._guide_bar import GuideBar
+        >>> from mech.planar import GuideBar
         >>> round(GuideBar.from_swing(300.0, np.radians(60.0)).a, 9)
         150.0
         """
@@ -125,7 +125,7 @@ class GuideBar:
         Examples
         --------
         >>> import numpy as np
-        >>> from mech.planar._guide_bar import GuideBar
+        >>> from mech.planar import GuideBar
         >>> pose = GuideBar(150.0, 300.0).solve(np.pi / 3, order=1)
         >>> round(float(np.degrees(pose.psi)), 9), round(float(pose.omega_guide), 12)
         (150.0, 0.0)
@@ -150,7 +150,7 @@ class GuideBar:
         """Swing of the guide bar, ``2 asin(a / d)`` (F23, in atan2 form).
 
         >>> import numpy as np
-        >>> from mech.planar._guide_bar import GuideBar
+        >>> from mech.planar import GuideBar
         >>> round(float(np.degrees(GuideBar(150.0, 300.0).swing())), 9)
         60.0
         """
@@ -160,7 +160,7 @@ class GuideBar:
         """Extreme angle (极位夹角) of the crank; it equals the swing (F23).
 
         >>> import numpy as np
-        >>> from mech.planar._guide_bar import GuideBar
+        >>> from mech.planar import GuideBar
         >>> round(float(np.degrees(GuideBar(150.0, 300.0).extreme_angle())), 9)
         60.0
         """
@@ -169,7 +169,7 @@ class GuideBar:
     def time_ratio(self):
         """Time ratio K = (pi + swing) / (pi - swing) of eq. (2-9).
 
-        >>> from mech.planar._guide_bar import GuideBar
+        >>> from mech.planar import GuideBar
         >>> round(GuideBar(150.0, 300.0).time_ratio(), 9)
         2.0
         """
@@ -180,7 +180,7 @@ class GuideBar:
     def min_guide_length(self):
         """Shortest guide that keeps the block on it: the largest DB, ``d + a`` (F30).
 
-        >>> from mech.planar._guide_bar import GuideBar
+        >>> from mech.planar import GuideBar
         >>> GuideBar(150.0, 300.0).min_guide_length()
         450.0
         """

@@ -8,7 +8,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from mech.planar._guide_bar import GuideBar, GuideBarPose
+from mech.planar import GuideBar, GuideBarPose
 
 
 def _sweep(a, d, n=2_000_001):

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from mech import AssemblyError
-from mech.planar._slider_crank import SliderCrank, SliderCrankPose
+from mech.planar import SliderCrank, SliderCrankPose
 
 
 def _mp_reference(a, b, e, theta, m, omega, alpha):
