@@ -1,0 +1,91 @@
+"""Figures for the chapter "Structure and types of four-bars" (textbook section 2.1).
+
+Plain plotting functions: they take data and Matplotlib axes and draw; nothing runs at
+import. Used by ``book/structure/index.md``.
+"""
+
+import numpy as np
+
+__all__ = ["KIND_COLORS", "plot_reachable_region", "plot_kind_map"]
+
+#: One colour per four-bar kind, shared by every figure of the chapter.
+KIND_COLORS = {
+    "double-crank": "#4c72b0",
+    "crank-rocker": "#55a868",
+    "rocker-crank": "#8fbf7f",
+    "double-rocker": "#dd8452",
+    "triple-rocker": "#c44e52",
+}
+
+
+def plot_reachable_region(ax, a, b, c, d, *, title=None, n=721):
+    """Draw the reachable-region test for joint A (the textbook's Fig. 2-4a).
+
+    Ground pivots A = 0 and D = d. The pin B' of link AB moves on the circle of radius
+    ``a`` about A; the pin B'' of link BC, held by CD, can reach the annulus about D with
+    radii |b - c| and b + c (shaded). Arcs of the circle outside the annulus, where the
+    chain cannot close, are drawn in red.
+    """
+    from matplotlib.patches import Wedge
+
+    inner, outer = abs(b - c), b + c
+    ax.add_patch(
+        Wedge((d, 0.0), outer, 0, 360, width=outer - inner, facecolor="#c6dbef",
+              edgecolor="#4c72b0", linewidth=1.0, label=r"reach of $B''$ about $D$")
+    )
+    theta = np.linspace(0.0, 2.0 * np.pi, n)
+    B = a * np.exp(1j * theta)
+    dist = np.abs(B - d)
+    ok = (dist >= inner) & (dist <= outer)
+    ax.plot(B.real, B.imag, color="black", linewidth=1.6, label=r"path of $B'$ about $A$")
+    bad = np.where(ok, np.nan, 1.0)
+    if not np.all(ok):
+        ax.plot(B.real * bad, B.imag * bad, color="#c44e52", linewidth=3.0,
+                label="chain cannot close")
+    ax.plot([0.0, d], [0.0, 0.0], color="0.3", linewidth=2.5)
+    ax.plot([0.0, d], [0.0, 0.0], "o", color="black", markersize=5)
+    ax.annotate("A", (0.0, 0.0), textcoords="offset points", xytext=(-10, -12))
+    ax.annotate("D", (d, 0.0), textcoords="offset points", xytext=(4, -12))
+    ax.set_aspect("equal")
+    span = max(outer, a) * 1.08
+    ax.set_xlim(min(-a, d - outer) - 0.05 * span, max(a, d + outer) + 0.05 * span)
+    ax.set_ylim(-span, span)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    if title:
+        ax.set_title(title, fontsize=10)
+    ax.legend(loc="lower left", fontsize=8, framealpha=0.9)
+    return ax
+
+
+def plot_kind_map(ax, intervals, *, name="length", marks=()):
+    """Draw a type map: coloured bands of one varying link length, one per interval.
+
+    ``intervals`` are records with ``low``, ``high``, ``kind``, ``closed_low`` and
+    ``closed_high`` (as returned by ``mech.planar.kind_intervals``). A boundary length
+    that belongs to an interval (a closed end) gets a dot in that interval's colour.
+    ``marks`` are extra lengths to label on the axis.
+    """
+    seen = set()
+    for r in intervals:
+        color = KIND_COLORS[r.kind]
+        label = r.kind if r.kind not in seen else None
+        seen.add(r.kind)
+        if r.high > r.low:
+            ax.axvspan(r.low, r.high, ymin=0.3, ymax=0.7, facecolor=color, alpha=0.85,
+                       label=label)
+        else:
+            ax.axvline(r.low, ymin=0.2, ymax=0.8, color=color, linewidth=3, label=label)
+        for x, closed in ((r.low, r.closed_low), (r.high, r.closed_high)):
+            if closed:
+                ax.plot([x], [0.5], "o", color=color, markeredgecolor="black", markersize=7,
+                        zorder=3)
+    boundaries = sorted({r.low for r in intervals} | {r.high for r in intervals})
+    ax.set_xticks(sorted(set(boundaries) | set(marks)))
+    ax.set_xlim(boundaries[0], boundaries[-1])
+    ax.set_ylim(0.0, 1.0)
+    ax.set_yticks([])
+    ax.set_xlabel(name)
+    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=len(seen), fontsize=8,
+              frameon=False)
+    return ax
