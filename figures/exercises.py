@@ -107,6 +107,8 @@ def transmission_curves(theta, curves, marks=(), ax=None):
     ax.set_ylabel("transmission angle γ (degrees)")
     ax.set_xlim(deg.min(), deg.max())
     ax.set_xticks(np.arange(-180, 181, 90))
+    low = min(np.nanmin(np.degrees(np.asarray(g))) for g in curves.values())
+    ax.set_ylim(low - 10.0, 92.0)
     ax.grid(alpha=0.3)
-    ax.legend(loc="lower left", fontsize=8)
+    ax.legend(loc="lower right", fontsize=8)
     return ax
