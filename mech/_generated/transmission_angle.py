@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:2ceae88a854fe5e04e259d70feaa27d646de9596b6b79ecfc19a8cc67ff2d24e"
+INPUT_HASH = "sha256:3ae7c8ee52fe79fd837e02cd82ac6031ac41a1567ac14b3ff92453f5fee471e4"
 
 __all__ = ['fourbar_transmission', 'fourbar_crank_angle_at_diagonal']
 
@@ -39,15 +39,21 @@ def fourbar_transmission(a, b, c, d, theta):
     """
     x0 = -b
     x1 = a - d
-    x2 = -c
-    x3 = (1/2)*theta
-    x4 = 4*a*d
-    x5 = a + d
-    x6 = 2*np.arctan2(np.sqrt(x4*np.sin(x3)**2 + (-b - x1 - x2)*(-c - x0 - x1)), np.sqrt(x4*np.cos(x3)**2 + (b + c + x5)*(-x0 - x2 - x5)))
-    x7 = -1/2*np.pi
+    x2 = c + x0 + x1
+    x3 = -c
+    x4 = b + x1 + x3
+    x5 = (1/2)*theta
+    x6 = 4*a*d
+    x7 = x6*np.sin(x5)**2
+    x8 = np.sqrt(x2*x4 + x7)
+    x9 = a + d
+    x10 = b + c + x9
+    x11 = x0 + x3 + x9
+    x12 = x6*np.cos(x5)**2
+    x13 = np.sqrt(-x10*x11 + x12)
     return (
-        x6,
-        -x7 - abs(x6 + x7),
+        2*np.arctan2(x8, x13),
+        np.arctan2(2*x13*x8, abs(x10*x11 - x12 + x2*x4 + x7)),
     )
 
 
