@@ -198,6 +198,28 @@ class Exercise:
     sampler : callable
         ``sampler(rng: numpy.random.Generator) -> dict``, a candidate variant; candidates
         the solver rejects are drawn again.
+
+    Notes
+    -----
+    Lengths are plain numbers in the exercise's unit (millimetres in chapter 2); angles in
+    results are radians, shown in degrees only when rendered. The exercises of the book
+    page ``book-exercises`` are the records in :mod:`mech.exercises.chapter2`.
+
+    Examples
+    --------
+    >>> from mech.exercises import get
+    >>> ex = get("2-6")
+    >>> ex.defaults
+    {'r': 30.0, 'l': 100.0, 'e': 20.0}
+    >>> s = ex.solve(e=0.0)                      # override one given value
+    >>> float(s["stroke, centric"].value)
+    60.0
+    >>> ex.variant(7) == ex.variant(7)           # a seed gives the same numbers
+    True
+    >>> ex.solve(r=90.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: Expected `r` + `e` < `l` so that the crank turns fully, got r + e = 110.0 >= l = 100.0
     """
 
     number: str

@@ -4,9 +4,24 @@ Each solver uses only public functions of :mod:`mech.planar`; the statements are
 anew in English with the textbook's numbers as defaults. Lengths are in millimetres,
 angles in radians (the rendered solutions show degrees too).
 
+Notes
+-----
+The theory behind the solvers is derived on the pages ``deriv-grashof`` (2-2 and part 2
+of 2-3), ``deriv-fourbar-limit-positions`` and ``deriv-transmission-angle`` (part 1 of
+2-3) and ``deriv-slider-crank`` (2-6); the solutions are shown on the book page
+``book-exercises``. Each solver states its conventions in the solution it returns.
+
+Examples
+--------
 >>> from mech.exercises import chapter2
 >>> [ex.number for ex in chapter2.EXERCISES]
 ['2-2', '2-3', '2-6']
+>>> s = chapter2.EXERCISE_2_2.solve()
+>>> [str(iv) for iv in s["AB for a double-rocker"].value]
+['(15, 45)', '(55, 115)']
+>>> s = chapter2.EXERCISE_2_3.solve()
+>>> s["type with AB as the frame"].value
+'a double-crank: AD and BC both turn fully'
 """
 
 from __future__ import annotations
@@ -238,7 +253,7 @@ def _solve_2_3(p):
     part2 = Part(
         "(2) AB is the frame",
         (
-            Result("type", _KIND_TEXT_AB_FRAME[g2.kind], "",
+            Result("type with AB as the frame", _KIND_TEXT_AB_FRAME[g2.kind], "",
                    "`grashof(AD, DC, CB, BA)`: the linkage relabelled with AB as the frame"),
             Result("joints that turn fully", revolving, "", "`.revolving`, names mapped back"),
             Result("joint C", joint["C"], "", ""),
