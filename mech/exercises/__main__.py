@@ -9,6 +9,8 @@
 import argparse
 import sys
 
+import numpy as np
+
 from mech.exercises import EXERCISES, get
 
 
@@ -42,7 +44,7 @@ def _parser():
                       metavar="NAME=VALUE", help="replace a given value (repeatable)")
     variant = sub.add_parser("variant", help="draw new valid numbers, state and solve")
     variant.add_argument("number", type=_exercise, help="exercise number, e.g. 2-3")
-    variant.add_argument("--seed", type=int, default=None, help="random seed (reproducible)")
+    variant.add_argument("--seed", type=int, default=None, help="random seed (default: a new one, printed)")
     return parser
 
 
@@ -61,8 +63,10 @@ def main(argv=None):
             params = ex.params(dict(args.assign))
             heading = f"Exercise {ex.number}: {ex.title}"
         else:
-            params = ex.variant(args.seed)
-            heading = f"Exercise {ex.number} (variant, seed {args.seed}): {ex.title}"
+            # without --seed, draw one and print it, so that the variant can be repeated
+            seed = args.seed if args.seed is not None else int(np.random.default_rng().integers(2**31))
+            params = ex.variant(seed)
+            heading = f"Exercise {ex.number} (variant, seed {seed}): {ex.title}"
         solution = ex.solve(params)
     except ValueError as err:
         parser.exit(2, f"{parser.prog}: error: {err}\n")

@@ -377,6 +377,14 @@ def test_main_variant_seed(capsys):
     assert f"AB = {p['AB']:g} mm" in first and "(variant, seed 7)" in first
 
 
+def test_main_variant_without_seed_prints_seed(capsys):
+    assert main(["variant", "2-6"]) == 0
+    out = capsys.readouterr().out
+    seed = int(out.split("(variant, seed ")[1].split(")")[0])
+    assert main(["variant", "2-6", "--seed", str(seed)]) == 0
+    assert capsys.readouterr().out == out
+
+
 def test_main_unknown_number(capsys):
     with pytest.raises(SystemExit) as info:
         main(["variant", "2-9"])
