@@ -74,6 +74,14 @@ def limit_positions(d, B, C, ax=None, *, names=("extended", "folded")):
                     xytext=(4, 4), color=_COLOURS[i])
         ax.annotate(f"C{'′' * (i + 1)}", (C[i].real, C[i].imag), textcoords="offset points",
                     xytext=(4, 4), color=_COLOURS[i])
+    # the extreme-position angle: between A->B' and A->C'' (the folded crank, extended)
+    u = np.angle(np.array([B[0], -B[1]]))
+    ax.plot([0.0, C[1].real], [0.0, C[1].imag], ":", color=_COLOURS[1], lw=1)
+    arc = np.linspace(u[0], u[0] + np.angle(np.exp(1j * (u[1] - u[0]))), 30)
+    rho = 0.8 * a
+    ax.plot(rho * np.cos(arc), rho * np.sin(arc), color="k", lw=1)
+    mid = arc[len(arc) // 2]
+    ax.annotate("θ", (1.15 * rho * np.cos(mid), 1.15 * rho * np.sin(mid)), ha="center", va="center")
     ax.annotate("A", (0.0, 0.0), textcoords="offset points", xytext=(-12, -12))
     ax.annotate("D", (d, 0.0), textcoords="offset points", xytext=(4, -12))
     ax.set_aspect("equal")
