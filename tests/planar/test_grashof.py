@@ -341,3 +341,22 @@ def test_kind_intervals_bad_input():
         kind_intervals((1, 2), "d")
     with pytest.raises(ValueError, match="Expected `lengths` to have the keys"):
         kind_intervals({"a": 1, "b": 2, "d": 3}, "d")
+
+
+def test_grashof_change_point_decimal_lengths():
+    """0.1 + 0.7 and 0.2 + 0.6 differ by one rounding in binary; still a change point."""
+    assert (0.1 + 0.7) != (0.2 + 0.6)
+    r = grashof(0.1, 0.7, 0.2, 0.6)
+    assert r.change_point and r.grashof
+    assert r.kind == "crank-rocker"
+
+
+@pytest.mark.parametrize("scale", [1e-9, 1e-3, 1e3, 1e9])
+def test_kind_intervals_scale_invariant(scale):
+    base = kind_intervals((20, 50, 40), "d")
+    scaled = kind_intervals((20 * scale, 50 * scale, 40 * scale), "d")
+    assert [r.kind for r in scaled] == [r.kind for r in base]
+    for r, s in zip(base, scaled):
+        assert (s.closed_low, s.closed_high) == (r.closed_low, r.closed_high)
+        assert s.low == pytest.approx(r.low * scale, rel=1e-12)
+        assert s.high == pytest.approx(r.high * scale, rel=1e-12)
