@@ -15,10 +15,10 @@ import importlib as _importlib
 
 from mech._errors import AssemblyError
 
-__all__ = ["AssemblyError", "planar"]
+__all__ = ["AssemblyError", "exercises", "planar"]
 __version__ = "0.1.0"
 
-_SUBPACKAGES = {"planar"}
+_SUBPACKAGES = {"exercises", "planar"}
 
 
 def __getattr__(name):
