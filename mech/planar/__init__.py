@@ -8,9 +8,10 @@ from mech._errors import AssemblyError
 from mech.planar._fourbar import FourBar, FourBarPose
 from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_intervals
 from mech.planar._guide_bar import GuideBar, GuideBarPose
-from mech.planar._limit_positions import LimitPositions
+from mech.planar._limit_positions import LimitPositions, limit_positions
 from mech.planar._quick_return import extreme_angle, time_ratio
 from mech.planar._slider_crank import SliderCrank, SliderCrankLimits, SliderCrankPose, SliderCrankSeries
+from mech.planar._transmission import min_transmission_angle, transmission_angle
 
 __all__ = [
     "AssemblyError",
@@ -28,5 +29,8 @@ __all__ = [
     "extreme_angle",
     "grashof",
     "kind_intervals",
+    "limit_positions",
+    "min_transmission_angle",
     "time_ratio",
+    "transmission_angle",
 ]
