@@ -5,6 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
+from mech.planar._pose import Pose
 
 __all__ = ["FourBar", "FourBarPose"]
 
@@ -18,7 +19,7 @@ def _complex(x, y):
     return out[()]
 
 
-class FourBarPose:
+class FourBarPose(Pose):
     """Poses of a four-bar at an array of input angles (returned by `FourBar.solve`).
 
     Attributes
@@ -39,36 +40,16 @@ class FourBarPose:
         "omega_coupler": 1, "omega_output": 1, "vB": 1, "vC": 1, "vP": 1,
         "alpha_coupler": 2, "alpha_output": 2, "aB": 2, "aC": 2, "aP": 2,
     }
+    _DERIVED = ("phi", "psi")
 
     def __init__(self, d, order, fields):
+        super().__init__(order, fields)
         object.__setattr__(self, "_d", d)
-        object.__setattr__(self, "order", order)
-        object.__setattr__(self, "_fields", fields)
 
-    def __getattr__(self, name):
-        fields = self.__dict__.get("_fields", {})
-        if name in fields:
-            return fields[name]
-        if name == "phi":
-            value = np.angle(fields["C"] - fields["B"])[()]
-        elif name == "psi":
-            value = np.angle(fields["C"] - self._d)[()]
-        elif name in self._ORDER_OF:
-            raise AttributeError(
-                f"`{name}` needs solve(..., order={self._ORDER_OF[name]}) or higher; "
-                f"this pose was solved with order={self.order}"
-            )
-        else:
-            raise AttributeError(f"FourBarPose has no attribute {name!r}")
-        fields[name] = value
-        return value
-
-    def __setattr__(self, name, value):
-        raise AttributeError("FourBarPose is immutable")
-
-    def __repr__(self):
-        shape = np.shape(self._fields["theta"])
-        return f"FourBarPose(order={self.order}, shape={shape}, valid={int(np.sum(self.valid))}/{int(np.size(self.valid))})"
+    def _derive(self, name):
+        C = self._fields["C"]
+        start = self._fields["B"] if name == "phi" else self._d
+        return np.angle(C - start)[()]
 
 
 class FourBar:

@@ -4,12 +4,12 @@ import numpy as np
 
 from mech._generated import slider_crank as _gen
 from mech._validate import finite_array, nonnegative_int, positive_length
-from mech.planar._slider_crank import _Pose
+from mech.planar._pose import Pose
 
 __all__ = ["GuideBar", "GuideBarPose"]
 
 
-class GuideBarPose(_Pose):
+class GuideBarPose(Pose):
     """Poses of an oscillating guide-bar at an array of crank angles (`GuideBar.solve`).
 
     Attributes

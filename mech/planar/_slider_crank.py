@@ -8,43 +8,12 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
+from mech.planar._pose import Pose
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
 
 
-class _Pose:
-    """Immutable bundle of solved fields; fields above the solved order raise."""
-
-    _ORDER_OF = {}
-
-    def __init__(self, order, fields):
-        object.__setattr__(self, "order", order)
-        object.__setattr__(self, "_fields", fields)
-
-    def __getattr__(self, name):
-        fields = self.__dict__.get("_fields", {})
-        if name in fields:
-            return fields[name]
-        if name in self._ORDER_OF:
-            raise AttributeError(
-                f"`{name}` needs solve(..., order={self._ORDER_OF[name]}) or higher; "
-                f"this pose was solved with order={self.order}"
-            )
-        raise AttributeError(f"{type(self).__name__} has no attribute {name!r}")
-
-    def __setattr__(self, name, value):
-        raise AttributeError(f"{type(self).__name__} is immutable")
-
-    def __dir__(self):
-        return sorted(set(super().__dir__()) | set(self._fields))
-
-    def __repr__(self):
-        valid = np.asarray(self._fields["valid"])
-        return (f"{type(self).__name__}(order={self.order}, shape={valid.shape}, "
-                f"valid={int(valid.sum())}/{valid.size})")
-
-
-class SliderCrankPose(_Pose):
+class SliderCrankPose(Pose):
     """Poses of a slider-crank at an array of crank angles (from `SliderCrank.solve`).
 
     Attributes
