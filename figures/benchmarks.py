@@ -104,12 +104,13 @@ def ratios_markdown(doc):
     rat = list(doc.get("ratios", [])) if doc else []
     if not rat:
         return "*No ratios to show.*"
-    lines = ["| ratio | measured | goal | verdict |", "|:--|--:|--:|:--|"]
+    lines = ["| ratio | medians | fastest runs | goal | verdict |", "|:--|--:|--:|--:|:--|"]
     for r in rat:
         sign = "≥" if r.get("kind") == "min" else "≤"
         value = "n/a" if r.get("value") is None else f"{r['value']:.2f}"
+        fastest = "n/a" if r.get("value_of_minima") is None else f"{r['value_of_minima']:.2f}"
         verdict = {True: "met", False: "missed", None: "not measured"}[r.get("pass")]
-        lines.append(f"| {r.get('description', r.get('name'))} | {value} | {sign} {r.get('goal')} | {verdict} |")
+        lines.append(f"| {r.get('description', r.get('name'))} | {value} | {fastest} | {sign} {r.get('goal')} | {verdict} |")
     return "\n".join(lines)
 
 
