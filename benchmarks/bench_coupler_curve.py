@@ -380,6 +380,28 @@ def interleaved(preparers, repeats):
     return {k: (times[k], results[k]) for k in preparers}
 
 
+def pylinkage_drift(n, samples=300):
+    """Where pylinkage's error comes from: the crank angle it actually reached.
+
+    pylinkage advances the crank from the angle of its previous position, so rounding
+    accumulates in the input angle. Returns the largest drift of that angle from 2 pi k / n,
+    and pylinkage's position error measured at its own crank angle instead (relative to
+    a + b + c + d): if the second is at rounding level, the drift explains the error.
+    """
+    linkage, ip = pylinkage_build(n)
+    pos = linkage.step_fast(iterations=n, dt=1.0)
+    ib = next(i for i, comp in enumerate(linkage.components) if comp.name == "B")
+    actual = np.unwrap(np.angle(pos[:, ib, 0] + 1j * pos[:, ib, 1]))
+    idx = sample_index(n, samples)
+    P = pos[idx, ip, 0] + 1j * pos[idx, ip, 1]
+    own, _, _ = coupler_reference(actual[idx], **GEOMETRY, branch=BRANCH, coupler=COUPLER)
+    return {
+        "n": n,
+        "max_input_angle_drift_rad": float(np.max(np.abs(actual - grid(n)))),
+        "err_position_at_own_crank_angle": max_error(P, own, sum(GEOMETRY.values())),
+    }
+
+
 # ----------------------------------------------------------------------------- driver
 
 
@@ -485,6 +507,14 @@ def run_benchmark(sizes, samples, repeats_small, repeats_large, scipy_slice, log
                 else:
                     times, out = timed(lambda: run(theta), reps)
                     record("scipy-root", label, order, n, times, out, idx, ref)
+    if have_pylinkage:
+        for n in sizes:
+            diag = pylinkage_drift(n)
+            notes.append(
+                f"pylinkage N={n}: its crank angle drifts up to {diag['max_input_angle_drift_rad']:.1e} rad from "
+                f"2 pi k/N; measured at its own crank angle its position error is {diag['err_position_at_own_crank_angle']:.1e}"
+            )
+            log(notes[-1])
     return results, notes
 
 

@@ -11,7 +11,10 @@ import json
 import math
 from pathlib import Path
 
-__all__ = ["RESULTS_PATH", "load_results", "results_markdown", "ratios_markdown", "measured_on", "work_precision"]
+__all__ = [
+    "RESULTS_PATH", "load_results", "results_markdown", "ratios_markdown", "notes_markdown", "measured_on",
+    "work_precision",
+]
 
 RESULTS_PATH = Path(__file__).resolve().parent.parent / "benchmarks" / "results" / "coupler_curve.json"
 
@@ -57,7 +60,7 @@ def measured_on(doc):
     load = m.get("load_average_at_start")
     parts = [
         f"Measured on {doc.get('date', 'an unrecorded date')} (UTC) on {m.get('cpu', 'an unrecorded CPU')}",
-        f"({cpus} usable cores, {m.get('system', 'unknown system')}",
+        f"({cpus or 'an unrecorded number of'} usable cores, {m.get('system', 'unknown system')}",
     ]
     if load:
         parts[-1] += f", load average {load[0]:.2f} at the start"
@@ -112,6 +115,14 @@ def ratios_markdown(doc):
         verdict = {True: "met", False: "missed", None: "not measured"}[r.get("pass")]
         lines.append(f"| {r.get('description', r.get('name'))} | {value} | {fastest} | {sign} {r.get('goal')} | {verdict} |")
     return "\n".join(lines)
+
+
+def notes_markdown(doc):
+    """The run's notes (skipped methods, diagnostics) as a Markdown list."""
+    notes = list(doc.get("notes", [])) if doc else []
+    if not notes:
+        return "*The run recorded no notes.*"
+    return "\n".join(f"- {n}" for n in notes)
 
 
 def work_precision(doc, axes=None):
