@@ -5,9 +5,9 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:39debb3331b16165278ab00c0b074f0e40bdec505a2a19112bb99fd39df924c0"
+INPUT_HASH = "sha256:eb24d191df2aa38932cda40c5153c500fac3ec7e25eae8e67bcd15e56cabb071"
 
-__all__ = ['fourbar_assembly_gaps', 'fourbar_position', 'fourbar_velocity', 'fourbar_acceleration']
+__all__ = ['fourbar_assembly_gaps', 'fourbar_position', 'fourbar_position_signed', 'fourbar_velocity', 'fourbar_acceleration']
 
 
 def fourbar_assembly_gaps(a, b, c, d):
@@ -47,7 +47,7 @@ def fourbar_assembly_gaps(a, b, c, d):
     )
 
 
-def fourbar_position(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4):
+def fourbar_position(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4):
     """Joints B, C, coupler point P and the area term S at crank angle theta.
 
     Generated from ``derivations/planar/fourbar_position.md``, equations (2-11), (2-12).
@@ -71,11 +71,93 @@ def fourbar_position(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4)
     branch : array_like
         +1 or -1
     gap2 : array_like
-        assembly gap, 0 at a change point
+        assembly gap |d - a| - (c - b)
     gap3 : array_like
-        assembly gap
+        assembly gap |d - a| - (b - c)
     gap4 : array_like
-        assembly gap
+        assembly gap (b + c) - (d + a)
+
+    Returns
+    -------
+    B_x : ndarray
+        x of B
+    B_y : ndarray
+        y of B
+    C_x : ndarray
+        x of C
+    C_y : ndarray
+        y of C
+    P_x : ndarray
+        x of P
+    P_y : ndarray
+        y of P
+    S : ndarray
+        four times the area of BCD (signed at change points); NaN where it cannot assemble
+
+    Arguments broadcast against each other like a NumPy ufunc.
+    """
+    x0 = (1/2)*theta
+    x1 = np.sin(x0)
+    x2 = x1**2
+    x3 = 2*x2
+    x4 = a*(1 - x3)
+    x5 = np.cos(x0)
+    x6 = 2*a*x1*x5
+    x7 = a*x3 - a + d
+    x8 = a - d
+    x9 = 4*a*d
+    x10 = x2*x9
+    x11 = x10 + x8**2
+    x12 = b**2 - c**2 + x11
+    x13 = np.sqrt(x11)
+    x14 = x10/(x13 + abs(x8))
+    x15 = np.sqrt((gap2 + x14)*(gap3 + x14)*(gap4 + x5**2*x9/(a + d + x13)))
+    x16 = np.sqrt(b + c + x13)
+    x17 = x15*x16
+    x18 = (1/2)/x11
+    x19 = x18*(branch*x17*x6 + x12*x7)
+    x20 = x18*(branch*x15*x16*x7 - x12*x6)
+    x21 = b**(-1.0)
+    return (
+        x4,
+        x6,
+        x19 + x4,
+        x20 + x6,
+        x21*(p*x19 - q*x20) + x4,
+        x21*(p*x20 + q*x19) + x6,
+        x17,
+    )
+
+
+def fourbar_position_signed(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4):
+    """B, C, P and S of a change-point linkage, S signed so that it stays smooth.
+
+    Generated from ``derivations/planar/fourbar_position.md``, equations (2-11), (2-12).
+
+    Parameters
+    ----------
+    a : array_like
+        crank AB
+    b : array_like
+        coupler BC
+    c : array_like
+        rocker CD
+    d : array_like
+        ground AD
+    p : array_like
+        coupler point, along B->C
+    q : array_like
+        coupler point, left of B->C
+    theta : array_like
+        crank angle, radians
+    branch : array_like
+        +1 or -1
+    gap2 : array_like
+        assembly gap |d - a| - (c - b)
+    gap3 : array_like
+        assembly gap |d - a| - (b - c)
+    gap4 : array_like
+        assembly gap (b + c) - (d + a)
     m23 : array_like
         number of zero gaps among gap2, gap3
     m4 : array_like
@@ -96,7 +178,7 @@ def fourbar_position(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4)
     P_y : ndarray
         y of P
     S : ndarray
-        signed four times the area of BCD; NaN where it cannot assemble
+        four times the area of BCD (signed at change points); NaN where it cannot assemble
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
@@ -108,32 +190,30 @@ def fourbar_position(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4)
     x5 = np.cos(x0)
     x6 = 2*a*x1*x5
     x7 = a*x3 - a + d
-    x8 = x7**2
-    x9 = x5**2
-    x10 = a**2*x2*x9
-    x11 = (8*x10 + 2*x8)**(-1.0)
-    x12 = b**2 - c**2 + 4*x10 + x8
-    x13 = a - d
-    x14 = 4*a*d
-    x15 = x14*x2
-    x16 = np.sqrt(x13**2 + x15)
-    x17 = x15/(x16 + abs(x13))
-    x18 = np.sqrt((gap2 + x17)*(gap3 + x17)*(gap4 + x14*x9/(a + d + x16)))
-    x19 = np.sqrt(b + c + x16)
-    x20 = np.sign(x5)**m4
-    x21 = np.sign(x1)**m23
-    x22 = x18*x19*x20*x21
-    x23 = x11*(branch*x22*x6 + x12*x7)
-    x24 = x11*(branch*x18*x19*x20*x21*x7 - x12*x6)
-    x25 = b**(-1.0)
+    x8 = a - d
+    x9 = 4*a*d
+    x10 = x2*x9
+    x11 = x10 + x8**2
+    x12 = b**2 - c**2 + x11
+    x13 = np.sqrt(x11)
+    x14 = x10/(x13 + abs(x8))
+    x15 = np.sqrt((gap2 + x14)*(gap3 + x14)*(gap4 + x5**2*x9/(a + d + x13)))
+    x16 = np.sqrt(b + c + x13)
+    x17 = np.sign(x5)**m4
+    x18 = np.sign(x1)**m23
+    x19 = x15*x16*x17*x18
+    x20 = (1/2)/x11
+    x21 = x20*(branch*x19*x6 + x12*x7)
+    x22 = x20*(branch*x15*x16*x17*x18*x7 - x12*x6)
+    x23 = b**(-1.0)
     return (
         x4,
         x6,
-        x23 + x4,
-        x24 + x6,
-        x25*(p*x23 - q*x24) + x4,
-        x25*(p*x24 + q*x23) + x6,
-        x22,
+        x21 + x4,
+        x22 + x6,
+        x23*(p*x21 - q*x22) + x4,
+        x23*(p*x22 + q*x21) + x6,
+        x19,
     )
 
 

@@ -10,13 +10,18 @@ from mech.planar._pose import Pose
 __all__ = ["FourBar", "FourBarPose"]
 
 
-def _complex(x, y):
-    """Pack two real arrays into one complex array (a scalar for 0-d input)."""
-    x, y = np.broadcast_arrays(x, y)
-    out = np.empty(x.shape, dtype=complex)
-    out.real = x
-    out.imag = y
-    return out[()]
+_BLOCK = 1 << 14
+_FIELDS = ("B", "C", "P", "omega_coupler", "omega_output", "vB", "vC", "vP",
+           "alpha_coupler", "alpha_output", "aB", "aC", "aP")
+_FIELD_COUNT = {0: 3, 1: 8, 2: 13}
+_COMPLEX = {"B", "C", "P", "vB", "vC", "vP", "aB", "aC", "aP"}
+
+
+def _store(out, name, x, y):
+    """Write the real and imaginary parts of one complex field of a block."""
+    target = out[name]
+    target.real = x
+    target.imag = y
 
 
 class FourBarPose(Pose):
@@ -179,34 +184,68 @@ class FourBar:
         """
         order = nonnegative_int("order", order, 2)
         theta = finite_array("theta", theta)
-        a, b, c, d, (p, q), branch = self._a, self._b, self._c, self._d, self._coupler, self._branch
-        with np.errstate(invalid="ignore", divide="ignore"):
-            Bx, By, Cx, Cy, Px, Py, S = _gen.fourbar_position(
-                a, b, c, d, p, q, theta, branch, *self._gaps, self._m23, self._m4
-            )
-        valid = ~np.isnan(S)
-        if strict and not np.all(valid):
-            bad = float(np.broadcast_to(theta, valid.shape)[~valid].ravel()[0])
-            raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
-        fields = {"theta": theta[()], "valid": valid[()],
-                  "B": _complex(Bx, By), "C": _complex(Cx, Cy), "P": _complex(Px, Py)}
+        inputs = [theta]
         if order >= 1:
-            omega = finite_array("omega", omega)
-            with np.errstate(invalid="ignore", divide="ignore"):
-                w2, w3, vBx, vBy, vCx, vCy, vPx, vPy = _gen.fourbar_velocity(
-                    b, d, p, q, Bx, By, Cx, Cy, S, branch, omega
+            inputs.append(finite_array("omega", omega))
+        if order >= 2:
+            inputs.append(finite_array("alpha", alpha))
+        shape = np.broadcast_shapes(*(x.shape for x in inputs))
+        flat = [np.broadcast_to(x, shape).reshape(-1) for x in inputs]
+        size = flat[0].size
+        out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float)
+               for name in _FIELDS[: _FIELD_COUNT[order]]}
+        out["valid"] = np.empty(size, dtype=bool)
+        # Blocks that fit in cache: the generated code makes many temporaries per step.
+        for start in range(0, max(size, 1), _BLOCK):
+            block = slice(start, start + _BLOCK)
+            self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()})
+        valid = out["valid"]
+        if strict and not np.all(valid):
+            bad = float(flat[0][~valid][0])
+            raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
+        fields = {name: value.reshape(shape)[()] for name, value in out.items()}
+        fields["theta"] = np.broadcast_to(theta, shape)[()]
+        return FourBarPose(self._d, order, fields)
+
+    def _solve_block(self, inputs, order, out):
+        """Solve one block of flat inputs, writing into the views in `out`."""
+        a, b, c, d, (p, q), branch = self._a, self._b, self._c, self._d, self._coupler, self._branch
+        theta = inputs[0]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            if self._m23 + self._m4:
+                Bx, By, Cx, Cy, Px, Py, S = _gen.fourbar_position_signed(
+                    a, b, c, d, p, q, theta, branch, *self._gaps, self._m23, self._m4
                 )
-            fields.update(omega_coupler=np.asarray(w2)[()], omega_output=np.asarray(w3)[()],
-                          vB=_complex(vBx, vBy), vC=_complex(vCx, vCy), vP=_complex(vPx, vPy))
-            if order >= 2:
-                alpha = finite_array("alpha", alpha)
-                with np.errstate(invalid="ignore", divide="ignore"):
-                    a2, a3, aBx, aBy, aCx, aCy, aPx, aPy = _gen.fourbar_acceleration(
-                        b, d, p, q, Bx, By, Cx, Cy, S, branch, omega, alpha, w2, w3
-                    )
-                fields.update(alpha_coupler=np.asarray(a2)[()], alpha_output=np.asarray(a3)[()],
-                              aB=_complex(aBx, aBy), aC=_complex(aCx, aCy), aP=_complex(aPx, aPy))
-        return FourBarPose(d, order, fields)
+            else:
+                Bx, By, Cx, Cy, Px, Py, S = _gen.fourbar_position(
+                    a, b, c, d, p, q, theta, branch, *self._gaps
+                )
+            np.isnan(S, out=out["valid"])
+            np.logical_not(out["valid"], out=out["valid"])
+            _store(out, "B", Bx, By)
+            _store(out, "C", Cx, Cy)
+            _store(out, "P", Px, Py)
+            if order < 1:
+                return
+            omega = inputs[1]
+            w2, w3, vBx, vBy, vCx, vCy, vPx, vPy = _gen.fourbar_velocity(
+                b, d, p, q, Bx, By, Cx, Cy, S, branch, omega
+            )
+            out["omega_coupler"][...] = w2
+            out["omega_output"][...] = w3
+            _store(out, "vB", vBx, vBy)
+            _store(out, "vC", vCx, vCy)
+            _store(out, "vP", vPx, vPy)
+            if order < 2:
+                return
+            a2, a3, aBx, aBy, aCx, aCy, aPx, aPy = _gen.fourbar_acceleration(
+                b, d, p, q, Bx, By, Cx, Cy, S, branch, omega, inputs[2], w2, w3
+            )
+            out["alpha_coupler"][...] = a2
+            out["alpha_output"][...] = a3
+            _store(out, "aB", aBx, aBy)
+            _store(out, "aC", aCx, aCy)
+            _store(out, "aP", aPx, aPy)
 
     def limit_positions(self):
         """Limit positions of a crank-rocker: see `mech.planar.LimitPositions`.
