@@ -121,7 +121,8 @@ class FourBar:
         gaps = [float(g) for g in _gen.fourbar_assembly_gaps(*(lengths[n] for n in "abcd"))]
         zero = [abs(g) <= rtol * total for g in gaps]
         self._gaps = tuple(0.0 if z else g for g, z in zip(gaps, zero))
-        self._m23 = int(zero[0]) + int(zero[1])
+        # one sign flip even when both are zero: then the diagonal B->D itself reverses
+        self._m23 = int(zero[0] or zero[1])
         self._m4 = int(zero[2])
 
     a = property(lambda self: self._a, doc="Crank length AB.")

@@ -248,3 +248,19 @@ def test_fourbar_bad_options():
         linkage.solve([0.0, np.nan])
     with pytest.raises(ValueError, match="Expected `order` to be an integer in \\[0, 2\\], got 3"):
         linkage.solve(0.0, order=3)
+
+
+def test_solve_change_point_kite_turns_twice():
+    """The kite a = d < b = c (Fig. 2-5b, short link as ground): C stays on the bisector of
+    angle BAD, so the long crank CD turns once while the short crank AB turns twice. At
+    theta = 0 the crank pin sits on D and C is not fixed by the loop: reported invalid."""
+    a, b = 1.0, 2.0
+    theta = np.linspace(-4 * np.pi, 4 * np.pi, 2001)
+    theta = theta[np.abs(np.sin(theta / 2)) > 1e-9]
+    pose = FourBar(a, b, b, a).solve(theta)
+    half = theta / 2
+    expected = np.exp(1j * half) * (a * np.cos(half) + np.sqrt(b * b - (a * np.sin(half)) ** 2))
+    np.testing.assert_allclose(pose.C, expected, atol=1e-12)
+    turns = np.ptp(np.unwrap(pose.psi[theta > 0])) / (2 * np.pi)
+    assert abs(turns - 1.0) < 0.01  # crank angle spans 4 pi (less the sample at 0)
+    assert not FourBar(a, b, b, a).solve(0.0).valid
