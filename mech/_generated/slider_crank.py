@@ -5,9 +5,9 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:a42f8b759adf66bfb5e07d3b634a02d4d69be16c1340be8614f9cb45436505a7"
+INPUT_HASH = "sha256:1f0169d2e4ae40cef6e926ea7117163a841d1f4f66177610e1386e7b31d5f3fb"
 
-__all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_acceleration', 'slider_crank_limits', 'slider_crank_transmission', 'slider_crank_min_transmission', 'slider_crank_series', 'guide_bar_position', 'guide_bar_velocity', 'guide_bar_acceleration', 'guide_bar_swing']
+__all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_acceleration', 'slider_crank_limits', 'slider_crank_transmission', 'slider_crank_min_transmission', 'slider_crank_series', 'guide_bar_position', 'guide_bar_velocity', 'guide_bar_acceleration', 'guide_bar_swing', 'guide_bar_crank']
 
 
 def slider_crank_position(a, b, e, theta, m):
@@ -442,3 +442,25 @@ def guide_bar_swing(a, d):
         2*np.arctan2(a, np.sqrt(x0)*np.sqrt(-a + d)),
         x0,
     )
+
+
+def guide_bar_crank(d, swing):
+    """Crank length of the guide-bar with a given swing (F30).
+
+    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+
+    Parameters
+    ----------
+    d : array_like
+        frame length AD of the guide-bar
+    swing : array_like
+        swing of the guide, radians, in (0, pi)
+
+    Returns
+    -------
+    a : ndarray
+        crank length AB
+
+    Arguments broadcast against each other like a NumPy ufunc.
+    """
+    return d*np.sin((1/2)*swing)

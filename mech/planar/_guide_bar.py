@@ -93,7 +93,7 @@ class GuideBar:
         swing = positive_length("swing", swing)
         if swing >= np.pi:
             raise ValueError(f"Expected `swing` < pi, got {swing!r}")
-        return cls(d * np.sin(swing / 2), d)
+        return cls(float(_gen.guide_bar_crank(d, swing)), d)
 
     def solve(self, theta, order=0, omega=1.0, alpha=0.0):
         """Guide angle, block distance and their rates at crank angles `theta`.

@@ -193,17 +193,17 @@ class SliderCrank:
         order = nonnegative_int("order", order, 2)
         theta = finite_array("theta", theta)
         args = (self._a, self._b, self._e)
-        s = self._e - self._a * np.sin(theta)
-        valid = np.abs(s) <= self._b
-        if strict and not np.all(valid):
-            first = float(theta[~valid].ravel()[0] if theta.ndim else theta.item())
-            reach = float(abs(self._e - self._a * np.sin(first)))
-            raise AssemblyError(
-                f"Expected |a sin(theta) - e| <= b = {self._b!r}, got {reach!r} at theta = "
-                f"{first!r}: the rod cannot reach the guide there"
-            )
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             x, phi, B, C = _gen.slider_crank_position(*args, theta, self._branch)
+        # the generated root is NaN exactly where the rod cannot reach the guide
+        valid = ~np.isnan(x)
+        if strict and not np.all(valid):
+            first = float(np.broadcast_to(theta, valid.shape)[~valid].ravel()[0])
+            raise AssemblyError(
+                f"Cannot assemble {self!r} at theta = {first!r}: the rod cannot reach the guide "
+                f"there (|a sin(theta) - e| > b)"
+            )
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             fields = {"theta": theta, "valid": valid, "x": x, "phi": phi, "B": B, "C": C}
             if order >= 1:
                 omega = finite_array("omega", omega)
