@@ -6,7 +6,7 @@ Each function takes data computed by ``mech`` and a Matplotlib ``Axes`` (a new f
 
 import numpy as np
 
-__all__ = ["kind_map", "limit_positions", "transmission_curves"]
+__all__ = ["kind_map", "transmission_curves"]
 
 _COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple")
 
@@ -45,49 +45,6 @@ def kind_map(ranges, total, ax=None, *, xlabel="length of AB (mm)"):
     ax.set_ylim(-0.6, len(labels) - 0.2)
     ax.set_xlabel(xlabel)
     ax.grid(axis="x", alpha=0.3)
-    return ax
-
-
-def limit_positions(d, B, C, ax=None, *, names=("extended", "folded")):
-    """Draw a four-bar (A = 0, D = d) in its two limit positions.
-
-    Parameters
-    ----------
-    d : float
-        Frame length AD.
-    B, C : array_like of complex, shape (2,)
-        The moving joints in the two positions.
-    """
-    ax = _axes(ax, (6.0, 4.5))
-    B, C = np.asarray(B), np.asarray(C)
-    a, c = abs(B[0]), abs(C[0] - d)
-    t = np.linspace(0.0, 2.0 * np.pi, 200)
-    ax.plot(a * np.cos(t), a * np.sin(t), ":", color="0.6", lw=1)
-    psi = np.unwrap(np.angle(C - d))
-    arc = np.linspace(psi[0], psi[1], 60)
-    ax.plot(d + c * np.cos(arc), c * np.sin(arc), ":", color="0.6", lw=1)
-    ax.plot([0.0, d], [0.0, 0.0], color="k", lw=2.5)
-    for i, (style, name) in enumerate(zip(("-", "--"), names)):
-        pts = np.array([0.0, B[i], C[i], d])
-        ax.plot(pts.real, pts.imag, style, marker="o", color=_COLOURS[i], label=name)
-        ax.annotate(f"B{'′' * (i + 1)}", (B[i].real, B[i].imag), textcoords="offset points",
-                    xytext=(4, 4), color=_COLOURS[i])
-        ax.annotate(f"C{'′' * (i + 1)}", (C[i].real, C[i].imag), textcoords="offset points",
-                    xytext=(4, 4), color=_COLOURS[i])
-    # the extreme-position angle: between A->B' and A->C'' (the folded crank, extended)
-    u = np.angle(np.array([B[0], -B[1]]))
-    ax.plot([0.0, C[1].real], [0.0, C[1].imag], ":", color=_COLOURS[1], lw=1)
-    arc = np.linspace(u[0], u[0] + np.angle(np.exp(1j * (u[1] - u[0]))), 30)
-    rho = 0.8 * a
-    ax.plot(rho * np.cos(arc), rho * np.sin(arc), color="k", lw=1)
-    mid = arc[len(arc) // 2]
-    ax.annotate("θ", (1.15 * rho * np.cos(mid), 1.15 * rho * np.sin(mid)), ha="center", va="center")
-    ax.annotate("A", (0.0, 0.0), textcoords="offset points", xytext=(-12, -12))
-    ax.annotate("D", (d, 0.0), textcoords="offset points", xytext=(4, -12))
-    ax.set_aspect("equal")
-    ax.legend(loc="best", fontsize=8)
-    ax.set_xlabel("x (mm)")
-    ax.set_ylabel("y (mm)")
     return ax
 
 
