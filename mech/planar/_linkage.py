@@ -1,0 +1,736 @@
+"""Any planar linkage of revolute and sliding pairs: drivers, then class II Assur groups.
+
+The formulas come from ``derivations/planar/assur_groups.md`` through
+``mech._generated.assur_groups``; this module only orders the steps, carries the state
+(points, link directions, rates) from one group to the next, and reports failures.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from types import MappingProxyType
+
+import numpy as np
+
+from mech._errors import AssemblyError
+from mech._generated import assur_groups as _g
+from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
+
+__all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
+
+GROUND = "ground"
+
+
+@dataclass(frozen=True)
+class Guide:
+    """A straight guide fixed in a link: through a point of it, at an angle to the link.
+
+    ``through`` is a point name, or local coordinates (complex) in the link's frame;
+    ``angle`` is measured from the link's x axis (for the ground: from +x).
+    """
+
+    link: str
+    through: object = 0j
+    angle: float = 0.0
+
+
+@dataclass(frozen=True)
+class Slide:
+    """Relative motion in one sliding pair: the moving link along the guiding link.
+
+    ``s`` is the position along the guide, ``v`` and ``a`` its first and second time
+    derivatives (the relative sliding velocity and acceleration, along ``direction``),
+    ``coriolis`` the Coriolis acceleration 2 omega x v_rel (complex), where
+    omega is the angular velocity of the guiding link.
+    """
+
+    s: np.ndarray
+    direction: np.ndarray
+    v: np.ndarray = None
+    a: np.ndarray = None
+    coriolis: np.ndarray = None
+
+
+@dataclass(frozen=True)
+class AssemblyInterval:
+    """A closed interval of one driver's input where the linkage assembles."""
+
+    start: float
+    end: float
+
+
+@dataclass(frozen=True)
+class _Step:
+    kind: str
+    label: str
+    links: tuple
+    data: tuple          # (key, value) pairs, so the step stays hashable and immutable
+
+    def get(self, key):
+        return dict(self.data)[key]
+
+
+def _re_im(z):
+    return np.real(z), np.imag(z)
+
+
+class Linkage:
+    """A planar linkage built as drivers followed by class II Assur groups.
+
+    Build it with the chained methods below (each returns a new, immutable ``Linkage``),
+    then call :meth:`solve` on arrays of input values. Links are named by strings; the
+    frame is ``"ground"``. Points are complex numbers. Every link has a frame: an origin
+    point and a direction, set by the step that creates it (listed with each method), and
+    ``point(name, link=..., at=...)`` attaches a point by its local coordinates there.
+
+    Parameters
+    ----------
+    ground : mapping of str to complex, optional
+        Named fixed points.
+
+    Notes
+    -----
+    Derivation: ``derivations/planar/assur_groups.md`` (eqs. 2-11 to 2-18). Each group has
+    an explicit assembly mode ``branch`` (the textbook's M), with a geometric meaning that
+    never changes along a motion, so a solution never jumps from one mode to the other.
+
+    Examples
+    --------
+    The four-bar of example 2-1 as a crank and an RRR group:
+
+    >>> lk = (Linkage({"A": 0, "D": 35})
+    ...       .crank("crank", pivot="A", tip="B", length=10)
+    ...       .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(40, 30)))
+    >>> sol = lk.solve([0.0, 1.0], order=1)
+    >>> abs(sol.points["C"] - 35).round(6).tolist()
+    [30.0, 30.0]
+    """
+
+    def __init__(self, ground=None):
+        self._steps = ()
+        self._points = {}        # name -> link that first carries it
+        self._links = {GROUND: None}
+        self._guides = {}
+        self._drivers = ()
+        for name, z in dict(ground or {}).items():
+            self._add_point(name, GROUND)
+            self._steps += (_Step("ground", name, (GROUND,), (("at", complex(z)),)),)
+
+    # ------------------------------------------------------------------ building
+    def _copy(self):
+        new = object.__new__(Linkage)
+        new._steps = self._steps
+        new._points = dict(self._points)
+        new._links = dict(self._links)
+        new._guides = dict(self._guides)
+        new._drivers = self._drivers
+        return new
+
+    def _add_point(self, name, link):
+        if not isinstance(name, str) or not name:
+            raise ValueError(f"Expected a point name (a non-empty str), got {name!r}")
+        if name in self._points:
+            raise ValueError(f"Expected a new point name, got {name!r}, which is already defined")
+        self._points[name] = link
+
+    def _add_link(self, name):
+        if not isinstance(name, str) or not name:
+            raise ValueError(f"Expected a link name (a non-empty str), got {name!r}")
+        if name in self._links:
+            raise ValueError(f"Expected a new link name, got {name!r}, which is already defined")
+        self._links[name] = True
+
+    def _need_point(self, name):
+        if name not in self._points:
+            known = ", ".join(sorted(self._points)) or "none"
+            raise ValueError(f"Expected a known point, got {name!r} (known points: {known})")
+
+    def _need_link(self, name):
+        if name not in self._links:
+            known = ", ".join(sorted(self._links))
+            raise ValueError(f"Expected a known link, got {name!r} (known links: {known})")
+
+    def _need_guide(self, guide):
+        if not isinstance(guide, Guide):
+            raise ValueError(f"Expected a `Guide(link, through, angle)`, got {guide!r}")
+        self._need_link(guide.link)
+        if isinstance(guide.through, str):
+            self._need_point(guide.through)
+        else:
+            complex(guide.through)
+        if not math.isfinite(float(guide.angle)):
+            raise ValueError(f"Expected a finite guide angle, got {guide.angle!r}")
+        return guide
+
+    def _push(self, kind, label, links, **data):
+        new = self
+        new._steps = new._steps + (_Step(kind, label, tuple(links), tuple(data.items())),)
+        return new
+
+    def ground(self, name, at):
+        """Add a fixed point ``name`` at ``at`` (complex)."""
+        new = self._copy()
+        new._add_point(name, GROUND)
+        return new._push("ground", name, (GROUND,), at=complex(at))
+
+    def point(self, name, *, link, at):
+        """Attach a point to ``link`` at local coordinates ``at`` (complex) in its frame."""
+        new = self._copy()
+        new._need_link(link)
+        if link == GROUND:
+            return new.ground(name, at)
+        new._add_point(name, link)
+        return new._push("point", name, (link,), at=complex(at))
+
+    def crank(self, link, *, pivot, tip, length, driver=None):
+        """A crank: ``link`` turns about the known point ``pivot`` through the input angle.
+
+        The input is the absolute angle of ``pivot -> tip`` from +x (counter-clockwise);
+        the link's frame has its origin at ``pivot`` and its x axis along ``pivot -> tip``.
+        """
+        new = self._copy()
+        new._need_point(pivot)
+        r = positive_length(f"length of {link}", length)
+        new._add_link(link)
+        new._add_point(tip, link)
+        name = link if driver is None else driver
+        new._drivers = new._drivers + (name,)
+        return new._push("crank", f"crank {link}", (link,), pivot=pivot, tip=tip, length=r, driver=name)
+
+    def slider(self, link, *, guide, point, driver=None):
+        """A linear driver: ``link`` slides along ``guide`` by the input distance.
+
+        The link's reference point ``point`` is at ``Q + s e`` (Q: the guide's point, e:
+        its direction, s: the input); its frame has x along the guide.
+        """
+        new = self._copy()
+        new._need_guide(guide)
+        new._add_link(link)
+        new._add_point(point, link)
+        name = link if driver is None else driver
+        new._drivers = new._drivers + (name,)
+        return new._push("slider", f"slider {link}", (link, guide.link), guide=guide, point=point, driver=name)
+
+    def rrr(self, links, *, pins, joint, lengths, branch=1):
+        """RRR group (eqs. 2-11, 2-12): two links pinned at known ``pins`` and at ``joint``.
+
+        ``branch=+1`` puts ``joint`` to the left of the directed line pins[0] -> pins[1].
+        Frames: link 0 from pins[0] with x towards ``joint``; link 1 from pins[1], likewise.
+        A length given as a str is a driver: an actuator whose length is an input.
+        """
+        new = self._copy()
+        l1, l2 = links
+        p1, p2 = pins
+        new._need_point(p1)
+        new._need_point(p2)
+        lens = []
+        for k, r in enumerate(lengths):
+            if isinstance(r, str):
+                new._drivers = new._drivers + (r,)
+                lens.append(r)
+            else:
+                lens.append(positive_length(f"lengths[{k}] of the RRR group {l1}-{l2}", r))
+        new._add_link(l1)
+        new._add_link(l2)
+        new._add_point(joint, l1)
+        return new._push("rrr", f"RRR {l1}-{l2}", (l1, l2), pins=(p1, p2), joint=joint,
+                         lengths=tuple(lens), branch=branch_sign(branch))
+
+    def rrp(self, links, *, pin, guide, joint, length, branch=1):
+        """RRP group (eqs. 2-13 to 2-16): a rod from ``pin`` to a block on ``guide``.
+
+        ``branch=+1`` when ``pin -> joint`` makes an acute angle with the guide direction.
+        Frames: the rod from ``pin`` with x towards ``joint``; the block from ``joint`` with
+        x along the guide. The block's sliding pair is ``(links[1], guide.link)``.
+        """
+        new = self._copy()
+        rod, block = links
+        new._need_point(pin)
+        new._need_guide(guide)
+        r = positive_length(f"length of {rod}", length)
+        new._add_link(rod)
+        new._add_link(block)
+        new._add_point(joint, rod)
+        return new._push("rrp", f"RRP {rod}-{block}", (rod, block), pin=pin, guide=guide, joint=joint,
+                         length=r, branch=branch_sign(branch))
+
+    def rpr(self, links, *, pins, offset=0.0, branch=1):
+        """RPR group (eqs. 2-17, 2-18): a guide link pinned at pins[0], a block at pins[1].
+
+        The guide line lies at the signed ``offset`` from pins[0] (positive: to the left,
+        looking along the guide). ``branch=+1`` when the block is ahead of the foot of
+        pins[0] on the guide. Frames: the guide link from pins[0], x along the guide; the
+        block from pins[1], x along the guide. The sliding pair is ``(links[1], links[0])``.
+        """
+        new = self._copy()
+        gl, block = links
+        for p in pins:
+            new._need_point(p)
+        e = float(offset)
+        if not math.isfinite(e):
+            raise ValueError(f"Expected a finite `offset`, got {offset!r}")
+        new._add_link(gl)
+        new._add_link(block)
+        return new._push("rpr", f"RPR {gl}-{block}", (gl, block), pins=tuple(pins), offset=e,
+                         branch=branch_sign(branch))
+
+    def prp(self, links, *, guides, joint):
+        """PRP group: two blocks on two guides, pinned to each other at ``joint``.
+
+        Frames: each block from ``joint`` with x along its guide. Sliding pairs
+        ``(links[0], guides[0].link)`` and ``(links[1], guides[1].link)``.
+        """
+        new = self._copy()
+        b1, b2 = links
+        g1, g2 = (new._need_guide(g) for g in guides)
+        new._add_link(b1)
+        new._add_link(b2)
+        new._add_point(joint, b1)
+        return new._push("prp", f"PRP {b1}-{b2}", (b1, b2), guides=(g1, g2), joint=joint)
+
+    def rpp(self, links, *, pin, guide, angle, point, offset=0.0):
+        """RPP group: a link pinned at ``pin`` slides along a link that slides on ``guide``.
+
+        The second link slides on ``guide`` and carries an inner guide at ``angle`` to it;
+        the first link turns with it, and ``pin`` lies at the signed ``offset`` from the
+        inner guide. Frames: the sliding link from its reference ``point`` (on ``guide``,
+        where the inner guide crosses it) with x along ``guide``; the pinned link from
+        ``pin`` with x along the inner guide. Sliding pairs ``(links[1], guide.link)`` and
+        ``(links[0], links[1])``.
+        """
+        new = self._copy()
+        pinned, sliding = links
+        new._need_point(pin)
+        new._need_guide(guide)
+        gam = float(angle)
+        if not math.isfinite(gam) or abs(math.sin(gam)) < 1e-12:
+            raise ValueError(f"Expected an `angle` not parallel to the guide, got {angle!r}")
+        new._add_link(pinned)
+        new._add_link(sliding)
+        new._add_point(point, sliding)
+        return new._push("rpp", f"RPP {pinned}-{sliding}", (pinned, sliding), pin=pin, guide=guide,
+                         angle=gam, point=point, offset=float(offset))
+
+    # ------------------------------------------------------------------ reading
+    @property
+    def drivers(self):
+        """Names of the inputs, in the order they were added."""
+        return self._drivers
+
+    @property
+    def links(self):
+        """Names of the links, the ground first."""
+        return tuple(self._links)
+
+    @property
+    def point_names(self):
+        """Names of every point, in the order they were defined."""
+        return tuple(self._points)
+
+    @property
+    def groups(self):
+        """Labels of the drivers and groups, in solving order."""
+        return tuple(s.label for s in self._steps if s.kind not in ("ground", "point"))
+
+    def __repr__(self):
+        return (f"Linkage({len(self._links) - 1} moving links, {len(self._points)} points, "
+                f"drivers={list(self._drivers)})")
+
+    # ------------------------------------------------------------------ solving
+    def solve(self, inputs, order=0, omega=1.0, alpha=0.0, strict=False):
+        """Positions, and velocities and accelerations up to ``order``, of every point and link.
+
+        Parameters
+        ----------
+        inputs : array_like or mapping of str to array_like
+            The input values (angles in radians for cranks, distances for sliders and
+            actuators). A bare array serves a linkage with one driver.
+        order : {0, 1, 2}
+            Highest time derivative computed. Nothing above it is computed.
+        omega, alpha : float, array_like or mapping
+            First and second time derivatives of each input (defaults 1 and 0).
+        strict : bool
+            Raise `mech.AssemblyError` naming the first group that fails and the input
+            value, instead of returning NaN with ``valid == False``.
+
+        Returns
+        -------
+        LinkageSolution
+        """
+        order = nonnegative_int("order", order, 2)
+        q, w, al = (self._per_driver(x, name) for x, name in
+                    ((inputs, "inputs"), (omega, "omega"), (alpha, "alpha")))
+        shape = np.broadcast_shapes(*(np.shape(x) for x in (*q.values(), *w.values(), *al.values())))
+        state = _State(order, shape)
+        failures = {}
+        with np.errstate(invalid="ignore", divide="ignore"):
+            for step in self._steps:
+                ok = getattr(self, "_do_" + step.kind)(step, state, q, w, al)
+                if ok is not None:
+                    ok = np.broadcast_to(ok, shape)
+                    first = ~ok & state.valid
+                    failures[step.label] = first
+                    state.valid = state.valid & ok
+        if strict and not np.all(state.valid):
+            self._raise(failures, q, shape)
+        return LinkageSolution(self, order, state, failures)
+
+    def _per_driver(self, value, what):
+        if isinstance(value, dict) or hasattr(value, "keys"):
+            unknown = set(value) - set(self._drivers)
+            if unknown:
+                raise ValueError(f"Expected `{what}` keys among the drivers {list(self._drivers)}, "
+                                 f"got {sorted(unknown)}")
+            missing = set(self._drivers) - set(value)
+            if missing and what == "inputs":
+                raise ValueError(f"Expected an input for every driver, missing {sorted(missing)}")
+            default = 1.0 if what == "omega" else 0.0
+            return {d: finite_array(f"{what}[{d!r}]", value.get(d, default)) for d in self._drivers}
+        if len(self._drivers) != 1 and what == "inputs":
+            raise ValueError(f"Expected a mapping of inputs for the drivers {list(self._drivers)}, "
+                             f"got {type(value).__name__}")
+        return {d: finite_array(what, value) for d in self._drivers}
+
+    def _raise(self, failures, q, shape):
+        for label, mask in failures.items():
+            if np.any(mask):
+                idx = np.unravel_index(np.flatnonzero(mask)[0], shape)
+                at = ", ".join(f"{d} = {float(np.broadcast_to(v, shape)[idx])!r}" for d, v in q.items())
+                raise AssemblyError(f"The group {label!r} cannot be assembled at input {at}")
+
+    # each _do_* computes one step into `state` and returns its validity (or None)
+    def _do_ground(self, step, st, q, w, al):
+        st.put_point(step.label, step.get("at"), 0.0, 0.0)
+
+    def _do_point(self, step, st, q, w, al):
+        link = step.links[0]
+        o = st.origin[link]
+        d = st.dir[link]
+        loc = step.get("at")
+        z = st.P[o] + loc * d
+        v = a = None
+        if st.order >= 1:
+            v = st.rigid_v(o, link, z)
+        if st.order >= 2:
+            a = st.rigid_a(o, link, z)
+        st.put_point(step.label, z, v, a)
+
+    def _do_crank(self, step, st, q, w, al):
+        link, pivot, tip, r = step.links[0], step.get("pivot"), step.get("tip"), step.get("length")
+        name = step.get("driver")
+        d = np.exp(1j * q[name])
+        z = st.P[pivot] + r * d
+        st.put_link(link, pivot, d, w[name] if st.order >= 1 else None, al[name] if st.order >= 2 else None)
+        v = st.rigid_v(pivot, link, z) if st.order >= 1 else None
+        a = st.rigid_a(pivot, link, z) if st.order >= 2 else None
+        st.put_point(tip, z, v, a)
+
+    def _guide_state(self, st, guide):
+        """Point Q, unit direction e, and the rates of Q and of the guide's link."""
+        link = guide.link
+        d = st.dir[link]
+        if isinstance(guide.through, str):
+            Q = st.P[guide.through]
+            vQ = st.V.get(guide.through)
+            aQ = st.A.get(guide.through)
+        else:
+            Q = st.P[st.origin[link]] + complex(guide.through) * d if st.origin[link] else complex(guide.through)
+            vQ = st.rigid_v(st.origin[link], link, Q) if st.order >= 1 and st.origin[link] else 0.0
+            aQ = st.rigid_a(st.origin[link], link, Q) if st.order >= 2 and st.origin[link] else 0.0
+        e = d * np.exp(1j * float(guide.angle))
+        return Q, e, vQ, aQ, st.W.get(link, 0.0), st.AL.get(link, 0.0)
+
+    def _do_slider(self, step, st, q, w, al):
+        link, guide, pt, name = step.links[0], step.get("guide"), step.get("point"), step.get("driver")
+        Q, e, vQ, aQ, wK, aK = self._guide_state(st, guide)
+        s = q[name]
+        z = Q + s * e
+        v = a = None
+        slide = Slide(s=np.broadcast_to(s, st.shape), direction=np.broadcast_to(e, st.shape))
+        if st.order >= 1:
+            v = _cx(*_g.slide_velocity(*_re_im(vQ), *_re_im(e), s, w[name], wK))
+        if st.order >= 2:
+            ax, ay, kx, ky = _g.slide_acceleration(*_re_im(aQ), *_re_im(e), s, w[name], al[name], wK, aK)
+            a = ax + 1j * ay
+            slide = Slide(slide.s, slide.direction, w[name], al[name], kx + 1j * ky)
+        elif st.order >= 1:
+            slide = Slide(slide.s, slide.direction, w[name])
+        st.put_link(link, pt, e, wK if st.order >= 1 else None, aK if st.order >= 2 else None)
+        st.put_point(pt, z, v, a)
+        st.put_slide(link, guide.link, slide)
+
+    def _length(self, value, q, w, al, st):
+        if isinstance(value, str):
+            return q[value], w[value] if st.order >= 1 else 0.0, al[value] if st.order >= 2 else 0.0
+        return value, 0.0, 0.0
+
+    def _do_rrr(self, step, st, q, w, al):
+        (l1, l2), (p1, p2), joint = step.links, step.get("pins"), step.get("joint")
+        (r1, dr1, ddr1), (r2, dr2, ddr2) = (self._length(x, q, w, al, st) for x in step.get("lengths"))
+        P1, P2 = st.P[p1], st.P[p2]
+        ux, uy, D = _g.rrr_position(*_re_im(P2 - P1), r1, r2, step.get("branch"))
+        u1 = ux + 1j * uy
+        P3 = P1 + u1
+        u2 = P3 - P2
+        W1 = W2 = A1 = A2 = v3 = a3 = None
+        if st.order >= 1:
+            W1, W2, vx, vy = _g.rrr_velocity(ux, uy, *_re_im(u2), r1, r2, *_re_im(st.V[p1]),
+                                             *_re_im(st.V[p2]), dr1, dr2)
+            v3 = vx + 1j * vy
+        if st.order >= 2:
+            A1, A2, ax, ay = _g.rrr_acceleration(ux, uy, *_re_im(u2), r1, r2, *_re_im(st.A[p1]),
+                                                 *_re_im(st.A[p2]), dr1, dr2, ddr1, ddr2, W1, W2)
+            a3 = ax + 1j * ay
+        st.put_link(l1, p1, u1 / r1, W1, A1)
+        st.put_link(l2, p2, u2 / r2, W2, A2)
+        st.put_point(joint, P3, v3, a3)
+        return D >= 0
+
+    def _do_rrp(self, step, st, q, w, al):
+        (rod, block), p1, guide, joint, r1 = step.links, step.get("pin"), step.get("guide"), step.get("joint"), step.get("length")
+        Q, e, vQ, aQ, wK, aK = self._guide_state(st, guide)
+        P1 = st.P[p1]
+        s, ux, uy, disc = _g.rrp_position(*_re_im(Q - P1), *_re_im(e), r1, step.get("branch"))
+        u1 = ux + 1j * uy
+        P3 = P1 + u1
+        W1 = A1 = v3 = a3 = None
+        slide = Slide(s=s, direction=np.broadcast_to(e, np.shape(s)))
+        if st.order >= 1:
+            W1, ds = _g.rrp_velocity(ux, uy, *_re_im(e), r1, s, *_re_im(st.V[p1]), *_re_im(vQ), wK)
+            v3 = st.V[p1] + 1j * W1 * u1
+            slide = Slide(s, slide.direction, ds)
+        if st.order >= 2:
+            A1, dds = _g.rrp_acceleration(ux, uy, *_re_im(e), r1, s, *_re_im(st.A[p1]), *_re_im(aQ),
+                                          wK, aK, W1, ds)
+            a3 = st.A[p1] + (1j * A1 - W1**2) * u1
+            slide = Slide(s, slide.direction, ds, dds, 2j * wK * ds * e)
+        st.put_link(rod, p1, u1 / r1, W1, A1)
+        st.put_link(block, joint, e, wK if st.order >= 1 else None, aK if st.order >= 2 else None)
+        st.put_point(joint, P3, v3, a3)
+        st.put_slide(block, guide.link, slide)
+        return disc >= 0
+
+    def _do_rpr(self, step, st, q, w, al):
+        (gl, block), (p1, p2), e0 = step.links, step.get("pins"), step.get("offset")
+        P1, P2 = st.P[p1], st.P[p2]
+        s, wx, wy, disc = _g.rpr_position(*_re_im(P2 - P1), e0, step.get("branch"))
+        d = wx + 1j * wy
+        W = A = None
+        slide = Slide(s=s, direction=d)
+        if st.order >= 1:
+            W, ds = _g.rpr_velocity(wx, wy, s, e0, *_re_im(st.V[p1]), *_re_im(st.V[p2]))
+            slide = Slide(s, d, ds)
+        if st.order >= 2:
+            A, dds, kx, ky = _g.rpr_acceleration(wx, wy, s, e0, *_re_im(st.A[p1]), *_re_im(st.A[p2]), W, ds)
+            slide = Slide(s, d, ds, dds, kx + 1j * ky)
+        st.put_link(gl, p1, d, W, A)
+        st.put_link(block, p2, d, W, A)
+        st.put_slide(block, gl, slide)
+        return disc >= 0
+
+    def _do_prp(self, step, st, q, w, al):
+        (b1, b2), (g1, g2), joint = step.links, step.get("guides"), step.get("joint")
+        Q1, e1, vQ1, aQ1, w1, a1 = self._guide_state(st, g1)
+        Q2, e2, vQ2, aQ2, w2, a2 = self._guide_state(st, g2)
+        s1, s2, det = _g.prp_position(*_re_im(Q2 - Q1), *_re_im(e1), *_re_im(e2))
+        P3 = Q1 + s1 * e1
+        sl1 = Slide(s=s1, direction=np.broadcast_to(e1, np.shape(s1)))
+        sl2 = Slide(s=s2, direction=np.broadcast_to(e2, np.shape(s2)))
+        v3 = a3 = None
+        if st.order >= 1:
+            ds1, ds2 = _g.prp_velocity(*_re_im(e1), *_re_im(e2), s1, s2, *_re_im(vQ1), *_re_im(vQ2), w1, w2)
+            v3 = _cx(*_g.slide_velocity(*_re_im(vQ1), *_re_im(e1), s1, ds1, w1))
+            sl1, sl2 = Slide(s1, sl1.direction, ds1), Slide(s2, sl2.direction, ds2)
+        if st.order >= 2:
+            dds1, dds2 = _g.prp_acceleration(*_re_im(e1), *_re_im(e2), s1, s2, *_re_im(aQ1), *_re_im(aQ2),
+                                             w1, w2, a1, a2, ds1, ds2)
+            ax, ay, k1x, k1y = _g.slide_acceleration(*_re_im(aQ1), *_re_im(e1), s1, ds1, dds1, w1, a1)
+            a3 = ax + 1j * ay
+            k2 = 2j * w2 * ds2 * e2
+            sl1 = Slide(s1, sl1.direction, ds1, dds1, k1x + 1j * k1y)
+            sl2 = Slide(s2, sl2.direction, ds2, dds2, k2)
+        st.put_link(b1, joint, e1, w1 if st.order >= 1 else None, a1 if st.order >= 2 else None)
+        st.put_link(b2, joint, e2, w2 if st.order >= 1 else None, a2 if st.order >= 2 else None)
+        st.put_point(joint, P3, v3, a3)
+        st.put_slide(b1, g1.link, sl1)
+        st.put_slide(b2, g2.link, sl2)
+        return np.abs(det) > 1e-12
+
+    def _do_rpp(self, step, st, q, w, al):
+        (pinned, sliding), p1, guide, gam, pt, e0 = (step.links, step.get("pin"), step.get("guide"),
+                                                     step.get("angle"), step.get("point"), step.get("offset"))
+        Q, e, vQ, aQ, wK, aK = self._guide_state(st, guide)
+        wdir = e * np.exp(1j * gam)
+        P1 = st.P[p1]
+        s2, t, det = _g.rpp_position(*_re_im(P1 - Q), *_re_im(e), *_re_im(wdir), e0)
+        J = Q + s2 * e
+        slo = Slide(s=s2, direction=np.broadcast_to(e, np.shape(s2)))
+        sli = Slide(s=t, direction=np.broadcast_to(wdir, np.shape(t)))
+        vJ = aJ = None
+        if st.order >= 1:
+            ds2, dt = _g.rpp_velocity(*_re_im(e), *_re_im(wdir), s2, t, e0, *_re_im(st.V[p1]), *_re_im(vQ), wK)
+            vJ = _cx(*_g.slide_velocity(*_re_im(vQ), *_re_im(e), s2, ds2, wK))
+            slo, sli = Slide(s2, slo.direction, ds2), Slide(t, sli.direction, dt)
+        if st.order >= 2:
+            dds2, ddt, k2x, k2y, kix, kiy = _g.rpp_acceleration(
+                *_re_im(e), *_re_im(wdir), s2, t, e0, *_re_im(st.A[p1]), *_re_im(aQ), wK, aK, ds2, dt)
+            ax, ay, _, _ = _g.slide_acceleration(*_re_im(aQ), *_re_im(e), s2, ds2, dds2, wK, aK)
+            aJ = ax + 1j * ay
+            slo = Slide(s2, slo.direction, ds2, dds2, k2x + 1j * k2y)
+            sli = Slide(t, sli.direction, dt, ddt, kix + 1j * kiy)
+        rate = (wK if st.order >= 1 else None, aK if st.order >= 2 else None)
+        st.put_link(sliding, pt, e, *rate)
+        st.put_link(pinned, p1, wdir, *rate)
+        st.put_point(pt, J, vJ, aJ)
+        st.put_slide(sliding, guide.link, slo)
+        st.put_slide(pinned, sliding, sli)
+        return np.abs(det) > 1e-12
+
+    # ------------------------------------------------------------------ ranges
+    def assembly_range(self, driver=None, *, start=-math.pi, end=math.pi, samples=3601, others=None):
+        """Intervals of one driver's input where the linkage assembles.
+
+        The input is sampled ``samples`` times on ``[start, end]`` (other drivers held at
+        ``others``), and each boundary between assembling and failing samples is refined
+        by bisection to rounding. An interval shorter than the sample spacing can be
+        missed; raise ``samples`` for such linkages.
+
+        Returns
+        -------
+        tuple of AssemblyInterval
+        """
+        if driver is None:
+            if len(self._drivers) != 1:
+                raise ValueError(f"Expected `driver` among {list(self._drivers)}, got None")
+            driver = self._drivers[0]
+        if driver not in self._drivers:
+            raise ValueError(f"Expected `driver` among {list(self._drivers)}, got {driver!r}")
+        fixed = dict(others or {})
+
+        def ok(x):
+            return self.solve({**fixed, driver: x}, order=0).valid
+
+        x = np.linspace(float(start), float(end), int(samples))
+        good = ok(x)
+        edges = np.flatnonzero(np.diff(good.astype(np.int8)))
+        cuts = []
+        for i in edges:
+            lo, hi = x[i], x[i + 1]          # good[i] != good[i + 1]
+            g_lo = good[i]
+            for _ in range(80):
+                mid = 0.5 * (lo + hi)
+                if mid in (lo, hi):
+                    break
+                if ok(np.array([mid]))[0] == g_lo:
+                    lo = mid
+                else:
+                    hi = mid
+            cuts.append(lo if g_lo else hi)
+        out, inside, begin = [], bool(good[0]), float(x[0])
+        for c in cuts:
+            if inside:
+                out.append(AssemblyInterval(begin, float(c)))
+            else:
+                begin = float(c)
+            inside = not inside
+        if inside:
+            out.append(AssemblyInterval(begin, float(x[-1])))
+        return tuple(out)
+
+
+def _cx(x, y):
+    return x + 1j * y
+
+
+class _State:
+    """Mutable arrays filled step by step during one solve."""
+
+    def __init__(self, order, shape):
+        self.order, self.shape = order, shape
+        self.P, self.V, self.A = {}, {}, {}
+        self.dir, self.origin, self.W, self.AL = {"ground": 1.0 + 0j}, {"ground": None}, {}, {}
+        self.slides = {}
+        self.valid = np.ones(shape, dtype=bool)
+
+    def put_point(self, name, z, v, a):
+        self.P[name] = z
+        if self.order >= 1:
+            self.V[name] = 0.0 if v is None else v
+        if self.order >= 2:
+            self.A[name] = 0.0 if a is None else a
+
+    def put_link(self, link, origin, direction, w, a):
+        if link == GROUND:
+            return
+        self.dir[link], self.origin[link] = direction, origin
+        if self.order >= 1:
+            self.W[link] = w
+        if self.order >= 2:
+            self.AL[link] = a
+
+    def put_slide(self, moving, guiding, slide):
+        self.slides[(moving, guiding)] = slide
+
+    def rigid_v(self, origin, link, z):
+        if origin is None:
+            return 0.0
+        return _cx(*_g.rigid_body_velocity(*_re_im(self.V[origin]), *_re_im(z - self.P[origin]), self.W[link]))
+
+    def rigid_a(self, origin, link, z):
+        if origin is None:
+            return 0.0
+        return _cx(*_g.rigid_body_acceleration(*_re_im(self.A[origin]), *_re_im(z - self.P[origin]),
+                                               self.W[link], self.AL[link]))
+
+
+class LinkageSolution:
+    """The solved linkage over an array of inputs (immutable).
+
+    Attributes
+    ----------
+    points, velocities, accelerations : mapping of str to complex ndarray
+        Every named point; velocities need ``order >= 1``, accelerations ``order >= 2``.
+    angles, omegas, alphas : mapping of str to float ndarray
+        Every moving link's angle (of its frame's x axis, in (-pi, pi]; use
+        ``numpy.unwrap`` along the input for a continuous angle), angular velocity and
+        angular acceleration.
+    slides : mapping of (str, str) to Slide
+        Every sliding pair, keyed by (moving link, guiding link).
+    valid : bool ndarray
+        Where every group assembles.
+    failures : mapping of str to bool ndarray
+        For each driver and group, where it is the first to fail.
+    """
+
+    def __init__(self, linkage, order, state, failures):
+        shape = state.shape
+        full = lambda x: np.broadcast_to(np.asarray(x), shape)
+        self.linkage, self.order, self.valid = linkage, order, state.valid
+        self.points = MappingProxyType({k: full(v) for k, v in state.P.items()})
+        self.velocities = MappingProxyType({k: full(v) for k, v in state.V.items()})
+        self.accelerations = MappingProxyType({k: full(v) for k, v in state.A.items()})
+        links = [k for k in linkage.links if k != GROUND]
+        self._dirs = {k: full(state.dir[k]) for k in links}
+        self.omegas = MappingProxyType({k: full(state.W[k]) for k in links if k in state.W})
+        self.alphas = MappingProxyType({k: full(state.AL[k]) for k in links if k in state.AL})
+        self.slides = MappingProxyType(dict(state.slides))
+        self.failures = MappingProxyType(failures)
+
+    @property
+    def angles(self):
+        """Angle of every moving link's frame, by atan2, in (-pi, pi]."""
+        return MappingProxyType({k: np.angle(d) for k, d in self._dirs.items()})
+
+    def direction(self, link):
+        """Unit complex direction of ``link``'s frame x axis (no trigonometry)."""
+        return self._dirs[link]
+
+    def __setattr__(self, name, value):
+        if name in self.__dict__:
+            raise AttributeError("LinkageSolution is immutable")
+        object.__setattr__(self, name, value)
+
+    def __repr__(self):
+        return (f"LinkageSolution(order={self.order}, shape={self.valid.shape}, "
+                f"valid={int(self.valid.sum())}/{self.valid.size})")
