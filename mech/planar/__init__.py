@@ -9,23 +9,29 @@ from mech.planar._fourbar import FourBar, FourBarPose
 from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_intervals
 from mech.planar._guide_bar import GuideBar, GuideBarPose
 from mech.planar._limit_positions import LimitPositions, limit_positions
+from mech.planar._linkage import AssemblyInterval, Guide, Linkage, LinkageSolution, Slide
 from mech.planar._quick_return import extreme_angle, time_ratio
 from mech.planar._slider_crank import SliderCrank, SliderCrankLimits, SliderCrankPose, SliderCrankSeries
 from mech.planar._transmission import min_transmission_angle, transmission_angle
 
 __all__ = [
     "AssemblyError",
+    "AssemblyInterval",
     "FourBar",
     "FourBarPose",
     "GrashofResult",
+    "Guide",
     "GuideBar",
     "GuideBarPose",
     "KindInterval",
     "LimitPositions",
+    "Linkage",
+    "LinkageSolution",
     "SliderCrank",
     "SliderCrankLimits",
     "SliderCrankPose",
     "SliderCrankSeries",
+    "Slide",
     "extreme_angle",
     "grashof",
     "kind_intervals",
