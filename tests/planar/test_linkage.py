@@ -1,0 +1,278 @@
+"""`Linkage` and the five class II groups against independent mpmath solutions.
+
+Each reference below is written by hand for one test linkage, at 50 digits, with other
+formulas than the generated code (arccosine angles, the textbook's quadratic (2-16),
+arcsine offsets, Cramer's rule through ``mpmath.lu_solve``), and its rates come from
+``mpmath.diff`` along the input. Nothing is shared with ``derivations/planar/assur_groups.md``.
+"""
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+from mech import AssemblyError
+from mech.planar import FourBar, Guide, Linkage, SliderCrank
+
+mpmath.mp.dps = 50
+RNG = np.random.default_rng(20261122)
+
+
+def mpc(z):
+    return mpmath.mpc(z.real, z.imag)
+
+
+def expi(x):
+    return mpmath.expj(x)
+
+
+# ---------------------------------------------------------------- mpmath group solvers
+def rrr_ref(P1, P2, r1, r2, M):
+    g = P2 - P1
+    d = abs(g)
+    alpha = mpmath.acos((d**2 + r1**2 - r2**2) / (2 * r1 * d))
+    return P1 + r1 * expi(mpmath.arg(g) + M * alpha)
+
+
+def rrp_ref(P1, Q, e, r1, M):
+    """Roots of (2-16) s^2 + E s + F = 0; the root with M * (P3 - P1).e > 0."""
+    g = Q - P1
+    E = 2 * (g.real * e.real + g.imag * e.imag)
+    F = abs(g) ** 2 - r1**2
+    for s in ((-E + mpmath.sqrt(E**2 - 4 * F)) / 2, (-E - mpmath.sqrt(E**2 - 4 * F)) / 2):
+        u = g + s * e
+        if M * (u.real * e.real + u.imag * e.imag) > 0:
+            return s
+    raise AssertionError("no root on this branch")
+
+
+def rpr_ref(P1, P2, off, M):
+    """Guide angle and block position: P2 - P1 = (s + i off) w."""
+    g = P2 - P1
+    d = abs(g)
+    s = M * mpmath.sqrt(d**2 - off**2)
+    theta = mpmath.arg(g) - mpmath.asin(off / d) if M > 0 else mpmath.arg(g) - (mpmath.pi - mpmath.asin(off / d))
+    return theta, s
+
+
+def lin2(a, b, rhs):
+    """Solve x a + y b = rhs for real x, y."""
+    A = mpmath.matrix([[a.real, b.real], [a.imag, b.imag]])
+    x = mpmath.lu_solve(A, mpmath.matrix([rhs.real, rhs.imag]))
+    return x[0], x[1]
+
+
+# ---------------------------------------------------------------- comparison helper
+def compare(sol, reference, inputs, scale, rtol=1e-12):
+    """reference(x) -> dict name -> mp value; compare values and their 1st/2nd derivatives."""
+    worst = 0.0
+    for i, x in enumerate(inputs):
+        x = mpmath.mpf(float(x))
+        ref0 = reference(x)
+        for key, val in ref0.items():
+            kind, name = key
+            d1 = mpmath.diff(lambda t: reference(t)[key], x, 1)
+            d2 = mpmath.diff(lambda t: reference(t)[key], x, 2)
+            got = _got(sol, kind, name, i)
+            for order, (g, r) in enumerate(zip(got, (val, d1, d2))):
+                if g is None:
+                    continue
+                err = abs(complex(g) - complex(r)) / scale[order]
+                worst = max(worst, err)
+                assert err < rtol, (key, order, float(x), complex(g), complex(r))
+    return worst
+
+
+def _got(sol, kind, name, i):
+    if kind == "point":
+        return sol.points[name][i], sol.velocities[name][i], sol.accelerations[name][i]
+    if kind == "angle":
+        return None, sol.omegas[name][i], sol.alphas[name][i]
+    if kind == "slide":
+        sl = sol.slides[name]
+        return sl.s[i], sl.v[i], sl.a[i]
+    raise KeyError(kind)
+
+
+def wrapped_angle_ok(sol, link, ref_angle, i):
+    diff = (sol.angles[link][i] - float(ref_angle) + math.pi) % (2 * math.pi) - math.pi
+    return abs(diff) < 1e-12
+
+
+# ---------------------------------------------------------------- RRR
+@pytest.mark.parametrize("branch", [1, -1])
+def test_linkage_rrr_agrees_with_mpmath(branch):
+    a, b, c, d = 25.0, 60.0, 45.0, 55.0
+    lk = (Linkage({"A": 0, "D": d}).crank("crank", pivot="A", tip="B", length=a)
+          .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(b, c), branch=branch)
+          .point("E", link="coupler", at=30 + 20j))
+    theta = RNG.uniform(-math.pi, math.pi, 12)
+    sol = lk.solve(theta, order=2)   # omega = 1, alpha = 0: time derivative = theta derivative
+
+    def ref(x):
+        B = a * expi(x)
+        C = rrr_ref(B, mpmath.mpf(d), b, c, branch)
+        phi = mpmath.arg(C - B)
+        return {("point", "C"): C, ("point", "E"): B + mpmath.mpc(30, 20) * expi(phi),
+                ("angle", "coupler"): phi, ("angle", "rocker"): mpmath.arg(C - d)}
+
+    compare(sol, ref, theta, scale=(100, 100, 100))
+
+
+def test_linkage_rrr_matches_fourbar_and_branch_rule():
+    lk = (Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+          .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(40, 30), branch=-1))
+    theta = np.linspace(0, 2 * np.pi, 50)
+    sol = lk.solve(theta, order=2, omega=-3.0, alpha=0.5)
+    fb = FourBar(10, 40, 30, 35, branch=-1).solve(theta, order=2, omega=-3.0, alpha=0.5)
+    np.testing.assert_allclose(sol.points["C"], fb.C, atol=1e-12 * 40)
+    np.testing.assert_allclose(sol.accelerations["C"], fb.aC, atol=1e-12 * 400)
+    B, C = sol.points["B"], sol.points["C"]
+    assert np.all(np.imag(np.conj(35 - B) * (C - B)) < 0)     # right of B -> D
+
+
+# ---------------------------------------------------------------- RRP on a turning guide, RPR
+@pytest.mark.parametrize("m_rpr,m_rrp", [(1, 1), (1, -1), (-1, 1)])
+def test_linkage_rpr_then_rrp_on_turning_guide(m_rpr, m_rrp):
+    """Crank, a guide-bar (RPR), then a rod to a slider on that turning guide (RRP)."""
+    a, off, r1 = 30.0, 4.0, 35.0
+    C0 = 50 + 5j
+    lk = (Linkage({"A": 0, "C": C0}).crank("crank", pivot="A", tip="B", length=a)
+          .rpr(("guide", "block"), pins=("C", "B"), offset=off, branch=m_rpr)
+          .point("G", link="guide", at=20 + 3j)
+          .rrp(("rod", "slider"), pin="B", guide=Guide("guide", 10 - 2j, 0.4), joint="S",
+               length=r1, branch=m_rrp))
+    theta = RNG.uniform(-math.pi, math.pi, 60)
+    theta = theta[lk.solve(theta).valid][:8]     # this test linkage does not assemble everywhere
+    assert theta.size == 8
+    sol = lk.solve(theta, order=2)
+
+    def ref(x):
+        B = a * expi(x)
+        th, s = rpr_ref(mpmath.mpc(C0), B, off, m_rpr)
+        w = expi(th)
+        G = C0 + mpmath.mpc(20, 3) * w
+        Q = C0 + mpmath.mpc(10, -2) * w
+        e = w * expi(mpmath.mpf(0.4))
+        s2 = rrp_ref(B, Q, e, r1, m_rrp)
+        S = Q + s2 * e
+        return {("point", "G"): G, ("point", "S"): S, ("angle", "guide"): th,
+                ("angle", "rod"): mpmath.arg(S - B),
+                ("slide", ("block", "guide")): s, ("slide", ("slider", "guide")): s2}
+
+    compare(sol, ref, theta, scale=(100, 100, 200))
+    # Coriolis terms: 2 omega_guide x v_rel
+    for key in (("block", "guide"), ("slider", "guide")):
+        sl = sol.slides[key]
+        np.testing.assert_allclose(sl.coriolis, 2j * sol.omegas["guide"] * sl.v * sl.direction, atol=1e-12)
+
+
+# ---------------------------------------------------------------- PRP, RPP
+def test_linkage_prp_and_rpp_agree_with_mpmath():
+    a, C0 = 30.0, 60 + 0j
+    lk = (Linkage({"A": 0, "C": C0}).crank("crank", pivot="A", tip="B", length=a)
+          .rpr(("guide", "block"), pins=("C", "B"), offset=0.0)
+          .prp(("b1", "b2"), guides=(Guide("guide", 5 + 4j, 0.0), Guide("ground", 100j, 0.3)), joint="P")
+          .rpp(("pinned", "yoke"), pin="B", guide=Guide("guide", -6 + 1j, 0.2), angle=1.2, point="J",
+               offset=0.5))
+    theta = RNG.uniform(-math.pi, math.pi, 8)
+    sol = lk.solve(theta, order=2)
+    assert sol.valid.all()
+
+    def ref(x):
+        B = a * expi(x)
+        th, s = rpr_ref(mpmath.mpc(C0), B, 0, 1)
+        w = expi(th)
+        Q1, e1 = C0 + mpmath.mpc(5, 4) * w, w
+        Q2, e2 = mpmath.mpc(0, 100), expi(mpmath.mpf(0.3))
+        s1, s2n = lin2(e1, -e2, Q2 - Q1)
+        Qr, er = C0 + mpmath.mpc(-6, 1) * w, w * expi(mpmath.mpf(0.2))
+        wi = er * expi(mpmath.mpf(1.2))
+        # B - Qr = s2 er + (t + 0.5 i) wi
+        s2, t = lin2(er, wi, B - Qr - mpmath.mpc(0, 0.5) * wi)
+        return {("point", "P"): Q1 + s1 * e1, ("point", "J"): Qr + s2 * er,
+                ("slide", ("b1", "guide")): s1, ("slide", ("b2", "ground")): s2n,
+                ("slide", ("yoke", "guide")): s2, ("slide", ("pinned", "yoke")): t}
+
+    compare(sol, ref, theta, scale=(300, 300, 600))
+    assert np.allclose(sol.omegas["pinned"], sol.omegas["guide"])
+    assert np.allclose(sol.slides[("b2", "ground")].coriolis, 0)
+
+
+# ---------------------------------------------------------------- two drivers: actuator + crank
+def test_linkage_actuator_length_is_a_driver():
+    lk = (Linkage({"O": 0, "H": 40 + 0j}).crank("boom", pivot="H", tip="T", length=50)
+          .rrr(("cyl", "rod"), pins=("O", "T"), joint="X", lengths=("stroke", 20.0)))
+    rng = np.random.default_rng(5)
+    th = rng.uniform(1.5, 2.2, 6)
+    L = rng.uniform(55, 65, 6)
+    sol = lk.solve({"boom": th, "stroke": L}, order=2, omega={"boom": 0.0, "stroke": 1.0})
+    assert lk.drivers == ("boom", "stroke")
+    for i in range(6):
+        def X(lv):
+            T = 40 + 50 * expi(mpmath.mpf(float(th[i])))
+            return rrr_ref(mpmath.mpf(0), T, lv, 20, 1)
+        lv = mpmath.mpf(float(L[i]))
+        assert abs(complex(sol.points["X"][i]) - complex(X(lv))) < 1e-12 * 100
+        assert abs(complex(sol.velocities["X"][i]) - complex(mpmath.diff(X, lv))) < 1e-12 * 100
+        assert abs(complex(sol.accelerations["X"][i]) - complex(mpmath.diff(X, lv, 2))) < 1e-12 * 100
+
+
+def test_linkage_slider_driver_matches_inverted_slider_crank():
+    """Drive the slider of a slider-crank; the crank angle must match SliderCrank."""
+    lk = (Linkage({"A": 0}).slider("piston", guide=Guide("ground", 10j, 0.0), point="C")
+          .rrr(("rod", "crank"), pins=("C", "A"), joint="B", lengths=(100.0, 30.0), branch=1))
+    x = np.linspace(75, 125, 7)
+    sol = lk.solve(x, order=0)
+    theta = np.angle(sol.points["B"])
+    sc = SliderCrank(30, 100, 10).solve(theta)
+    np.testing.assert_allclose(sc.x, x, atol=1e-12)
+
+
+# ---------------------------------------------------------------- failures and errors
+def test_linkage_strict_error_names_group_and_input():
+    lk = (Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+          .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(20, 10)))
+    sol = lk.solve(np.array([0.0, 2.0]))
+    assert sol.valid.tolist() == [True, False]
+    assert np.isnan(sol.points["C"][1])
+    assert sol.failures["RRR coupler-rocker"].tolist() == [False, True]
+    with pytest.raises(AssemblyError, match=r"RRR coupler-rocker.*crank = 2\.0"):
+        lk.solve(np.array([0.0, 2.0]), strict=True)
+
+
+def test_linkage_assembly_range_matches_closed_form():
+    # B must stay within 30 of D: |10 e^{i t} - 35| <= 30  <=>  cos t >= (100 + 1225 - 900) / 700
+    lk = (Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+          .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(20, 10)))
+    (iv,) = lk.assembly_range()
+    limit = math.acos(425 / 700)
+    assert abs(iv.start + limit) < 1e-12 and abs(iv.end - limit) < 1e-12
+
+
+def test_linkage_rejects_bad_input():
+    lk = Linkage({"A": 0, "D": 35})
+    with pytest.raises(ValueError, match=r"Expected `length of crank` > 0, got -1.0"):
+        lk.crank("crank", pivot="A", tip="B", length=-1)
+    with pytest.raises(ValueError, match=r"known point, got 'Z'"):
+        lk.crank("crank", pivot="Z", tip="B", length=1)
+    lk2 = lk.crank("crank", pivot="A", tip="B", length=10)
+    with pytest.raises(ValueError, match=r"new link name, got 'crank'"):
+        lk2.crank("crank", pivot="A", tip="B2", length=1)
+    with pytest.raises(ValueError, match=r"branch.*got 0"):
+        lk2.rrr(("b", "c"), pins=("B", "D"), joint="C", lengths=(40, 30), branch=0)
+    with pytest.raises(ValueError, match=r"finite `inputs`, got nan"):
+        lk2.solve([0.0, float("nan")])
+    with pytest.raises(ValueError, match=r"not parallel"):
+        lk2.rpp(("p", "y"), pin="B", guide=Guide("ground"), angle=0.0, point="J")
+
+
+def test_linkage_is_immutable_and_order_is_respected():
+    lk = Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+    lk2 = lk.rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(40, 30))
+    assert "C" not in lk.point_names and "C" in lk2.point_names
+    sol = lk2.solve(0.3)
+    assert sol.velocities == {} and sol.omegas == {}
+    with pytest.raises(AttributeError):
+        sol.valid = None
