@@ -253,7 +253,7 @@ class Cognates:
     def branches(self, theta):
         """Own assembly branches (+1, -1) of ABCD, AEGK and DFHK at original crank angles.
 
-        A cognate keeps one branch along the curve only if its crank revolves; otherwise
+        A cognate keeps one branch along a circuit only if its crank revolves; otherwise
         the sign flips at its limit positions. 0 where the original cannot be assembled.
         Shape ``(3,) + theta.shape``.
         """
@@ -299,10 +299,11 @@ def cognates(fourbar):
     coupler BC, its coupler EG with the original crank AB, its rocker with the original
     rocker. DFHK has ``|lam - 1| (b, c, a, d)``: crank DF with BC, coupler FH with DC,
     rocker KH with AB. In its own frame each cognate's crank angle equals the original
-    coupler angle phi. A cognate keeps one assembly branch along the curve only when its
-    crank revolves (the original is then a double-crank); otherwise its branch flips at
-    its own limit positions, and `Cognates.branches` says which applies where. See the
-    derivation page :ref:`deriv-cognates`.
+    coupler angle phi. A cognate keeps one assembly branch along a circuit only when its
+    crank revolves (the original is a double-crank, or a double-rocker with the coupler
+    shortest); otherwise its branch flips at its own limit positions, and
+    `Cognates.branches` says which applies where (the two cognates' own branches are
+    always opposite). Derivation page :ref:`deriv-cognates`.
 
     Examples
     --------

@@ -319,3 +319,12 @@ def test_cognates_dimensions_match_construction_mpmath(fb):
             offset = (M - P1) / ((P2 - P1) / abs(P2 - P1))       # (p' + i q') in its own frame
             assert abs(complex(*cog.coupler) - complex(offset)) < 1e-14 * _size(fb)
         assert abs(trio.K - complex(K)) < 1e-14 * _size(fb)
+
+
+@pytest.mark.parametrize("fb", CASES, ids=repr)
+def test_branches_cognates_always_opposite(fb):
+    """S2 = -(|mu| / |lam|)**2 S1 (derivation page): the cognates' own branches differ."""
+    br = cognates(fb).branches(np.linspace(0, 2 * np.pi, 361))
+    ok = br[0] != 0
+    assert np.array_equal(br[1][ok], -br[2][ok])
+    assert np.all(br[0][ok] == fb.branch)
