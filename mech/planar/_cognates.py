@@ -36,7 +36,8 @@ class TenBarPose:
     """The joints of the Roberts-Chebyshev ten-bar (Fig. 2-32) at original crank angles.
 
     Every attribute is a complex array shaped like the input angles, in the original frame;
-    ``A``, ``D`` and ``K`` are the fixed pivots and ``M`` the common coupler point.
+    ``A``, ``D`` and ``K`` are the fixed pivots. ``M`` has a leading axis of 3: the coupler
+    point as computed through ABCD, AEGK and DFHK (equal up to rounding).
     """
 
     A: np.ndarray

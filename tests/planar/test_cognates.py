@@ -328,3 +328,13 @@ def test_branches_cognates_always_opposite(fb):
     ok = br[0] != 0
     assert np.array_equal(br[1][ok], -br[2][ok])
     assert np.all(br[0][ok] == fb.branch)
+
+
+@pytest.mark.parametrize("dims", [(1, 2, 1, 2), (2, 1, 2, 1), (1, 3, 2, 2), (1, 2, 3, 2)])
+@pytest.mark.parametrize("branch", [1, -1])
+def test_path_change_point_linkages(dims, branch):
+    """Change-point originals (s + l = p + q): the three curves still coincide everywhere."""
+    fb = FourBar(*dims, coupler=(0.7, 0.4), branch=branch)
+    M = cognates(fb).path(np.linspace(0, 2 * np.pi, 721))
+    assert np.all(np.isfinite(M))
+    assert np.abs(M[1:] - M[0]).max() < 1e-13 * _size(fb)
