@@ -587,6 +587,40 @@ class Linkage:
         st.put_slide(pinned, sliding, sli)
         return np.abs(det) > 1e-12
 
+    # ------------------------------------------------------------------ centres
+    def _direct_pairs(self):
+        """(kind, link_i, link_j, where) for every pair of the linkage, in building order.
+
+        ``where`` is a point name for a revolute pair, or ``(group_kind, index)`` naming the
+        sliding direction of a sliding pair (resolved against a solution).
+        """
+        owner = self._points
+        out = []
+        for st in self._steps:
+            k, L = st.kind, st.links
+            if k == "crank":
+                out.append(("R", L[0], owner[st.get("pivot")], st.get("pivot")))
+            elif k == "slider":
+                out.append(("P", L[0], L[1], (L[0], L[1])))
+            elif k == "rrr":
+                (p1, p2), j = st.get("pins"), st.get("joint")
+                out += [("R", L[0], owner[p1], p1), ("R", L[1], owner[p2], p2), ("R", L[0], L[1], j)]
+            elif k == "rrp":
+                p1, g, j = st.get("pin"), st.get("guide"), st.get("joint")
+                out += [("R", L[0], owner[p1], p1), ("R", L[0], L[1], j), ("P", L[1], g.link, (L[1], g.link))]
+            elif k == "rpr":
+                p1, p2 = st.get("pins")
+                out += [("R", L[0], owner[p1], p1), ("R", L[1], owner[p2], p2), ("P", L[1], L[0], (L[1], L[0]))]
+            elif k == "prp":
+                g1, g2 = st.get("guides")
+                out += [("P", L[0], g1.link, (L[0], g1.link)), ("P", L[1], g2.link, (L[1], g2.link)),
+                        ("R", L[0], L[1], st.get("joint"))]
+            elif k == "rpp":
+                p1, g = st.get("pin"), st.get("guide")
+                out += [("R", L[0], owner[p1], p1), ("P", L[1], g.link, (L[1], g.link)),
+                        ("P", L[0], L[1], (L[0], L[1]))]
+        return out
+
     # ------------------------------------------------------------------ ranges
     def assembly_range(self, driver=None, *, start=-math.pi, end=math.pi, samples=3601, others=None):
         """Intervals of one driver's input where the linkage assembles.
@@ -721,6 +755,40 @@ class LinkageSolution:
     def angles(self):
         """Angle of every moving link's frame, by atan2, in (-pi, pi]."""
         return MappingProxyType({k: np.angle(d) for k, d in self._dirs.items()})
+
+    def instant_centres(self):
+        """All n(n-1)/2 instant centres of the linkage at every pose, by Kennedy's theorem.
+
+        The direct centres come from the pairs (a revolute pair at its joint, a sliding
+        pair at infinity across its guide); the rest follow from the three-centre theorem
+        (`mech.planar.instant_centres`, derivation :ref:`deriv-instant-centres`).
+
+        Returns
+        -------
+        InstantCentres
+            Indexed by pairs of link names, the ground being ``"ground"``.
+
+        Raises
+        ------
+        ValueError
+            If a pose was not assembled (its centres do not exist).
+        """
+        from mech.planar._instant_centres import instant_centres, prismatic, revolute
+
+        if not np.all(self.valid):
+            first = np.unravel_index(np.flatnonzero(~self.valid)[0], self.valid.shape)
+            raise ValueError(f"Expected every pose to be assembled, got an invalid pose at index "
+                             f"{tuple(int(i) for i in first)}; solve the valid inputs only")
+        direct = {}
+        for kind, i, j, where in self.linkage._direct_pairs():
+            key = (i, j)
+            if (j, i) in direct or key in direct:
+                continue          # a compound hinge: one pair per two links is enough
+            if kind == "R":
+                direct[key] = revolute(self.points[where])
+            else:
+                direct[key] = prismatic(self.slides[where].direction)
+        return instant_centres(self.linkage.links, direct)
 
     def direction(self, link):
         """Unit complex direction of ``link``'s frame x axis (no trigonometry)."""

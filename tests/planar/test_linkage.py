@@ -276,3 +276,27 @@ def test_linkage_is_immutable_and_order_is_respected():
     assert sol.velocities == {} and sol.omegas == {}
     with pytest.raises(AttributeError):
         sol.valid = None
+
+
+# ---------------------------------------------------------------- instant centres
+def test_linkage_instant_centres_agree_with_analytic_rates():
+    """Fifteen centres of a six-bar with a slider; omegas and a velocity from them."""
+    from mech.planar._instant_centres import velocities
+
+    lk = (Linkage({"A": 0, "D": 55}).crank("crank", pivot="A", tip="B", length=25)
+          .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(60, 45))
+          .point("E", link="rocker", at=20 + 15j)
+          .rrp(("rod", "slider"), pin="E", guide=Guide("ground", 40j, 0.2), joint="S", length=70))
+    theta = RNG.uniform(-math.pi, math.pi, 40)
+    theta = theta[lk.solve(theta).valid]
+    sol = lk.solve(theta, order=1, omega=2.0)
+    ic = sol.instant_centres()
+    assert len(ic) == 15
+    assert ic["slider", "ground"].at_infinity.all()
+    lv = velocities(ic, "ground", "crank", 2.0)
+    for link, w in sol.omegas.items():
+        np.testing.assert_allclose(lv.omega[link], w, rtol=0, atol=1e-12 * 2.0)
+    np.testing.assert_allclose(lv.point_velocity("rod", sol.points["S"]), sol.velocities["S"],
+                               rtol=0, atol=1e-12 * 2.0 * 100)
+    with pytest.raises(ValueError, match="invalid pose at index"):
+        lk.solve(np.linspace(0, 6, 50)).instant_centres()
