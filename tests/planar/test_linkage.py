@@ -299,4 +299,6 @@ def test_linkage_instant_centres_agree_with_analytic_rates():
     np.testing.assert_allclose(lv.point_velocity("rod", sol.points["S"]), sol.velocities["S"],
                                rtol=0, atol=1e-12 * 2.0 * 100)
     with pytest.raises(ValueError, match="invalid pose at index"):
-        lk.solve(np.linspace(0, 6, 50)).instant_centres()
+        (Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+         .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(20, 10))
+         .solve(np.array([0.0, 2.0])).instant_centres())
