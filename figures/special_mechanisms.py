@@ -45,6 +45,15 @@ def _slider(ax, z, angle, size, colour="white"):
     ax.add_patch(Polygon(np.c_[corners.real, corners.imag], closed=True, fc=colour, ec="black", lw=1.2, zorder=3))
 
 
+def _shade(ax, deg, start, length, colour="tab:blue"):
+    """Shade the input-angle interval [start, start + length) (radians), modulo a turn."""
+    start, length = np.degrees(start) % 360.0, np.degrees(length)
+    for lo in (start - 360.0, start):
+        left, right = max(lo, deg[0]), min(lo + length, deg[-1])
+        if right > left:
+            ax.axvspan(left, right, color=colour, alpha=0.08, lw=0)
+
+
 def draw_panel(ax, panel, *, size=None):
     """Draw one kinematic diagram described by a panel dict.
 
@@ -78,7 +87,7 @@ def draw_panel(ax, panel, *, size=None):
     for z, text in panel.get("notes", ()):
         ax.annotate(text, (z.real, z.imag), xytext=(3, 4), textcoords="offset points", fontsize=7)
     ax.set_title(panel["title"], fontsize=8)
-    ax.set_aspect("equal")
+    ax.set_aspect("equal", adjustable="datalim")
     ax.margins(0.12)
     ax.set_xticks([])
     ax.set_yticks([])
@@ -206,9 +215,7 @@ def motion_grid(theta, columns, *, shade=None):
             if any(label for _, label in curves):
                 ax.legend(fontsize=7, loc="best")
             if shade is not None and shade[j] is not None:
-                start, length = np.degrees(shade[j][0]) % 360.0, np.degrees(shade[j][1])
-                for lo in (start - 360.0, start):
-                    ax.axvspan(max(lo, deg[0]), min(lo + length, deg[-1]), color="tab:blue", alpha=0.08, lw=0)
+                _shade(ax, deg, *shade[j])
             ax.axhline(0.0, color="grey", lw=0.5)
             ax.set_ylabel(col["ylabels"][i], fontsize=8)
             ax.grid(alpha=0.3)
@@ -237,6 +244,7 @@ def trammel_centrodes(L, path_pose, pose, ax=None):
     Mp = np.asarray(path_pose.M)
     ax.plot(Mp.real, Mp.imag, color="tab:blue", lw=0.8, ls=":", label="path of M (circle)")
     draw_panel(ax, trammel_panel(pose, L, ""))
+    ax.set_aspect("equal", adjustable="box")
     ax.plot([I.real, complex(pose.B).real], [I.imag, complex(pose.B).imag], color="grey", lw=0.7)
     ax.plot([I.real, complex(pose.C).real], [I.imag, complex(pose.C).imag], color="grey", lw=0.7)
     ax.plot(I.real, I.imag, "o", color="tab:red", ms=6)
@@ -289,13 +297,12 @@ def guide_bar_vs_crank_rocker(theta, curves, axes=None, *, shade=None):
         for curve in curves:
             ax.plot(deg, curve[key], curve.get("style", "-"), color="black", lw=1.2, label=curve["label"])
         for start, length, colour in shade or ():
-            start, length = np.degrees(start) % 360.0, np.degrees(length)
-            for lo in (start - 360.0, start):
-                ax.axvspan(max(lo, deg[0]), min(lo + length, deg[-1]), color=colour, alpha=0.08, lw=0)
+            _shade(ax, deg, start, length, colour)
         ax.axhline(0.0, color="grey", lw=0.5)
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=8)
     axes[-1].set_xlabel(r"crank angle $\theta$ (degrees)")
     axes[-1].set_xticks(np.arange(deg[0], deg[-1] + 1, 60.0))
+    axes[-1].set_xlim(deg[0], deg[-1])
     return axes
