@@ -5,6 +5,22 @@ Conventions (``CONVENTIONS.md``): angles in radians, points as complex numbers
 """
 
 from mech._errors import AssemblyError
+from mech.planar._atlas import CouplerDashes, coupler_dashes
+from mech.planar._centrodes import CentrodeSegment, CouplerCentrodes, coupler_centrodes
+from mech.planar._cognates import Cognate, CognatePose, Cognates, TenBarPose, cognates
+from mech.planar._instant_centres import (
+    Centre,
+    InstantCentres,
+    LinkVelocities,
+    centre_count,
+    centre_velocities,
+    higher_pair,
+    instant_centres,
+    omega_ratio,
+    prismatic,
+    revolute,
+)
+from mech.planar._triad import TriadPose, TriadSixBar
 from mech.planar._fourbar import FourBar, FourBarPose
 from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_intervals
 from mech.planar._guide_bar import GuideBar, GuideBarPose
@@ -17,26 +33,48 @@ from mech.planar._transmission import min_transmission_angle, transmission_angle
 __all__ = [
     "AssemblyError",
     "AssemblyInterval",
+    "Centre",
+    "CentrodeSegment",
+    "Cognate",
+    "CognatePose",
+    "Cognates",
+    "CouplerCentrodes",
+    "CouplerDashes",
     "FourBar",
     "FourBarPose",
     "GrashofResult",
     "Guide",
     "GuideBar",
     "GuideBarPose",
+    "InstantCentres",
     "KindInterval",
     "LimitPositions",
     "Linkage",
     "LinkageSolution",
+    "LinkVelocities",
+    "Slide",
     "SliderCrank",
     "SliderCrankLimits",
     "SliderCrankPose",
     "SliderCrankSeries",
-    "Slide",
+    "TenBarPose",
+    "TriadPose",
+    "TriadSixBar",
+    "centre_count",
+    "centre_velocities",
+    "cognates",
+    "coupler_centrodes",
+    "coupler_dashes",
     "extreme_angle",
     "grashof",
+    "higher_pair",
+    "instant_centres",
     "kind_intervals",
     "limit_positions",
     "min_transmission_angle",
+    "omega_ratio",
+    "prismatic",
+    "revolute",
     "time_ratio",
     "transmission_angle",
 ]

@@ -25,7 +25,7 @@ __all__ = [
     "omega_ratio",
     "prismatic",
     "revolute",
-    "velocities",
+    "centre_velocities",
 ]
 
 # A centre farther than 1/_INFINITE_RTOL times the linkage's size counts as at infinity.
@@ -422,7 +422,7 @@ def omega_ratio(centres, i, j, frame):
 
 @dataclass(frozen=True)
 class LinkVelocities:
-    """Angular velocities of every link and velocities of their points (`velocities`).
+    """Angular velocities of every link and velocities of their points (`centre_velocities`).
 
     Attributes
     ----------
@@ -448,7 +448,7 @@ class LinkVelocities:
         return (1j * self._rates[link] * (z * h[..., 2] - (h[..., 0] + 1j * h[..., 1])))[()]
 
 
-def velocities(centres, frame, driver, omega):
+def centre_velocities(centres, frame, driver, omega):
     """Angular velocities of all links from the input link's, by the centres (F34-F37).
 
     Parameters
@@ -478,9 +478,9 @@ def velocities(centres, frame, driver, omega):
 
     Examples
     --------
-    >>> from mech.planar._instant_centres import instant_centres, prismatic, velocities
+    >>> from mech.planar._instant_centres import instant_centres, prismatic, centre_velocities
     >>> ic = instant_centres(4, {(1, 4): 0j, (1, 2): 3 + 4j, (2, 3): 8 + 0j, (3, 4): prismatic(1)})
-    >>> motion = velocities(ic, frame=4, driver=1, omega=2.0)
+    >>> motion = centre_velocities(ic, frame=4, driver=1, omega=2.0)
     >>> round(float(motion.omega[2]), 12), round(complex(motion.point_velocity(3, 0j)).real, 12)
     (-1.2, -12.8)
     """

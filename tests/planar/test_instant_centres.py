@@ -18,7 +18,7 @@ from mech.planar._instant_centres import (
     omega_ratio,
     prismatic,
     revolute,
-    velocities,
+    centre_velocities,
 )
 
 
@@ -123,7 +123,7 @@ def test_example_2_4_catalog_numbers(theta, omega2, omega3):
     """Catalog: four-bar (10, 40, 30, 35), omega_1 = -3 rad/s (clockwise, as in the text)."""
     pose = FourBar(10, 40, 30, 35).solve(theta)
     centres = instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): 35})
-    motion = velocities(centres, frame=4, driver=1, omega=-3.0)
+    motion = centre_velocities(centres, frame=4, driver=1, omega=-3.0)
     assert motion.omega[2] == pytest.approx(omega2, rel=5e-6)
     assert motion.omega[3] == pytest.approx(omega3, rel=5e-6)
     # P24 is where the lines AB and DC meet; P13 where AD and BC meet
@@ -139,7 +139,7 @@ def test_example_2_5_catalog_numbers(theta, omega2, speed):
     pose = SliderCrank(30, 80).solve(theta)
     centres = instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): prismatic(1.0)})
     assert bool(centres[3, 4].at_infinity)
-    motion = velocities(centres, frame=4, driver=1, omega=2.0)
+    motion = centre_velocities(centres, frame=4, driver=1, omega=2.0)
     v3 = motion.point_velocity(3, pose.C)
     assert motion.omega[2] == pytest.approx(omega2, rel=5e-6)
     assert abs(v3) == pytest.approx(speed, rel=5e-6)
@@ -162,7 +162,7 @@ def test_velocities_offset_slider_crank_random_matches_analytic():
         guide = np.sign(guide.real or 1.0) * 1.0 + 0j        # the guide is the x direction
         centres = instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C,
                                       (3, 4): prismatic(guide * rng.uniform(0.5, 2))})
-        motion = velocities(centres, frame=4, driver=1, omega=omega)
+        motion = centre_velocities(centres, frame=4, driver=1, omega=omega)
         assert motion.omega[2] == pytest.approx(pose.omega_coupler, rel=1e-11, abs=1e-12 * abs(omega))
         assert motion.point_velocity(3, 0j) == pytest.approx(pose.v, rel=1e-11, abs=1e-12 * abs(omega))
         assert omega_ratio(centres, 3, 1, 4) == 0.0
@@ -207,7 +207,7 @@ def test_instant_centres_six_bar_fifteen_centres(theta):
     assert len(centres) == 15 == centre_count(6)
     assert sum(step.round > 0 for step in centres.construction) == 8
     _check_defining_property(centres, fields, 40.0, 1e-12)
-    motion = velocities(centres, frame=6, driver=1, omega=1.3)
+    motion = centre_velocities(centres, frame=6, driver=1, omega=1.3)
     for link in range(1, 6):
         assert motion.omega[link] == pytest.approx(omegas[link], rel=1e-11, abs=1e-13)
 
@@ -226,7 +226,7 @@ def test_instant_centres_broadcast_over_poses():
     pose = FourBar(10, 40, 30, 35).solve(theta, order=1, omega=2.0)
     centres = instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): 35.0})
     assert centres[2, 4].point.shape == (37,)
-    got = velocities(centres, 4, 1, 2.0).omega[3]
+    got = centre_velocities(centres, 4, 1, 2.0).omega[3]
     np.testing.assert_allclose(got, pose.omega_output, rtol=1e-11, atol=1e-13)
 
 
@@ -254,7 +254,7 @@ def test_instant_centres_cam_follower_matches_position_derivative():
         centres = instant_centres(3, {(1, 3): 0j, (2, 3): prismatic(1j),
                                       (1, 2): higher_pair(T, T - K)})
         assert centres[1, 2].source == "kennedy+line"
-        v2 = velocities(centres, frame=3, driver=1, omega=omega).point_velocity(2, T)
+        v2 = centre_velocities(centres, frame=3, driver=1, omega=omega).point_velocity(2, T)
         # exact derivative of y(theta) = e sin(theta) + sqrt(R^2 - (s - e cos theta)^2)
         dy = e * np.cos(theta) - (s - e * np.cos(theta)) * e * np.sin(theta) / np.sqrt(R**2 - (s - K.real) ** 2)
         assert v2.real == pytest.approx(0.0, abs=1e-12)
@@ -280,7 +280,7 @@ def test_instant_centres_input_errors():
         instant_centres(["a", "a"], {})
     centres = instant_centres(3, {(1, 2): 0j, (2, 3): 1.0, (1, 3): prismatic(1)})
     with pytest.raises(ValueError, match="finite centre"):
-        velocities(centres, frame=1, driver=3, omega=1.0)
+        centre_velocities(centres, frame=1, driver=3, omega=1.0)
     with pytest.raises(ValueError, match="the frame does not turn"):
         omega_ratio(centres, 2, 1, 1)
     with pytest.raises(KeyError):

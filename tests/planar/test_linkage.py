@@ -281,7 +281,7 @@ def test_linkage_is_immutable_and_order_is_respected():
 # ---------------------------------------------------------------- instant centres
 def test_linkage_instant_centres_agree_with_analytic_rates():
     """Fifteen centres of a six-bar with a slider; omegas and a velocity from them."""
-    from mech.planar._instant_centres import velocities
+    from mech.planar._instant_centres import centre_velocities
 
     lk = (Linkage({"A": 0, "D": 55}).crank("crank", pivot="A", tip="B", length=25)
           .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(60, 45))
@@ -293,7 +293,7 @@ def test_linkage_instant_centres_agree_with_analytic_rates():
     ic = sol.instant_centres()
     assert len(ic) == 15
     assert ic["slider", "ground"].at_infinity.all()
-    lv = velocities(ic, "ground", "crank", 2.0)
+    lv = centre_velocities(ic, "ground", "crank", 2.0)
     for link, w in sol.omegas.items():
         np.testing.assert_allclose(lv.omega[link], w, rtol=0, atol=1e-12 * 2.0)
     np.testing.assert_allclose(lv.point_velocity("rod", sol.points["S"]), sol.velocities["S"],

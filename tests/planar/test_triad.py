@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from mech import AssemblyError
-from mech.planar._instant_centres import instant_centres, velocities
+from mech.planar._instant_centres import instant_centres, centre_velocities
 from mech.planar._triad import TriadSixBar
 
 CLAMP = dict(a=10, b=60, cd=36, ce=36, angle=-np.pi / 2, g=40, f=40, G=118 + 41j, F=91 - 48j)
@@ -70,7 +70,7 @@ def test_example_2_6_instant_centres_match_triad_velocities():
                                   (3, 5): pose.E, (4, 6): clamp.G + 0 * pose.B, (5, 6): clamp.F + 0 * pose.B})
     rounds = {step.pair: step.round for step in centres.construction}
     assert rounds[3, 6] < rounds[2, 6]           # P36 first, then P26 (the textbook's order)
-    motion = velocities(centres, frame=6, driver=1, omega=-2.0)
+    motion = centre_velocities(centres, frame=6, driver=1, omega=-2.0)
     for link in (2, 3, 4, 5):
         np.testing.assert_allclose(motion.omega[link], pose.omega[:, link - 1], rtol=1e-10, atol=1e-12)
     np.testing.assert_allclose(motion.point_velocity(3, pose.E), pose.vE, rtol=1e-10, atol=1e-10)
