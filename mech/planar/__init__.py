@@ -21,6 +21,16 @@ from mech.planar._instant_centres import (
     revolute,
 )
 from mech.planar._triad import TriadPose, TriadSixBar
+from mech.planar._double_slider import (
+    EllipticTrammel,
+    OldhamCoupling,
+    OldhamPose,
+    ScotchYoke,
+    ScotchYokePose,
+    TangentMechanism,
+    TangentPose,
+    TrammelPose,
+)
 from mech.planar._fourbar import FourBar, FourBarPose
 from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_intervals
 from mech.planar._guide_bar import GuideBar, GuideBarPose
@@ -28,6 +38,7 @@ from mech.planar._limit_positions import LimitPositions, limit_positions
 from mech.planar._linkage import AssemblyInterval, Guide, Linkage, LinkageSolution, Slide
 from mech.planar._quick_return import extreme_angle, time_ratio
 from mech.planar._slider_crank import SliderCrank, SliderCrankLimits, SliderCrankPose, SliderCrankSeries
+from mech.planar._special import RotatingGuideBar, RotatingGuideBarPose, SwingingBlock
 from mech.planar._transmission import min_transmission_angle, transmission_angle
 
 __all__ = [
@@ -40,6 +51,7 @@ __all__ = [
     "Cognates",
     "CouplerCentrodes",
     "CouplerDashes",
+    "EllipticTrammel",
     "FourBar",
     "FourBarPose",
     "GrashofResult",
@@ -52,12 +64,22 @@ __all__ = [
     "Linkage",
     "LinkageSolution",
     "LinkVelocities",
+    "OldhamCoupling",
+    "OldhamPose",
+    "RotatingGuideBar",
+    "RotatingGuideBarPose",
+    "ScotchYoke",
+    "ScotchYokePose",
     "Slide",
     "SliderCrank",
     "SliderCrankLimits",
     "SliderCrankPose",
     "SliderCrankSeries",
+    "SwingingBlock",
+    "TangentMechanism",
+    "TangentPose",
     "TenBarPose",
+    "TrammelPose",
     "TriadPose",
     "TriadSixBar",
     "centre_count",
