@@ -397,7 +397,18 @@ class Linkage:
             if np.any(mask):
                 idx = np.unravel_index(np.flatnonzero(mask)[0], shape)
                 at = ", ".join(f"{d} = {float(np.broadcast_to(v, shape)[idx])!r}" for d, v in q.items())
-                raise AssemblyError(f"The group {label!r} cannot be assembled at input {at}")
+                raise AssemblyError(f"The group {label!r} cannot be assembled at input {at}{self._range_note()}")
+
+    def _range_note(self):
+        """Where a one-crank linkage does assemble, for the error message."""
+        cranks = [s for s in self._steps if s.kind == "crank"]
+        if len(self._drivers) != 1 or len(cranks) != 1:
+            return ""
+        found = self.assembly_range()
+        if not found:
+            return "; it assembles at no crank angle"
+        spans = ", ".join(f"[{iv.start:.6g}, {iv.end:.6g}]" for iv in found)
+        return f"; it assembles for {self._drivers[0]} in {spans} (radians)"
 
     # each _do_* computes one step into `state` and returns its validity (or None)
     def _do_ground(self, step, st, q, w, al):

@@ -238,7 +238,7 @@ def test_linkage_strict_error_names_group_and_input():
     assert sol.valid.tolist() == [True, False]
     assert np.isnan(sol.points["C"][1])
     assert sol.failures["RRR coupler-rocker"].tolist() == [False, True]
-    with pytest.raises(AssemblyError, match=r"RRR coupler-rocker.*crank = 2\.0"):
+    with pytest.raises(AssemblyError, match=r"RRR coupler-rocker.*crank = 2\.0; it assembles for crank in \[-0.918336, 0.918336\]"):
         lk.solve(np.array([0.0, 2.0]), strict=True)
 
 
