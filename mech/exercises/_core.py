@@ -125,6 +125,9 @@ class Solution:
         The answers, part by part.
     units : dict
         The unit of each given value (name to unit), for display.
+    assumptions : tuple of str
+        For an exercise whose figure is lost (tag "A"): the assumed layout, rendered
+        first, with a warning that another reading of the figure may give other results.
     """
 
     number: str
@@ -133,6 +136,7 @@ class Solution:
     conventions: tuple = ()
     parts: tuple = ()
     units: dict = field(default_factory=dict)
+    assumptions: tuple = ()
 
     def results(self):
         """Return every :class:`Result` of every part, in order."""
@@ -161,6 +165,12 @@ class Solution:
             f"{k} = {_fmt_number(v)} {self.units.get(k, '')}".rstrip() for k, v in self.params.items()
         )
         lines = [title, "", f"Given: {given}.", ""]
+        if self.assumptions:
+            lines += [
+                "Assumed layout (the figure is not in the text; a different reading of the "
+                "figure could give a different result):",
+                "",
+            ] + [f"- {a}" for a in self.assumptions] + [""]
         if self.conventions:
             lines += ["Conventions:", ""] + [f"- {c}" for c in self.conventions] + [""]
         for part in self.parts:
