@@ -357,6 +357,21 @@ class Linkage:
         Returns
         -------
         LinkageSolution
+
+        Raises
+        ------
+        ValueError
+            For non-finite inputs or inputs that do not match the drivers.
+        mech.AssemblyError
+            With ``strict=True``, naming the first failing group, the input value and,
+            for a one-crank linkage, the crank range where it does assemble.
+
+        Examples
+        --------
+        >>> lk = (Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+        ...       .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(20, 10)))
+        >>> lk.solve([0.0, 2.0]).valid.tolist()
+        [True, False]
         """
         order = nonnegative_int("order", order, 2)
         q, w, al = (self._per_driver(x, name) for x, name in
