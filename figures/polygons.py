@@ -41,7 +41,7 @@ def term_label(name):
 
 def vertex_label(name, prime=False):
     """Mathtext for a vertex: ``"n_cb"`` -> ``$n'_{cb}$`` (with ``prime``), ``"b3"`` -> ``$b_3$``."""
-    mark = "'" if prime else ""
+    mark = r"^{\prime}" if prime else ""
     if "_" in name:
         head, sub = name.split("_", 1)
         return rf"${head}{mark}_{{{sub}}}$"
@@ -130,7 +130,7 @@ def polygon_diagram(polygon, ax=None, *, mu=None, unit="", title=None, term_labe
             ax.annotate("", xy=(z1.real, z1.imag), xytext=(z0.real, z0.imag),
                         arrowprops=dict(arrowstyle="-|>", color=_COLOURS[kind], lw=1.6,
                                         shrinkA=0, shrinkB=0, mutation_scale=12), zorder=3)
-            if term_labels:
+            if term_labels and abs(z1 - z0) > 0.06 * span:
                 mid, d = 0.5 * (z0 + z1), (z1 - z0) / abs(z1 - z0)
                 nrm = 1j * d * 0.035 * span
                 ax.annotate(term_label(t.name), (mid.real + nrm.real, mid.imag + nrm.imag), fontsize=9,
@@ -139,20 +139,26 @@ def polygon_diagram(polygon, ax=None, *, mu=None, unit="", title=None, term_labe
     for name, z in V.items():
         key = next((k for k in groups if abs(k - z) < 1e-9 * span), z)
         groups.setdefault(key, []).append(name)
+    centre = np.mean(list(groups))
     for z, names in groups.items():
+        # the tip of a zero normal or Coriolis term sits on another vertex: name that one only
+        shown = [n for n in names if not n.startswith(("n_", "k_"))] or names
         ax.plot(z.real, z.imag, "o", ms=3.5, color="k", zorder=4)
-        text = ", ".join(vertex_label(n, prime) for n in names)
-        ax.annotate(text, (z.real, z.imag), xytext=(5, 5), textcoords="offset points", fontsize=11)
+        away = z - centre
+        away = away / abs(away) if abs(away) > 1e-9 * span else 1 + 1j
+        ax.annotate(", ".join(vertex_label(n, prime) for n in shown), (z.real, z.imag),
+                    xytext=(9 * away.real, 9 * away.imag), textcoords="offset points", fontsize=11,
+                    ha="left" if away.real >= 0 else "right", va="bottom" if away.imag >= 0 else "top")
     for kind in sorted(kinds):
         ax.plot([], [], color=_COLOURS[kind], lw=1.6, label=_KIND_NAMES[kind])
     ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.01), ncol=3, frameon=False)
-    ax.set_aspect("equal")
+    ax.set_aspect("equal", adjustable="datalim")
     ax.margins(0.15)
     ax.set_xticks([])
     ax.set_yticks([])
     name = "velocity polygon" if not prime else "acceleration polygon"
     note = f", $\\mu_{{{'a' if prime else 'v'}}}$ = {mu:g} {unit}" if mu is not None else ""
-    ax.set_title(title or (name + note), fontsize=10)
+    ax.set_title(title or (name + note), fontsize=10, pad=16)
     return ax
 
 
