@@ -399,3 +399,21 @@ def test_polygon_lengths_bad_scale():
     vp = velocity_polygon(_motions_2_10(example_2_10()))
     with pytest.raises(ValueError, match="Expected `mu` > 0"):
         vp.lengths(-1.0)
+
+
+@pytest.mark.parametrize("shape", [(), (7,), (3, 4)])
+def test_coincident_motion_closure_over_a_turn(shape):
+    """The guide-bar of example 2-9 closes its Coriolis equation at every crank angle it reaches."""
+    # the slot is l/sqrt(2) from C, so it reaches B for |B - C|^2 >= 1/2: cos(theta) <= 0.884
+    theta = np.linspace(0.6, 2 * np.pi - 0.6, int(np.prod(shape))).reshape(shape)
+    lk = (Linkage({"A": 0, "C": np.sqrt(2)})
+          .crank("1", pivot="A", tip="B", length=1.0)
+          .rpr(("3", "2"), pins=("C", "B"), offset=1 / np.sqrt(2), branch=1))
+    sol = lk.solve(theta, order=2, omega=-1.5, alpha=0.7)
+    assert np.all(sol.valid)
+    m = coincident_motion(sol, "B", carrier="2", link="3", pivot="C")
+    assert np.shape(m.acceleration.residual) == shape
+    for eq in (m.velocity, m.acceleration):
+        scale = max(np.max(np.abs(t.vector)) for t in eq.terms)
+        assert _rel_close(eq.residual, scale)
+    assert np.max(np.abs(m.acceleration.rhs[1].vector)) > 0.1       # a Coriolis term is present
