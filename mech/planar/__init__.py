@@ -36,6 +36,19 @@ from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_inte
 from mech.planar._guide_bar import GuideBar, GuideBarPose
 from mech.planar._limit_positions import LimitPositions, limit_positions
 from mech.planar._linkage import AssemblyInterval, Guide, Linkage, LinkageSolution, Slide
+from mech.planar._polygons import (
+    Equation,
+    Image,
+    Polygon,
+    RelativeMotion,
+    Term,
+    acceleration_image,
+    acceleration_polygon,
+    coincident_motion,
+    relative_motion,
+    velocity_image,
+    velocity_polygon,
+)
 from mech.planar._quick_return import extreme_angle, time_ratio
 from mech.planar._slider_crank import SliderCrank, SliderCrankLimits, SliderCrankPose, SliderCrankSeries
 from mech.planar._special import RotatingGuideBar, RotatingGuideBarPose, SwingingBlock
@@ -52,12 +65,14 @@ __all__ = [
     "CouplerCentrodes",
     "CouplerDashes",
     "EllipticTrammel",
+    "Equation",
     "FourBar",
     "FourBarPose",
     "GrashofResult",
     "Guide",
     "GuideBar",
     "GuideBarPose",
+    "Image",
     "InstantCentres",
     "KindInterval",
     "LimitPositions",
@@ -66,6 +81,8 @@ __all__ = [
     "LinkVelocities",
     "OldhamCoupling",
     "OldhamPose",
+    "Polygon",
+    "RelativeMotion",
     "RotatingGuideBar",
     "RotatingGuideBarPose",
     "ScotchYoke",
@@ -79,12 +96,16 @@ __all__ = [
     "TangentMechanism",
     "TangentPose",
     "TenBarPose",
+    "Term",
     "TrammelPose",
     "TriadPose",
     "TriadSixBar",
+    "acceleration_image",
+    "acceleration_polygon",
     "centre_count",
     "centre_velocities",
     "cognates",
+    "coincident_motion",
     "coupler_centrodes",
     "coupler_dashes",
     "extreme_angle",
@@ -96,7 +117,10 @@ __all__ = [
     "min_transmission_angle",
     "omega_ratio",
     "prismatic",
+    "relative_motion",
     "revolute",
     "time_ratio",
     "transmission_angle",
+    "velocity_image",
+    "velocity_polygon",
 ]
