@@ -34,6 +34,20 @@ from mech.planar._double_slider import (
 from mech.planar._fourbar import FourBar, FourBarPose
 from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_intervals
 from mech.planar._guide_bar import GuideBar, GuideBarPose
+from mech.planar._library import (
+    JANSEN_HOLY_NUMBERS,
+    Stroke,
+    jansen_linkage,
+    quick_return_crank_rocker,
+    quick_return_guide_bar,
+    quick_return_slider_crank,
+    ram_stroke,
+    shaper_stephenson,
+    shaper_watt,
+    step_ratio,
+    stephenson_six_bar,
+    watt_six_bar,
+)
 from mech.planar._limit_positions import LimitPositions, limit_positions
 from mech.planar._linkage import AssemblyInterval, Guide, Linkage, LinkageSolution, Slide
 from mech.planar._polygons import (
@@ -74,6 +88,7 @@ __all__ = [
     "GuideBarPose",
     "Image",
     "InstantCentres",
+    "JANSEN_HOLY_NUMBERS",
     "KindInterval",
     "LimitPositions",
     "Linkage",
@@ -92,6 +107,7 @@ __all__ = [
     "SliderCrankLimits",
     "SliderCrankPose",
     "SliderCrankSeries",
+    "Stroke",
     "SwingingBlock",
     "TangentMechanism",
     "TangentPose",
@@ -112,15 +128,25 @@ __all__ = [
     "grashof",
     "higher_pair",
     "instant_centres",
+    "jansen_linkage",
     "kind_intervals",
     "limit_positions",
     "min_transmission_angle",
     "omega_ratio",
     "prismatic",
+    "quick_return_crank_rocker",
+    "quick_return_guide_bar",
+    "quick_return_slider_crank",
+    "ram_stroke",
     "relative_motion",
     "revolute",
+    "shaper_stephenson",
+    "shaper_watt",
+    "step_ratio",
+    "stephenson_six_bar",
     "time_ratio",
     "transmission_angle",
     "velocity_image",
     "velocity_polygon",
+    "watt_six_bar",
 ]
