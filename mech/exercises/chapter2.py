@@ -617,7 +617,9 @@ def _solve_2_4(p):
         "The slider does not stop exactly when the rocker does, so the six-bar's K differs "
         "from the four-bar's.",))
     part3 = Part("(3) Stroke", (
-        Result("stroke H of F", stroke["stroke"], "mm", how_sim),), ())
+        Result("stroke H of F", stroke["stroke"], "mm", how_sim),
+        Result("crank angle at F's left end", stroke["theta_low"], "rad", how_sim),
+        Result("crank angle at F's right end", stroke["theta_high"], "rad", how_sim),), ())
     part4 = Part("(4) Transmission angles", (
         Result("four-bar stage: γ_min", g1_min, "rad", "`FourBar(...).min_transmission_angle()`"),
         Result("four-bar stage: largest γ", g1_max, "rad",
@@ -761,7 +763,11 @@ def _solve_2_5(p):
             Result("K of the guide-bar stage alone", bar.time_ratio(), "", "`GuideBar(AB, AC).time_ratio()`"),
         ), ("Slider 5 stops exactly when the guide bar does (crank perpendicular to the bar), "
             "so K is the guide-bar's: θ equals the bar's swing, 2 asin(AB/AC).",)),
-        Part("(2) Stroke", (Result("stroke H of member 5", stroke["stroke"], "mm", how_sim),), (
+        Part("(2) Stroke", (
+            Result("stroke H of member 5", stroke["stroke"], "mm", how_sim),
+            Result("crank angle at E's left end", stroke["theta_low"], "rad", how_sim),
+            Result("crank angle at E's right end", stroke["theta_high"], "rad", how_sim),
+        ), (
             "By the symmetry of the two limit positions about AC, the stroke equals the chord "
             "of D's arc, 2 CD sin(θ/2).",)),
         Part("(3) Transmission angles", (
@@ -889,6 +895,8 @@ def _solve_2_7(p):
         "rest of the turn on the other. The longer BC, the closer K is to 1, so one BC fits K.",))
     part2 = Part("(2) Stroke of the tool", (
         Result("stroke H of P", tool["stroke"], "mm", how),
+        Result("crank angle at P's lowest point", tool["theta_low"], "rad", how),
+        Result("crank angle at P's highest point", tool["theta_high"], "rad", how),
     ), ("At the two dead centres D is on the tool's line, on either side of A: H = 2 AD.",))
     return Solution("2-7", EXERCISE_2_7.title, dict(p), (), (part1, part2), assumptions=assumptions)
 
