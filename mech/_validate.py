@@ -2,7 +2,7 @@
 
 import numpy as np
 
-__all__ = ["positive_length", "finite_array", "branch_sign", "nonnegative_int"]
+__all__ = ["positive_length", "real_number", "finite_array", "branch_sign", "nonnegative_int"]
 
 
 def _show(value):
@@ -18,6 +18,17 @@ def positive_length(name, value):
         raise ValueError(f"Expected `{name}` to be a real number, got {value!r}") from None
     if not np.isfinite(x) or x <= 0.0:
         raise ValueError(f"Expected `{name}` > 0, got {x!r}")
+    return x
+
+
+def real_number(name, value):
+    """Return ``value`` as a float after checking that it is a finite real number."""
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"Expected `{name}` to be a real number, got {value!r}") from None
+    if not np.isfinite(x):
+        raise ValueError(f"Expected finite `{name}`, got {x!r}")
     return x
 
 

@@ -4,7 +4,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import special_mechanisms as _gen
-from mech._validate import finite_array, positive_length
+from mech._validate import finite_array, positive_length, real_number
 from mech.planar._pose import Pose
 from mech.planar._special import _finish, _inputs
 
@@ -18,16 +18,6 @@ __all__ = [
     "OldhamCoupling",
     "OldhamPose",
 ]
-
-
-def _real(name, value):
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"Expected `{name}` to be a real number, got {value!r}") from None
-    if not np.isfinite(x):
-        raise ValueError(f"Expected finite `{name}`, got {x!r}")
-    return x
 
 
 class TrammelPose(Pose):
@@ -97,7 +87,7 @@ class EllipticTrammel:
             p, q = point
         except (TypeError, ValueError):
             raise ValueError(f"Expected `point` = (p, q), got {point!r}") from None
-        self._p, self._q = _real("p", p), _real("q", q)
+        self._p, self._q = real_number("p", p), real_number("q", q)
 
     @classmethod
     def from_crank(cls, a, *, point=(0.0, 0.0)):

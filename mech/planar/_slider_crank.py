@@ -7,7 +7,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
-from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
+from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
 from mech.planar._pose import Pose
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
@@ -61,16 +61,6 @@ class SliderCrankSeries(NamedTuple):
     cos_phi: np.ndarray
 
 
-def _real(name, value):
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"Expected `{name}` to be a real number, got {value!r}") from None
-    if not np.isfinite(x):
-        raise ValueError(f"Expected finite `{name}`, got {x!r}")
-    return x
-
-
 def _float(value):
     return float(value) if np.ndim(value) == 0 else value
 
@@ -120,7 +110,7 @@ class SliderCrank:
     def __init__(self, a, b, e=0.0, *, branch=1):
         self._a = positive_length("a", a)
         self._b = positive_length("b", b)
-        self._e = _real("e", e)
+        self._e = real_number("e", e)
         self._branch = branch_sign(branch)
         if self._b < abs(self._e) - self._a:
             raise ValueError(
