@@ -88,7 +88,7 @@ def cam_centres(geometry, p12, ax=None, size=(7.0, 4.6)):
     Parameters
     ----------
     geometry : mapping
-        From `mech.exercises.chapter2.cam_2_10`: points ``A, C, O, K`` and ``r``.
+        From `mech.exercises.chapter2_analysis.cam_2_10`: points ``A, C, O, K`` and ``r``.
     p12 : complex
         The relative instant centre of cam and follower.
     """

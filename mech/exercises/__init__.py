@@ -1,12 +1,12 @@
-"""Textbook exercises with generated solutions and variants (chapter 2: 2-2, 2-3, 2-6).
+"""Textbook exercises with generated solutions and variants (chapter 2: 2-2 to 2-7, 2-10).
 
 Each exercise is an :class:`Exercise` record: a statement with named givens (the
 textbook's numbers by default), a solver built on :mod:`mech.planar`, and a generator of
 other valid numbers. Solutions render themselves as Markdown.
 
 >>> import mech.exercises as ex
->>> sorted(ex.EXERCISES)
-['2-2', '2-3', '2-6']
+>>> list(ex.EXERCISES)
+['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10']
 >>> sol = ex.get("2-3").solve()
 >>> round(float(sol["time ratio K"].value), 4)
 1.2299
@@ -17,7 +17,7 @@ From the command line: ``python -m mech.exercises list``, ``... show 2-3`` and
 
 from types import MappingProxyType
 
-from mech.exercises import chapter2
+from mech.exercises import chapter2, chapter2_analysis
 from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
 
 __all__ = [
@@ -29,6 +29,7 @@ __all__ = [
     "Result",
     "Solution",
     "chapter2",
+    "chapter2_analysis",
     "get",
 ]
 
@@ -51,7 +52,7 @@ def get(number):
     >>> get("2-9")
     Traceback (most recent call last):
     ...
-    ValueError: Expected an exercise number among 2-2, 2-3, 2-6, got '2-9'
+    ValueError: Expected an exercise number among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, got '2-9'
     """
     key = str(number).strip()
     if key not in EXERCISES:
