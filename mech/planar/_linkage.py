@@ -530,7 +530,8 @@ class Linkage:
             A1, dds = _g.rrp_acceleration(ux, uy, *_re_im(e), r1, s, *_re_im(st.A[p1]), *_re_im(aQ),
                                           wK, aK, W1, ds)
             a3 = st.A[p1] + (1j * A1 - W1**2) * u1
-            slide = Slide(s, slide.direction, ds, dds, 2j * wK * ds * e)
+            _, _, kx, ky = _g.slide_acceleration(*_re_im(aQ), *_re_im(e), s, ds, dds, wK, aK)
+            slide = Slide(s, slide.direction, ds, dds, kx + 1j * ky)
         st.put_link(rod, p1, u1 / r1, W1, A1)
         st.put_link(block, joint, e, wK if st.order >= 1 else None, aK if st.order >= 2 else None)
         st.put_point(joint, P3, v3, a3)
@@ -573,9 +574,9 @@ class Linkage:
                                              w1, w2, a1, a2, ds1, ds2)
             ax, ay, k1x, k1y = _g.slide_acceleration(*_re_im(aQ1), *_re_im(e1), s1, ds1, dds1, w1, a1)
             a3 = ax + 1j * ay
-            k2 = 2j * w2 * ds2 * e2
+            _, _, k2x, k2y = _g.slide_acceleration(*_re_im(aQ2), *_re_im(e2), s2, ds2, dds2, w2, a2)
             sl1 = Slide(s1, sl1.direction, ds1, dds1, k1x + 1j * k1y)
-            sl2 = Slide(s2, sl2.direction, ds2, dds2, k2)
+            sl2 = Slide(s2, sl2.direction, ds2, dds2, k2x + 1j * k2y)
         st.put_link(b1, joint, e1, w1 if st.order >= 1 else None, a1 if st.order >= 2 else None)
         st.put_link(b2, joint, e2, w2 if st.order >= 1 else None, a2 if st.order >= 2 else None)
         st.put_point(joint, P3, v3, a3)
