@@ -56,3 +56,7 @@ def test_heavy_modules_after_detects_heavy_import():
     """The probe itself can fail: importing SymPy directly is reported."""
     pytest.importorskip("sympy")
     assert _heavy_modules_after(["import sympy"]) == ["sympy"]
+
+
+def test_import_mech_spatial_light():
+    assert _heavy_modules_after(["import mech.spatial"]) == []
