@@ -5,4 +5,6 @@ Conventions (``CONVENTIONS.md``): angles in radians; a matrix ``R_ij`` or ``M_ij
 coordinates in frame j to coordinates in frame i; arrays of parameters give stacks.
 """
 
-__all__ = []
+from mech.spatial._mobility import PAIR_FREEDOMS, mobility
+
+__all__ = ["PAIR_FREEDOMS", "mobility"]
