@@ -1,0 +1,322 @@
+"""The spatial RSSR four-bar of (2-69) to (2-71): positions, rates, assembly range."""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from mech._errors import AssemblyError
+from mech._generated import one_equation as _abc
+from mech._generated import rssr as _gen
+from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
+from mech.planar._pose import Pose
+
+__all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
+
+
+def _stack(*components):
+    return np.stack(np.broadcast_arrays(*components), axis=-1)
+
+
+class RSSRPose(Pose):
+    """Poses of an RSSR four-bar at an array of crank angles (returned by `RSSR.solve`).
+
+    Attributes
+    ----------
+    phi01, phi03, valid : ndarray
+        Crank angle, rocker angle in (-pi, pi] (NaN where the linkage cannot be
+        assembled) and the mask of assembled poses.
+    B, C, P : ndarray, shape (..., 3)
+        Crank pin, rocker pin and coupler point in the ground frame O-x0y0z0.
+    omega_output, vB, vC : ndarray
+        d phi03/dt and the pin velocities; present when solved with ``order >= 1``.
+    alpha_output, aB, aC : ndarray
+        d2 phi03/dt2 and the pin accelerations; present when solved with ``order >= 2``.
+    """
+
+    _ORDER_OF = {"omega_output": 1, "vB": 1, "vC": 1, "alpha_output": 2, "aB": 2, "aC": 2}
+
+
+@dataclass(frozen=True)
+class AssemblyRange:
+    """Crank angles where an RSSR assembles (returned by `RSSR.assembly_range`).
+
+    Attributes
+    ----------
+    intervals : ndarray, shape (k, 2)
+        Closed intervals ``[start, end]`` of crank angle, counter-clockwise from start to
+        end, with ``start`` in [-pi, pi) and ``end > start`` (``end`` may exceed pi). At
+        each end A**2 + B**2 = C**2: a limit position, where the two branches meet.
+        Empty when the crank turns fully or never assembles.
+    full_turn : bool
+        True when the linkage assembles at every crank angle.
+    """
+
+    intervals: np.ndarray
+    full_turn: bool
+
+    def contains(self, phi01):
+        """True where the crank angle `phi01` lies in the range."""
+        phi01 = finite_array("phi01", phi01)
+        if self.full_turn:
+            return np.ones(phi01.shape, dtype=bool)
+        inside = np.zeros(phi01.shape, dtype=bool)
+        for start, end in self.intervals:
+            inside |= np.mod(phi01 - start, 2 * np.pi) <= end - start
+        return inside
+
+
+class RSSR:
+    """The spatial RSSR four-bar of Fig. 2-121 (crank AB, coupler BC, rocker DC).
+
+    Parameters
+    ----------
+    l1, l2, l3 : float
+        Crank AB, coupler BC and rocker DC lengths.
+    s0, s3 : float
+        Offsets S_0 of the crank pivot A along z0 and S_3 of the rocker pivot D along z3.
+    h0 : float
+        h_0, the common perpendicular of the two axes, from O on the crank axis to O_K on
+        the rocker axis, along x0 (signed, as in the textbook).
+    lam : float
+        lambda_30, the twist of the rocker axis z3 from z0 about x0, radians.
+    branch : {1, -1}, optional
+        Assembly mode: +1 takes the + sign of the root in (2-71),
+        phi03 = 2 atan((A + sqrt(A**2 + B**2 - C**2)) / (B - C)) with A, B, C of the
+        textbook (C corrected). Geometrically, +1 when z3 . ((C - D) x (B - C)) > 0.
+    coupler : (float, float, float), optional
+        Coupler point ``(p, q, u)``: ``P = B + p e1 + q e2 + u e3`` with ``e1`` along B->C,
+        ``e3`` along ``e1 x z3`` and ``e2 = e3 x e1`` (the coupler's idle spin about BC
+        fixed by the rocker axis).
+
+    Raises
+    ------
+    ValueError
+        If a length is not positive and finite, an offset or `lam` is not finite, or
+        `branch` is not +1 or -1.
+
+    Notes
+    -----
+    Derivation, the corrected C of (2-71) and the branch geometry: :ref:`deriv-rssr`; the
+    shared atan2 solver: :ref:`deriv-one-equation`. Along a branch the rocker angle is
+    continuous in phi01 (modulo 2 pi) wherever the linkage assembles. The two branches meet
+    at the ends of `assembly_range`; a crank that rocks between them passes from one
+    branch to the other there, so a motion through a limit position is followed by
+    switching `branch`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spatial._rssr import RSSR
+    >>> rssr = RSSR(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, np.radians(60))
+    >>> pose = rssr.solve(np.radians([0, 90, 180]))
+    >>> np.round(np.linalg.norm(pose.C - pose.B, axis=-1), 12)
+    array([4., 4., 4.])
+    >>> rssr.assembly_range().full_turn
+    True
+    """
+
+    def __init__(self, l1, l2, l3, s0, s3, h0, lam, *, branch=1, coupler=(0.0, 0.0, 0.0)):
+        self._l1, self._l2, self._l3 = (positive_length(n, v) for n, v in (("l1", l1), ("l2", l2), ("l3", l3)))
+        self._s0, self._s3, self._h0, self._lam = (
+            real_number(n, v) for n, v in (("s0", s0), ("s3", s3), ("h0", h0), ("lam", lam)))
+        self._branch = branch_sign(branch)
+        try:
+            p, q, u = (float(v) for v in coupler)
+        except (TypeError, ValueError):
+            raise ValueError(f"Expected `coupler` to be three numbers (p, q, u), got {coupler!r}") from None
+        if not all(np.isfinite((p, q, u))):
+            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
+        self._coupler = (p, q, u)
+
+    l1 = property(lambda self: self._l1, doc="Crank length AB.")
+    l2 = property(lambda self: self._l2, doc="Coupler length BC.")
+    l3 = property(lambda self: self._l3, doc="Rocker length DC.")
+    s0 = property(lambda self: self._s0, doc="Offset S_0 of A along z0.")
+    s3 = property(lambda self: self._s3, doc="Offset S_3 of D along z3.")
+    h0 = property(lambda self: self._h0, doc="Common perpendicular h_0 along x0.")
+    lam = property(lambda self: self._lam, doc="Twist lambda_30 of the rocker axis.")
+    branch = property(lambda self: self._branch, doc="Assembly mode, +1 or -1.")
+    coupler = property(lambda self: self._coupler, doc="Coupler point (p, q, u).")
+
+    def _dims(self):
+        return (self._l1, self._l2, self._l3, self._s0, self._s3, self._h0, self._lam)
+
+    def __repr__(self):
+        return (f"RSSR({self._l1!r}, {self._l2!r}, {self._l3!r}, {self._s0!r}, {self._s3!r}, "
+                f"{self._h0!r}, {self._lam!r}, branch={self._branch}, coupler={self._coupler!r})")
+
+    def _coefficients(self, phi01):
+        """A, B, C of A cos(phi03) + B sin(phi03) = C and the discriminant A^2 + B^2 - C^2."""
+        dims = self._dims()
+        A, B, C = _gen.rssr_abc(*dims, phi01)
+        _, rho, r2 = _gen.rssr_reach(*dims, phi01)
+        factored = _gen.rssr_discriminant(self._l1, self._l3, rho, np.sqrt(np.maximum(r2, 0.0)))
+        disc = np.where(r2 >= 0.0, factored, _abc.abc_discriminant(A, B, C))
+        return A, B, C, disc
+
+    def discriminant(self, phi01):
+        """A**2 + B**2 - C**2 of (2-71) at crank angles `phi01`: >= 0 where it assembles.
+
+        Evaluated as a product of triangle factors (:ref:`deriv-rssr`), accurate near the
+        limit positions.
+
+        Examples
+        --------
+        >>> from mech.spatial._rssr import RSSR
+        >>> bool(RSSR(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 1.0).discriminant(0.0) > 0)
+        True
+        """
+        return self._coefficients(finite_array("phi01", phi01))[3][()]
+
+    def solve(self, phi01, order=0, omega=1.0, alpha=0.0, strict=False):
+        """Solve (2-71) for the rocker angle at the crank angles `phi01`.
+
+        The root of A cos(phi03) + B sin(phi03) = C in atan2 form (no pole where the
+        textbook's half-angle form divides by B - C), with (2-69), (2-70) for the pins;
+        rates by differentiating (2-71) once (``order=1``) or twice (``order=2``).
+
+        Parameters
+        ----------
+        phi01 : array_like, shape (...)
+            Crank angle from x0 to x1 about z0, radians.
+        order : {0, 1, 2}, optional
+            Highest time derivative to compute; nothing above it is computed.
+        omega, alpha : array_like, optional
+            Angular velocity and acceleration of the crank, broadcast against `phi01`.
+        strict : bool, optional
+            Raise `AssemblyError` instead of returning NaN where it cannot assemble.
+
+        Returns
+        -------
+        RSSRPose
+            ``phi01, phi03, B, C, P, valid``; with ``order >= 1`` also
+            ``omega_output, vB, vC``; with ``order >= 2`` also ``alpha_output, aB, aC``.
+
+        Raises
+        ------
+        AssemblyError
+            With ``strict=True``, naming the first crank angle that cannot be assembled.
+        ValueError
+            For a non-finite `phi01`, `omega` or `alpha`, or an `order` outside 0..2.
+
+        Notes
+        -----
+        See :ref:`deriv-rssr`. Rates are unbounded at the limit positions (A^2 + B^2 = C^2).
+
+        Examples
+        --------
+        >>> from mech.spatial._rssr import RSSR
+        >>> pose = RSSR(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 1.0).solve([0.0, 1.0], order=2)
+        >>> pose.valid.tolist(), pose.aC.shape
+        ([True, True], (2, 3))
+        """
+        order = nonnegative_int("order", order, 2)
+        phi01 = finite_array("phi01", phi01)
+        inputs = [phi01]
+        if order >= 1:
+            inputs.append(finite_array("omega", omega))
+        if order >= 2:
+            inputs.append(finite_array("alpha", alpha))
+        shape = np.broadcast_shapes(*(x.shape for x in inputs))
+        phi01, *rates = (np.broadcast_to(x, shape) for x in inputs)
+        l1, l2, l3, s0, s3, h0, lam = dims = self._dims()
+        sigma = self._branch
+        A, B, C, disc = self._coefficients(phi01)
+        valid = disc >= 0.0
+        if strict and not np.all(valid):
+            bad = float(phi01[~valid].ravel()[0])
+            raise AssemblyError(f"Cannot assemble {self!r} at phi01 = {bad!r}")
+        root = np.sqrt(np.where(valid, disc, 0.0))
+        phi03 = np.where(valid, _abc.abc_solve(A, B, C, root, sigma), np.nan)
+        Bx, By, Bz, Cx, Cy, Cz = _gen.rssr_points(l1, l3, s0, s3, h0, lam, phi01, phi03)
+        fields = {"phi01": phi01[()], "phi03": phi03[()], "valid": valid[()],
+                  "B": _stack(Bx, By, Bz), "C": _stack(Cx, Cy, Cz)}
+        p, q, u = self._coupler
+        if q == 0.0 and u == 0.0:
+            fields["P"] = fields["B"] + (p / l2) * (fields["C"] - fields["B"])
+        else:
+            with np.errstate(invalid="ignore", divide="ignore"):
+                fields["P"] = _stack(*_gen.rssr_coupler_point(Bx, By, Bz, Cx, Cy, Cz, l2, lam, p, q, u))
+        if order >= 1:
+            omega = rates[0]
+            dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega, rates[1] if order >= 2 else 0.0)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                w3 = np.where(valid, _abc.abc_rate(dA, dB, dC, phi03, root, sigma), np.nan)
+            fields["omega_output"] = w3[()]
+            fields["vB"], fields["vC"] = (_stack(*v) for v in np.split(
+                np.array(np.broadcast_arrays(*_gen.rssr_velocity(l1, l3, lam, phi01, phi03, omega, w3))), 2))
+        if order >= 2:
+            alpha = rates[1]
+            with np.errstate(invalid="ignore", divide="ignore"):
+                a3 = np.where(valid, _abc.abc_accel(C, dA, dB, ddA, ddB, ddC, phi03, w3, root, sigma), np.nan)
+            fields["alpha_output"] = a3[()]
+            fields["aB"], fields["aC"] = (_stack(*v) for v in np.split(np.array(np.broadcast_arrays(
+                *_gen.rssr_acceleration(l1, l3, lam, phi01, phi03, omega, w3, alpha, a3))), 2))
+        return RSSRPose(order, fields)
+
+    def assembly_range(self):
+        """The crank angles where the linkage assembles, and its limit positions.
+
+        The discriminant A^2 + B^2 - C^2 of (2-71) is a trigonometric polynomial of degree 2
+        in phi01: its coefficients come from 8 equally spaced samples, its zeros from the
+        quartic in z = exp(1j phi01), refined by bisection on the accurate discriminant.
+
+        Returns
+        -------
+        AssemblyRange
+            ``intervals`` (limit positions at the ends) and ``full_turn``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mech.spatial._rssr import RSSR
+        >>> rng = RSSR(2.0, 2.5, 1.5, 0.3, -0.4, 1.5, 0.8).assembly_range()
+        >>> rng.full_turn, rng.intervals.shape
+        (False, (1, 2))
+        """
+        samples = self._coefficients(np.arange(8) * (np.pi / 4))[3]
+        fourier = np.fft.fft(samples) / 8                  # c_k at index k (mod 8)
+        poly = [fourier[k % 8] for k in (2, 1, 0, -1, -2)]  # highest power of z first
+        if abs(poly[0]) <= 1e-14 * np.max(np.abs(poly)):
+            zeros = np.array([])
+        else:
+            zs = np.roots(poly)
+            zeros = np.sort(np.angle(zs[np.abs(np.abs(zs) - 1.0) < 1e-6]))
+        disc = lambda x: float(self._coefficients(np.asarray(x, dtype=float))[3])
+        zeros = np.array([self._refine(disc, z) for z in zeros])
+        if zeros.size == 0:
+            return AssemblyRange(np.empty((0, 2)), bool(disc(0.0) >= 0.0))
+        ends = np.append(zeros, zeros[0] + 2 * np.pi)
+        intervals = [(s, e) for s, e in zip(ends[:-1], ends[1:]) if e > s and disc(0.5 * (s + e)) > 0.0]
+        merged = []
+        for s, e in intervals:                      # join intervals that meet at a double zero
+            if merged and abs(s - merged[-1][1]) < 1e-9:
+                merged[-1] = (merged[-1][0], e)
+            else:
+                merged.append((s, e))
+        if len(merged) > 1 and abs(merged[-1][1] - 2 * np.pi - merged[0][0]) < 1e-9:
+            merged[0] = (merged[-1][0], merged[0][1] + 2 * np.pi)
+            merged.pop()
+        if len(merged) == 1 and merged[0][1] - merged[0][0] > 2 * np.pi - 1e-9:
+            return AssemblyRange(np.empty((0, 2)), True)
+        out = np.array([(s - 2 * np.pi * np.floor((s + np.pi) / (2 * np.pi)), 0.0) for s, _ in merged])
+        out[:, 1] = out[:, 0] + np.array([e - s for s, e in merged])
+        return AssemblyRange(out, False)
+
+    @staticmethod
+    def _refine(disc, x, width=1e-5):
+        """Bisect a sign change of `disc` within `width` of `x`; return `x` if none."""
+        lo, hi = x - width, x + width
+        f_lo, f_hi = disc(lo), disc(hi)
+        if f_lo * f_hi > 0.0:
+            return x
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            f_mid = disc(mid)
+            if f_mid == 0.0:
+                return mid
+            if (f_mid > 0.0) == (f_lo > 0.0):
+                lo, f_lo = mid, f_mid
+            else:
+                hi = mid
+        return 0.5 * (lo + hi)
