@@ -154,6 +154,36 @@ class RSSR:
         disc = np.where(r2 >= 0.0, factored, _abc.abc_discriminant(A, B, C))
         return A, B, C, disc
 
+    def coefficients(self, phi01):
+        """The textbook's A, B, C of (2-71), A sin(phi03) + B cos(phi03) + C = 0, C corrected.
+
+        The printed C has the wrong sign on its last term, S0 S3 cos(lam) / (l1 l3);
+        this is the derived one (:ref:`deriv-rssr`).
+
+        Examples
+        --------
+        >>> from mech.spatial._rssr import RSSR
+        >>> [round(float(x), 6) for x in RSSR(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 0.0).coefficients(0.0)]
+        [0.0, 2.0, -1.9775]
+        """
+        A, B, C = _gen.rssr_abc(*self._dims(), finite_array("phi01", phi01))
+        return B[()], A[()], np.negative(C)[()]
+
+    def points(self, phi01, phi03):
+        """The pins B (2-69) and C (2-70), shape (..., 3), at given crank and rocker angles.
+
+        Examples
+        --------
+        >>> from mech.spatial._rssr import RSSR
+        >>> B, C = RSSR(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 0.0).points(0.0, 0.0)
+        >>> B.tolist(), C.tolist()
+        ([1.0, 0.0, 0.5], [5.0, 0.0, 0.8])
+        """
+        l1, _, l3, s0, s3, h0, lam = self._dims()
+        Bx, By, Bz, Cx, Cy, Cz = _gen.rssr_points(l1, l3, s0, s3, h0, lam, finite_array("phi01", phi01),
+                                                  finite_array("phi03", phi03))
+        return _stack(Bx, By, Bz), _stack(Cx, Cy, Cz)
+
     def discriminant(self, phi01):
         """A**2 + B**2 - C**2 of (2-71) at crank angles `phi01`: >= 0 where it assembles.
 
