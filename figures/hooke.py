@@ -42,7 +42,7 @@ def ratio_curves(theta1, curves, ax=None, *, title=None):
     if title:
         ax.set_title(title, fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8, loc="upper right", ncol=2)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.18), ncol=3, frameon=False)
     return ax
 
 
@@ -82,7 +82,7 @@ def _rx(lam):
     return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
 
 
-def _yoke(ax, axis, arm, *, color, length=2.2, radius=1.0):
+def _yoke(ax, axis, arm, *, color, length=1.75, radius=1.0):
     """A shaft along -`axis` (from the centre outwards) and its fork with tips at +-`arm`."""
     back = -axis * 0.45
     ax.plot(*np.array([back, -axis * length]).T, color=color, lw=5, solid_capstyle="round")
@@ -121,8 +121,8 @@ def joint_sketch(alpha, theta1, theta3, ax=None):
     for arm, color in ((e1, "tab:blue"), (e3, "tab:orange")):
         ax.plot(*np.array([-arm, arm]).T, color="black", lw=3)
         ax.scatter(*np.array([-arm, arm]).T, color=color, s=25, depthshade=False)
-    ax.text(*(-2.3 * z_in), "shaft 1", fontsize=9)
-    ax.text(*(2.3 * z_out), "shaft 3", fontsize=9)
+    ax.text(*(-1.8 * z_in), "shaft 1", fontsize=9)
+    ax.text(*(1.8 * z_out), "shaft 3", fontsize=9)
     ax.text(*(1.15 * e1), r"$e^{(1)}$", fontsize=9)
     ax.text(*(1.15 * e3), r"$e^{(3)}$", fontsize=9)
     lim = 1.8
@@ -133,5 +133,5 @@ def joint_sketch(alpha, theta1, theta3, ax=None):
     ax.set_xlabel("$x_4$")
     ax.set_ylabel("$y_4$")
     ax.set_zlabel("$z_4$")
-    ax.view_init(elev=22, azim=-60)
+    ax.view_init(elev=18, azim=-25)
     return ax
