@@ -243,6 +243,33 @@ class OpenChain:
             fields.update(aP=a + np.cross(alpha, d) + np.cross(omega, np.cross(omega, d)), alpha=alpha)
         return ChainPose(order, fields)
 
+    def frames(self, q):
+        """Every link frame in the ground frame: M_00 = I, M_01, M_02, ..., M_0n.
+
+        Parameters
+        ----------
+        q : array_like, shape (..., dof)
+            Joint variables, as in `solve`.
+
+        Returns
+        -------
+        ndarray, shape (..., n + 1, 4, 4)
+            The prefixes of the product (2-73), e.g. to draw the chain.
+
+        Examples
+        --------
+        >>> from mech.spatial._chain import example_2_25_manipulator
+        >>> example_2_25_manipulator(0.5).frames([0.1, 0.2, 0.3, 0.4]).shape
+        (5, 4, 4)
+        """
+        q = self._split("q", q)
+        T = np.broadcast_to(np.eye(4), q.shape[:-1] + (4, 4))
+        out = [T]
+        for joint, phi, s, *_ in self._joint_values(q, None, None):
+            T = T @ hd(phi, joint.lam, s, joint.h)
+            out.append(T)
+        return np.stack(out, axis=-3)
+
     def pose(self, q, *, point=(0.0, 0.0, 0.0)):
         """Position and orientation of the end link: ``solve(q, order=0, point=point)``."""
         return self.solve(q, 0, point=point)
