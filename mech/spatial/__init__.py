@@ -5,6 +5,15 @@ Conventions (``CONVENTIONS.md``): angles in radians; a matrix ``R_ij`` or ``M_ij
 coordinates in frame j to coordinates in frame i; arrays of parameters give stacks.
 """
 
+from mech.spatial._hooke import DoubleJointPose, DoubleUniversalJoint, hooke_acceleration, hooke_output, hooke_ratio
 from mech.spatial._mobility import PAIR_FREEDOMS, mobility
 
-__all__ = ["PAIR_FREEDOMS", "mobility"]
+__all__ = [
+    "DoubleJointPose",
+    "DoubleUniversalJoint",
+    "PAIR_FREEDOMS",
+    "hooke_acceleration",
+    "hooke_output",
+    "hooke_ratio",
+    "mobility",
+]
