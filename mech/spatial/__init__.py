@@ -7,11 +7,15 @@ coordinates in frame j to coordinates in frame i; arrays of parameters give stac
 
 from mech.spatial._hooke import DoubleJointPose, DoubleUniversalJoint, hooke_acceleration, hooke_output, hooke_ratio
 from mech.spatial._mobility import PAIR_FREEDOMS, mobility
+from mech.spatial._rssr import RSSR, AssemblyRange, RSSRPose
 
 __all__ = [
+    "AssemblyRange",
     "DoubleJointPose",
     "DoubleUniversalJoint",
     "PAIR_FREEDOMS",
+    "RSSR",
+    "RSSRPose",
     "hooke_acceleration",
     "hooke_output",
     "hooke_ratio",
