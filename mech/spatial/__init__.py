@@ -5,19 +5,32 @@ Conventions (``CONVENTIONS.md``): angles in radians; a matrix ``R_ij`` or ``M_ij
 coordinates in frame j to coordinates in frame i; arrays of parameters give stacks.
 """
 
+from mech.spatial._chain import ChainPose, Joint, OpenChain, example_2_25_manipulator, example_2_25_pose, example_2_25_reach
 from mech.spatial._hooke import DoubleJointPose, DoubleUniversalJoint, hooke_acceleration, hooke_output, hooke_ratio
 from mech.spatial._mobility import PAIR_FREEDOMS, mobility
 from mech.spatial._rssr import RSSR, AssemblyRange, RSSRPose
+from mech.spatial._transforms import hd, hd_inv, homogeneous, rot_x, rot_z
 
 __all__ = [
     "AssemblyRange",
+    "ChainPose",
     "DoubleJointPose",
     "DoubleUniversalJoint",
+    "Joint",
+    "OpenChain",
     "PAIR_FREEDOMS",
     "RSSR",
     "RSSRPose",
+    "example_2_25_manipulator",
+    "example_2_25_pose",
+    "example_2_25_reach",
+    "hd",
+    "hd_inv",
+    "homogeneous",
     "hooke_acceleration",
     "hooke_output",
     "hooke_ratio",
     "mobility",
+    "rot_x",
+    "rot_z",
 ]
