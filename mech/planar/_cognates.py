@@ -8,7 +8,7 @@ from mech._errors import AssemblyError
 from mech._generated import cognates as _gen
 from mech._validate import branch_sign, finite_array, positive_length
 from mech.planar._fourbar import FourBar
-from mech.planar._pose import Pose
+from mech._pose import Pose
 
 __all__ = ["Cognate", "CognatePose", "Cognates", "TenBarPose", "cognates"]
 

@@ -5,7 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import special_mechanisms as _gen
 from mech._validate import finite_array, positive_length, real_number
-from mech.planar._pose import Pose
+from mech._pose import Pose
 from mech.planar._special import _finish, _inputs
 
 __all__ = [

@@ -5,7 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
-from mech.planar._pose import Pose
+from mech._pose import Pose
 
 __all__ = ["FourBar", "FourBarPose"]
 

@@ -4,7 +4,7 @@ import numpy as np
 
 from mech._generated import slider_crank as _gen
 from mech._validate import finite_array, nonnegative_int, positive_length
-from mech.planar._pose import Pose
+from mech._pose import Pose
 
 __all__ = ["GuideBar", "GuideBarPose"]
 

@@ -8,7 +8,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
-from mech.planar._pose import Pose
+from mech._pose import Pose
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
 

@@ -10,7 +10,7 @@ import numpy as np
 from mech._generated import special_mechanisms as _gen
 from mech._validate import finite_array, nonnegative_int, positive_length
 from mech.planar._guide_bar import GuideBar
-from mech.planar._pose import Pose
+from mech._pose import Pose
 
 __all__ = ["RotatingGuideBar", "RotatingGuideBarPose", "SwingingBlock"]
 

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import open_chains as _gen
+from mech._pose import Pose
 from mech._validate import finite_array, nonnegative_int, positive_length, real_number
 from mech.spatial._transforms import hd
 
@@ -64,7 +65,7 @@ class Joint:
                 "C": ((1.0, 0.0), (0.0, 1.0))}[self.kind]
 
 
-class ChainPose:
+class ChainPose(Pose):
     """Immutable pose of the end of an open chain (returned by `OpenChain.solve`).
 
     Attributes
@@ -82,22 +83,6 @@ class ChainPose:
     """
 
     _ORDER_OF = {"vP": 1, "omega": 1, "aP": 2, "alpha": 2}
-
-    def __init__(self, order, fields):
-        object.__setattr__(self, "order", order)
-        object.__setattr__(self, "_fields", fields)
-
-    def __getattr__(self, name):
-        fields = self.__dict__.get("_fields", {})
-        if name in fields:
-            return fields[name]
-        if name in self._ORDER_OF:
-            raise AttributeError(f"`{name}` needs solve(..., order={self._ORDER_OF[name]}) or higher; "
-                                 f"this pose was solved with order={self.order}")
-        raise AttributeError(f"ChainPose has no attribute {name!r}")
-
-    def __setattr__(self, name, value):
-        raise AttributeError("ChainPose is immutable")
 
     def __repr__(self):
         return f"ChainPose(order={self.order}, shape={self._fields['P'].shape[:-1]})"

@@ -8,7 +8,7 @@ from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import rssr as _gen
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
-from mech.planar._pose import Pose
+from mech._pose import Pose
 
 __all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
 

@@ -1,4 +1,4 @@
-"""The immutable result record shared by every `solve` of the planar package."""
+"""The immutable result record shared by every `solve` of the package."""
 
 import numpy as np
 
