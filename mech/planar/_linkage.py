@@ -434,7 +434,7 @@ class Linkage:
         o = st.origin[link]
         d = st.dir[link]
         loc = step.get("at")
-        z = st.P[o] + loc * d
+        z = _cx(*_g.rigid_body_position(*_re_im(st.P[o]), *_re_im(d), loc.real, loc.imag))
         v = a = None
         if st.order >= 1:
             v = st.rigid_v(o, link, z)
@@ -446,7 +446,7 @@ class Linkage:
         link, pivot, tip, r = step.links[0], step.get("pivot"), step.get("tip"), step.get("length")
         name = step.get("driver")
         d = np.exp(1j * q[name])
-        z = st.P[pivot] + r * d
+        z = _cx(*_g.rigid_body_position(*_re_im(st.P[pivot]), *_re_im(d), r, 0.0))
         st.put_link(link, pivot, d, w[name] if st.order >= 1 else None, al[name] if st.order >= 2 else None)
         v = st.rigid_v(pivot, link, z) if st.order >= 1 else None
         a = st.rigid_a(pivot, link, z) if st.order >= 2 else None
@@ -524,12 +524,12 @@ class Linkage:
         slide = Slide(s=s, direction=np.broadcast_to(e, np.shape(s)))
         if st.order >= 1:
             W1, ds = _g.rrp_velocity(ux, uy, *_re_im(e), r1, s, *_re_im(st.V[p1]), *_re_im(vQ), wK)
-            v3 = st.V[p1] + 1j * W1 * u1
+            v3 = _cx(*_g.rigid_body_velocity(*_re_im(st.V[p1]), ux, uy, W1))
             slide = Slide(s, slide.direction, ds)
         if st.order >= 2:
             A1, dds = _g.rrp_acceleration(ux, uy, *_re_im(e), r1, s, *_re_im(st.A[p1]), *_re_im(aQ),
                                           wK, aK, W1, ds)
-            a3 = st.A[p1] + (1j * A1 - W1**2) * u1
+            a3 = _cx(*_g.rigid_body_acceleration(*_re_im(st.A[p1]), ux, uy, W1, A1))
             _, _, kx, ky = _g.slide_acceleration(*_re_im(aQ), *_re_im(e), s, ds, dds, wK, aK)
             slide = Slide(s, slide.direction, ds, dds, kx + 1j * ky)
         st.put_link(rod, p1, u1 / r1, W1, A1)
