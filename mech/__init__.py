@@ -15,10 +15,10 @@ import importlib as _importlib
 
 from mech._errors import AssemblyError
 
-__all__ = ["AssemblyError", "exercises", "planar", "spatial"]
+__all__ = ["AssemblyError", "exercises", "planar", "spatial", "spherical"]
 __version__ = "0.1.0"
 
-_SUBPACKAGES = {"exercises", "planar", "spatial"}
+_SUBPACKAGES = {"exercises", "planar", "spatial", "spherical"}
 
 
 def __getattr__(name):

@@ -60,3 +60,7 @@ def test_heavy_modules_after_detects_heavy_import():
 
 def test_import_mech_spatial_light():
     assert _heavy_modules_after(["import mech.spatial"]) == []
+
+
+def test_import_mech_spherical_light():
+    assert _heavy_modules_after(["import mech.spherical"]) == []
