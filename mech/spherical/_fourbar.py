@@ -1,0 +1,370 @@
+"""The spherical four-bar: positions, velocities, accelerations, placement on the sphere."""
+
+import numpy as np
+
+from mech._errors import AssemblyError
+from mech._generated import spherical_fourbar as _gen
+from mech._pose import Pose
+from mech._validate import branch_sign, finite_array, nonnegative_int, real_number
+from mech.spatial import AssemblyRange
+
+__all__ = ["SphericalFourBar", "SphericalFourBarPose", "ground_frame"]
+
+_BLOCK = 1 << 14
+_VECTORS = {0: ("B", "C", "P"),
+            1: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP"),
+            2: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP",
+                "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}
+_SCALARS = {0: ("psi",), 1: ("psi", "omega_output"), 2: ("psi", "omega_output", "alpha_output")}
+
+
+def _arc(name, value):
+    """Return `value` as a float after checking that it is an arc in (0, pi)."""
+    x = real_number(name, value)
+    if not 0.0 < x < np.pi:
+        raise ValueError(f"Expected `{name}` in (0, pi), got {x!r}")
+    return x
+
+
+def _rotation(frame, tol=1e-9):
+    """Return `frame` as a 3x3 float array after checking it is a proper rotation."""
+    try:
+        R = np.array(frame, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got {frame!r}") from None
+    if R.shape != (3, 3) or not np.all(np.isfinite(R)):
+        raise ValueError(f"Expected `frame` to be a finite 3x3 rotation matrix, got {frame!r}")
+    if np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
+        raise ValueError("Expected `frame` to be a proper rotation (R.T @ R = I, det R = +1), "
+                         f"got {np.array2string(R, precision=6)}")
+    return R
+
+
+def ground_frame(lon, lat, heading):
+    """Rotation that places a spherical four-bar's ground link anywhere on the sphere.
+
+    Returns R with ``R @ (0, 0, 1) = to_xyz(lon, lat)`` (the input pivot A) and the great
+    circle A->D leaving A at inclination `heading`: the angle from the local x axis at A
+    (along the meridian toward decreasing latitude) counter-clockwise seen from outside.
+    With `d` these are the three placement parameters of the nine-parameter linkage.
+
+    Parameters
+    ----------
+    lon, lat, heading : float
+        Longitude and latitude of A (``to_xyz(lon, lat) = (cos lat cos lon,
+        cos lat sin lon, sin lat)``) and the inclination of A->D, radians.
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        Columns: the direction of A->D at A, the direction 90 degrees counter-clockwise
+        from it, and A.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spherical._fourbar import ground_frame
+    >>> np.allclose(ground_frame(0.0, np.pi / 2, 0.0), np.eye(3))
+    True
+    >>> np.round(ground_frame(0.3, 0.2, 1.0)[:, 2], 6).tolist()
+    [0.936293, 0.289629, 0.198669]
+    """
+    lon, lat, heading = (real_number(n, v) for n, v in (("lon", lon), ("lat", lat), ("heading", heading)))
+    if not -np.pi / 2 <= lat <= np.pi / 2:
+        raise ValueError(f"Expected `lat` in [-pi/2, pi/2], got {lat!r}")
+    cl, sl, co, so = np.cos(lat), np.sin(lat), np.cos(lon), np.sin(lon)
+    x = np.array([sl * co, sl * so, -cl])
+    y = np.array([-so, co, 0.0])
+    A = np.array([cl * co, cl * so, sl])
+    ch, sh = np.cos(heading), np.sin(heading)
+    return np.column_stack((ch * x + sh * y, -sh * x + ch * y, A))
+
+
+class SphericalFourBarPose(Pose):
+    """Poses of a spherical four-bar at an array of input angles (`SphericalFourBar.solve`).
+
+    Attributes
+    ----------
+    theta, psi, valid : ndarray, shape (...)
+        Input angle, output angle in (-pi, pi] (NaN where it cannot assemble) and the mask.
+    B, C, P : ndarray, shape (..., 3)
+        Unit vectors of the pins and of the coupler point.
+    omega_output, w_input, w_coupler, w_output, vB, vC, vP : ndarray
+        d psi/dt, the angular velocity vectors (..., 3) of the three moving links and the
+        point velocities; present when solved with ``order >= 1``.
+    alpha_output, dw_input, dw_coupler, dw_output, aB, aC, aP : ndarray
+        The second-order counterparts; present when solved with ``order >= 2``.
+    """
+
+    _ORDER_OF = {**{k: 1 for k in ("omega_output", "w_input", "w_coupler", "w_output", "vB", "vC", "vP")},
+                 **{k: 2 for k in ("alpha_output", "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}}
+
+
+class SphericalFourBar:
+    """A spherical four-bar (球面四杆机构): four revolute axes through the sphere's centre.
+
+    Parameters
+    ----------
+    a, b, c, d : float
+        Arcs AB (input), BC (coupler), CD (output) and AD (ground), radians in (0, pi).
+    branch : {1, -1}, optional
+        Assembly branch: +1 where ``det[B, D, C] > 0``.
+    coupler : (float, float), optional
+        Coupler point ``(r, gamma)``: at arc `r` from B, at the angle `gamma` counter-
+        clockwise (seen from outside) from the great circle B->C. ``(0, 0)`` puts P at B.
+    frame : array_like, shape (3, 3), optional
+        Proper rotation placing the linkage: every point is ``frame @`` its position in
+        the default frame (A = (0, 0, 1), D = (sin d, 0, cos d)). See `ground_frame`.
+
+    Raises
+    ------
+    ValueError
+        If an arc is not in (0, pi), `branch` is not +1 or -1, `coupler` is not two finite
+        numbers, or `frame` is not a proper rotation.
+
+    Notes
+    -----
+    Derivation: :ref:`deriv-spherical-fourbar`. theta is the angle at A from A->D to A->B
+    and psi the angle at D from A->D continued to D->C, both counter-clockwise seen from
+    outside; as the arcs shrink the linkage becomes `mech.planar.FourBar` with
+    ``coupler=(r cos gamma, r sin gamma)``, point for point in the tangent plane at A.
+    Along a branch psi is continuous in theta (a fixed root of the input-output equation);
+    at a limit position (the ends of `assembly_range`) the two branches meet, and the
+    rates are unbounded there.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spherical._fourbar import SphericalFourBar
+    >>> linkage = SphericalFourBar(0.3, 0.9, 0.7, 1.0)
+    >>> pose = linkage.solve(np.pi / 2)
+    >>> round(float(np.arccos(pose.B @ pose.C)), 12), round(float(pose.psi), 6)
+    (0.9, 1.64216)
+    >>> linkage.solve(np.linspace(0, np.pi, 5), order=1).w_coupler.shape
+    (5, 3)
+    """
+
+    def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), frame=None):
+        self._a, self._b, self._c, self._d = (_arc(n, v) for n, v in zip("abcd", (a, b, c, d)))
+        self._branch = branch_sign(branch)
+        try:
+            r, gamma = (float(v) for v in coupler)
+        except (TypeError, ValueError):
+            raise ValueError(f"Expected `coupler` to be a pair of numbers (r, gamma), got {coupler!r}") from None
+        if not (np.isfinite(r) and np.isfinite(gamma)):
+            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
+        self._coupler = (r, gamma)
+        self._frame = None if frame is None else _rotation(frame)
+
+    a = property(lambda self: self._a, doc="Input arc AB.")
+    b = property(lambda self: self._b, doc="Coupler arc BC.")
+    c = property(lambda self: self._c, doc="Output arc CD.")
+    d = property(lambda self: self._d, doc="Ground arc AD.")
+    branch = property(lambda self: self._branch, doc="Assembly branch, +1 or -1.")
+    coupler = property(lambda self: self._coupler, doc="Coupler point (r, gamma).")
+    frame = property(lambda self: None if self._frame is None else self._frame.copy(),
+                     doc="Placement rotation, or None for the default frame.")
+
+    @property
+    def A(self):
+        """The input pivot A, shape (3,)."""
+        return self._place(np.array([0.0, 0.0, 1.0]))
+
+    @property
+    def D(self):
+        """The output pivot D, shape (3,)."""
+        return self._place(np.array([np.sin(self._d), 0.0, np.cos(self._d)]))
+
+    def _place(self, v):
+        return v if self._frame is None else v @ self._frame.T
+
+    def __repr__(self):
+        extra = "" if self._frame is None else ", frame=..."
+        return (f"SphericalFourBar({self._a!r}, {self._b!r}, {self._c!r}, {self._d!r}, "
+                f"branch={self._branch}, coupler={self._coupler!r}{extra})")
+
+    def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
+        """Solve the spherical four-bar at the input angles `theta`.
+
+        Positions by the atan2 root of A cos(psi) + B sin(psi) = C with a cancellation-
+        free C; rates from the two joint constraints of the coupler (eqs. (1)-(10) of
+        :ref:`deriv-spherical-fourbar`).
+
+        Parameters
+        ----------
+        theta : array_like, shape (...)
+            Input angle at A from A->D to A->B, counter-clockwise from outside, radians.
+        order : {0, 1, 2}, optional
+            Highest time derivative to compute; nothing above it is computed.
+        omega, alpha : array_like, optional
+            Angular velocity and acceleration of the input link, broadcast against `theta`.
+        strict : bool, optional
+            Raise `AssemblyError` instead of returning NaN where it cannot assemble.
+
+        Returns
+        -------
+        SphericalFourBarPose
+            ``theta, psi, valid`` and ``B, C, P`` (shape (..., 3)); with ``order >= 1``
+            also ``omega_output, w_input, w_coupler, w_output, vB, vC, vP``; with
+            ``order >= 2`` also ``alpha_output, dw_input, dw_coupler, dw_output, aB, aC, aP``.
+
+        Raises
+        ------
+        AssemblyError
+            With ``strict=True``, naming the first input angle that cannot be assembled
+            and the input range where the linkage assembles.
+        ValueError
+            For a non-finite `theta`, `omega` or `alpha`, or an `order` outside 0..2.
+
+        Examples
+        --------
+        >>> from mech.spherical._fourbar import SphericalFourBar
+        >>> pose = SphericalFourBar(0.3, 0.9, 0.7, 1.0, coupler=(0.4, 0.5)).solve([0.0, 1.0], order=2)
+        >>> pose.valid.tolist(), pose.aP.shape
+        ([True, True], (2, 3))
+        """
+        order = nonnegative_int("order", order, 2)
+        theta = finite_array("theta", theta)
+        inputs = [theta]
+        if order >= 1:
+            inputs.append(finite_array("omega", omega))
+        if order >= 2:
+            inputs.append(finite_array("alpha", alpha))
+        shape = np.broadcast_shapes(*(x.shape for x in inputs))
+        flat = [np.broadcast_to(x, shape).reshape(-1) for x in inputs]
+        size = flat[0].size
+        out = {name: np.empty((size, 3)) for name in _VECTORS[order]}
+        out.update({name: np.empty(size) for name in _SCALARS[order]})
+        for start in range(0, max(size, 1), _BLOCK):
+            block = slice(start, start + _BLOCK)
+            self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()})
+        valid = ~np.isnan(out["psi"])
+        if strict and not np.all(valid):
+            bad = float(flat[0][~valid][0])
+            raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}; {_describe(self.assembly_range())}")
+        if self._frame is not None:
+            for name in _VECTORS[order]:
+                out[name] = out[name] @ self._frame.T
+        fields = {name: value.reshape(shape + (3,)) for name, value in out.items() if name in _VECTORS[order]}
+        fields.update({name: out[name].reshape(shape)[()] for name in _SCALARS[order]})
+        fields["valid"] = valid.reshape(shape)[()]
+        fields["theta"] = np.broadcast_to(theta, shape)[()]
+        return SphericalFourBarPose(order, fields)
+
+    def _solve_block(self, inputs, order, out):
+        """Solve one block of flat inputs in the default frame, writing into `out`."""
+        a, b, c, d, (r, gamma) = self._a, self._b, self._c, self._d, self._coupler
+        theta = inputs[0]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            psi, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz = _gen.spherical_fourbar_position(
+                a, b, c, d, r, gamma, theta, -self._branch)
+            out["psi"][...] = psi
+            for name, comps in (("B", (Bx, By, Bz)), ("C", (Cx, Cy, Cz)), ("P", (Px, Py, Pz))):
+                target = out[name]
+                for k in range(3):
+                    target[:, k] = comps[k]
+            if order < 1:
+                return
+            points = (Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz)
+            omega = inputs[1]
+            dpsi, lam, *vectors = _gen.spherical_fourbar_velocity(d, *points, omega)
+            out["omega_output"][...] = dpsi
+            win = out["w_input"]
+            win[:, 0] = 0.0
+            win[:, 1] = 0.0
+            win[:, 2] = omega
+            for i, name in enumerate(("w_coupler", "w_output", "vB", "vC", "vP")):
+                for k in range(3):
+                    out[name][:, k] = vectors[3 * i + k]
+            if order < 2:
+                return
+            alpha = inputs[2]
+            ddpsi, *vectors = _gen.spherical_fourbar_acceleration(d, *points, omega, alpha, dpsi, lam)
+            out["alpha_output"][...] = ddpsi
+            dwin = out["dw_input"]
+            dwin[:, 0] = 0.0
+            dwin[:, 1] = 0.0
+            dwin[:, 2] = alpha
+            for i, name in enumerate(("dw_coupler", "dw_output", "aB", "aC", "aP")):
+                for k in range(3):
+                    out[name][:, k] = vectors[3 * i + k]
+
+    def assembly_range(self):
+        """The input angles where the linkage assembles; its ends are limit positions.
+
+        The arc g = BD grows with |theta| from |a - d| to min(a + d, 2 pi - a - d); the
+        linkage assembles while g lies in [|b - c|, min(b + c, 2 pi - b - c)] (the
+        triangle BCD closes). The ends come from eq. (6) of :ref:`deriv-spherical-fourbar`.
+
+        Returns
+        -------
+        mech.spatial.AssemblyRange
+            ``intervals`` of theta (limit positions at the ends) and ``full_turn``.
+
+        Examples
+        --------
+        >>> from mech.spherical._fourbar import SphericalFourBar
+        >>> SphericalFourBar(0.3, 0.9, 0.7, 1.0).assembly_range().full_turn
+        True
+        >>> rng = SphericalFourBar(0.8, 0.5, 0.6, 0.7).assembly_range()
+        >>> rng.full_turn, rng.intervals.shape
+        (False, (1, 2))
+        """
+        a, b, c, d = self._a, self._b, self._c, self._d
+        g_lo, g_hi = abs(a - d), min(a + d, 2 * np.pi - a - d)
+        w_lo, w_hi = abs(b - c), min(b + c, 2 * np.pi - b - c)
+        lo, hi = max(g_lo, w_lo), min(g_hi, w_hi)
+        if lo > hi:
+            return AssemblyRange(np.empty((0, 2)), False)
+        t_lo = 0.0 if w_lo <= g_lo else float(_gen.spherical_fourbar_limit_theta(a, d, lo))
+        t_hi = np.pi if w_hi >= g_hi else float(_gen.spherical_fourbar_limit_theta(a, d, hi))
+        if t_lo == 0.0 and t_hi == np.pi:
+            return AssemblyRange(np.empty((0, 2)), True)
+        if t_lo == 0.0:
+            intervals = [(-t_hi, t_hi)]
+        elif t_hi == np.pi:
+            intervals = [(t_lo, 2 * np.pi - t_lo)]
+        else:
+            intervals = [(-t_hi, -t_lo), (t_lo, t_hi)]
+        return AssemblyRange(np.array(intervals, dtype=float), False)
+
+    def coupler_curve(self, n=721):
+        """The coupler point over the assembly range on this branch, for figures.
+
+        Returns ``(theta, P)``: `n` input angles over the full turn, or spread over the
+        intervals of `assembly_range` with a NaN row between intervals, and P there,
+        shape (n', 3).
+
+        Examples
+        --------
+        >>> from mech.spherical._fourbar import SphericalFourBar
+        >>> theta, P = SphericalFourBar(0.3, 0.9, 0.7, 1.0, coupler=(0.4, 0.5)).coupler_curve(50)
+        >>> P.shape
+        (50, 3)
+        """
+        n = nonnegative_int("n", n, 10**8)
+        rng = self.assembly_range()
+        if rng.full_turn:
+            theta = np.linspace(-np.pi, np.pi, n)
+        else:
+            pieces = []
+            total = float(np.sum(rng.intervals[:, 1] - rng.intervals[:, 0])) or 1.0
+            for start, end in rng.intervals:
+                count = max(2, int(round(n * (end - start) / total)))
+                inset = 1e-10 * (end - start)          # the exact ends round to either side of w = 0
+                pieces += [np.linspace(start + inset, end - inset, count), [np.nan]]
+            theta = np.concatenate(pieces[:-1]) if pieces else np.empty(0)
+        ok = np.isfinite(theta)
+        P = np.full(theta.shape + (3,), np.nan)
+        P[ok] = self.solve(theta[ok]).P
+        return theta, P
+
+
+def _describe(rng):
+    """Words for an AssemblyRange, for error messages."""
+    if rng.full_turn:
+        return "it assembles at every input angle"
+    if rng.intervals.size == 0:
+        return "it assembles at no input angle"
+    parts = ", ".join(f"[{s:.6g}, {e:.6g}]" for s, e in rng.intervals)
+    return f"it assembles for theta in {parts} (radians)"
