@@ -227,6 +227,20 @@ class FunctionGenerator:
         psi, _ = _simulate(self.arcs, self.theta0 + x, self.branch)
         return _wrap(psi - self.psi0 - y)
 
+    def points(self, x):
+        """Joint points A, B, C, D (unit vectors, shape (..., 3) each) at input rotations `x`,
+        default placement (A the north pole, D = (sin d, 0, cos d))."""
+        x = finite_array("x", x)
+        a, _, c, d = self.arcs
+        theta = self.theta0 + x
+        psi, _ = _simulate(self.arcs, theta, self.branch)
+        A = np.broadcast_to([0.0, 0.0, 1.0], x.shape + (3,))
+        D = np.broadcast_to([np.sin(d), 0.0, np.cos(d)], x.shape + (3,))
+        B = np.stack([np.sin(a) * np.cos(theta), np.sin(a) * np.sin(theta), np.full_like(theta, np.cos(a))], -1)
+        C = (np.cos(c) * D + np.sin(c) * np.stack([np.cos(psi) * np.cos(d), np.sin(psi),
+                                                    -np.cos(psi) * np.sin(d)], -1))
+        return A, B, C, D
+
     @property
     def max_error(self):
         """Largest |structural error| over `reference`."""
