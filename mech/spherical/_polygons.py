@@ -377,8 +377,8 @@ sine_cosine_law.__doc__ = _LAW_DOC.format(
             "    form) ``Y_{j -> j-1} = sin(alpha_{j-1}) cos(theta_j)``.")
 cosine_law.__doc__ = _LAW_DOC.format(
     title="Cosine law", name="cosine_law",
-    extra=" Nor ``theta_j``: the cosine law is the\n    relation free of the two joint angles at the cut, and (j, k), (k, j) give the same law
-    (residuals of opposite sign).",
+    extra=" Nor ``theta_j``: the cosine law is the\n    relation free of the two joint angles at the cut, and (j, k), (k, j) give the same\n"
+          "    law (residuals of opposite sign).",
     meaning="``Z+ = Z-``, both equal to ``u_j . u_k``; for ``k = j - 1`` (the fundamental form)\n"
             "    ``Z_{j -> j-1} = cos(alpha_{j-1})``.")
 
