@@ -278,3 +278,24 @@ def test_polygon_relations_bad_input():
         close_polygon([[0, 0, 1], [0, 0, 2], [1, 0, 0]])
     with pytest.raises(ValueError, match="Expected `n`"):
         law_count(2)
+
+
+def test_fourbar_pose_satisfies_the_cut_at_the_coupler():
+    """A pose of `SphericalFourBar` is a closed 4-loop A B C D whose turning angles are
+    theta + pi at A and -psi at D; the cosine law of the cut (2, 3) holds."""
+    from mech.spherical._fourbar import SphericalFourBar, ground_frame
+
+    R = ground_frame(0.7, 0.4, 1.1)
+    linkage = SphericalFourBar(0.35, 0.9, 0.7, 1.0, frame=R)
+    theta = np.linspace(0.0, 2 * np.pi, 9)
+    pose = linkage.solve(theta)
+    axes = np.stack([np.broadcast_to(linkage.A, pose.B.shape), pose.B, pose.C,
+                     np.broadcast_to(linkage.D, pose.B.shape)], axis=-2)
+    p = close_polygon(axes)
+    np.testing.assert_allclose(p.arcs, np.broadcast_to([0.35, 0.9, 0.7, 1.0], p.arcs.shape), atol=1e-13)
+    np.testing.assert_allclose(np.angle(np.exp(1j * (p.angles[:, 0] - theta - np.pi))), 0.0, atol=1e-12)
+    np.testing.assert_allclose(np.angle(np.exp(1j * (p.angles[:, 3] + pose.psi))), 0.0, atol=1e-12)
+    assert p.relations().worst().max() < 1e-12
+    # the same placement as an open chain: the ground link A -> D
+    ground = open_chain_axes([1.0], [], frame=R)
+    np.testing.assert_allclose(ground, [linkage.A, linkage.D], atol=1e-15)
