@@ -1,0 +1,246 @@
+"""Static force analysis (mech.planar._statics): virtual work, mpmath equilibrium, friction."""
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+from mech import AssemblyError
+from mech.planar import FourBar, Guide, Linkage, SliderCrank
+from mech.planar._library import shaper_watt, stephenson_six_bar, watt_six_bar
+from mech.planar._statics import _pairs, as_linkage, friction_angle_of, friction_circle_radius, static_forces
+
+RNG = np.random.default_rng(20261122)
+
+
+def _guide_bar():
+    return (Linkage({"A": 0, "D": 2.0j}).crank("crank", pivot="A", tip="B", length=1.0)
+            .rpr(("bar", "block"), pins=("D", "B")).point("T", link="bar", at=3.0))
+
+
+def _yoke():
+    return (Linkage({"A": 0}).crank("crank", pivot="A", tip="B", length=1.0)
+            .rpp(("block", "yoke"), pin="B", guide=Guide("ground", 0.3j, 0.0), angle=math.pi / 2.5,
+                 point="J", offset=0.2)
+            .point("T", link="yoke", at=2.0 + 0.5j))
+
+
+def _prp():
+    return (Linkage({"A": 0}).crank("crank", pivot="A", tip="B", length=1.0).point("K", link="crank", at=0.3 + 0.2j)
+            .prp(("b1", "b2"), guides=(Guide("crank", "K", 0.4), Guide("ground", 0.5j, 0.2)), joint="J")
+            .point("T", link="b2", at=0.5 + 0.5j))
+
+
+def _double_slider(l):
+    return (Linkage({}).slider("slider2", guide=Guide("ground", 1j * l, -math.pi / 2), point="A")
+            .rrp(("coupler", "slider3"), pin="A", guide=Guide("ground", 0j, 0.0), joint="B", length=l))
+
+
+CASES = {
+    "fourbar": (as_linkage(FourBar(1, 3, 2.5, 3)), {"C": -10 + 3j, "B": 2j}, {"coupler": 1.5, "rocker": -0.7}),
+    "slider_crank": (as_linkage(SliderCrank(1, 3, 0.5)), {"C": -10 + 3j, "B": 2j}, {"rod": 1.5}),
+    "guide_bar": (_guide_bar(), {"T": 1 - 2j}, {"bar": 0.5}),
+    "watt_six_bar": (watt_six_bar(), {"G": 3 - 2j, "E": 1j, "C": 1}, {"output": 2.0, "link5": 0.3}),
+    "stephenson_six_bar": (stephenson_six_bar(), {"G": 3 - 2j, "E": 1j, "C": 1}, {"output": 2.0, "link5": 0.3}),
+    "shaper": (shaper_watt(), {"F": -300 + 20j}, {"rod": 10.0}),
+    "rpp_yoke": (_yoke(), {"T": 1 - 2j, "B": 0.5}, {"yoke": 0.5, "block": -0.3}),
+    "prp": (_prp(), {"T": 1 - 2j, "J": 0.5}, {"b1": 0.5, "b2": -0.3}),
+}
+
+
+def _power(sol, sf, forces, couples, factor=1.0):
+    """Residual of M_b omega + sum F.v + sum M omega, relative to the loads' power scale."""
+    p = factor * sf.balancing * 1.0
+    scale = 0.0
+    for pt, f in forces.items():
+        p = p + np.real(np.conj(f) * sol.velocities[pt])
+        scale = scale + abs(f) * np.abs(sol.velocities[pt])
+    for link, m in couples.items():
+        p = p + m * sol.omegas[link]
+        scale = scale + abs(m) * np.abs(sol.omegas[link])
+    return np.abs(p) / scale
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_static_forces_virtual_work(name):
+    lk, forces, couples = CASES[name]
+    theta = RNG.uniform(-math.pi, math.pi, 400)
+    theta = theta[lk.solve(theta).valid][:200]
+    sol = lk.solve(theta, order=1)
+    sf = static_forces(sol, forces, couples)
+    assert theta.size > 50
+    assert np.max(_power(sol, sf, forces, couples)) < 1e-10
+    assert np.all(sf.efficiency[sf.frictionless[lk.drivers[0]] > 0] == 1.0)
+
+
+def test_static_forces_virtual_work_check_can_fail():
+    # the same check with a balancing moment off by 1e-6 must fail: the test has teeth
+    lk, forces, couples = CASES["watt_six_bar"]
+    sol = lk.solve(np.array([0.3, 1.1, 2.5]), order=1)
+    sf = static_forces(sol, forces, couples)
+    assert np.max(_power(sol, sf, forces, couples, factor=1 + 1e-6)) > 1e-10
+
+
+def test_static_forces_fourbar_mpmath_equilibrium():
+    # 9 equations (3 per link) in 7 unknowns solved independently at 50 digits
+    mpmath.mp.dps = 50
+    a, b, c, d = 1.0, 3.0, 2.5, 3.0
+    theta, Q, E_local = 0.9, -7.0 + 4.0j, 1.6 + 0.4j
+    lk = as_linkage(FourBar(a, b, c, d)).point("E", link="rocker", at=E_local)
+    sol = lk.solve(theta, order=1)
+    sf = static_forces(sol, {"E": Q})
+    B = mpmath.mpc(a * mpmath.cos(theta), a * mpmath.sin(theta))
+    Cz = mpmath.findroot(lambda x, y: ((x - B.real) ** 2 + (y - B.imag) ** 2 - b**2, (x - d) ** 2 + y**2 - c**2),
+                         (complex(sol.points["C"]).real, complex(sol.points["C"]).imag))
+    C = mpmath.mpc(Cz[0], Cz[1])
+    D = mpmath.mpf(d)
+    E = D + (C - D) / c * mpmath.mpc(E_local.real, E_local.imag)
+    cr = lambda p, f: p.real * f.imag - p.imag * f.real
+    # unknowns: R_A (on crank, 2), R_B (on coupler from crank, 2), R_C (on rocker from coupler, 2),
+    # R_D (on rocker, 2), M_b
+    rows, rhs = [], []
+    z = [0] * 9
+
+    def eq(coeffs, value):
+        row = list(z)
+        for k, v in coeffs.items():
+            row[k] = v
+        rows.append(row)
+        rhs.append(value)
+
+    # crank: R_A - R_B = 0 ; moment about A: cross(B, -R_B) + M_b = 0
+    eq({0: 1, 2: -1}, 0), eq({1: 1, 3: -1}, 0), eq({2: B.imag, 3: -B.real, 8: 1}, 0)
+    # coupler: R_B - R_C = 0 ; moment about B: cross(C - B, -R_C) = 0
+    eq({2: 1, 4: -1}, 0), eq({3: 1, 5: -1}, 0), eq({4: (C - B).imag, 5: -(C - B).real}, 0)
+    # rocker: R_C + R_D + Q = 0 ; moment about D: cross(C - D, R_C) + cross(E - D, Q) = 0
+    Qm = mpmath.mpc(Q.real, Q.imag)
+    eq({4: 1, 6: 1}, -Qm.real), eq({5: 1, 7: 1}, -Qm.imag)
+    eq({4: -(C - D).imag, 5: (C - D).real}, -cr(E - D, Qm))
+    A = mpmath.matrix(rows)
+    x = mpmath.lu_solve(A, mpmath.matrix(rhs))
+    want = {("ground", "crank"): x[0] + 1j * x[1], ("crank", "coupler"): x[2] + 1j * x[3],
+            ("coupler", "rocker"): x[4] + 1j * x[5], ("ground", "rocker"): x[6] + 1j * x[7]}
+    scale = abs(complex(Q))
+    for key, value in want.items():
+        assert abs(complex(sf.reactions[key]) - complex(value)) < 1e-12 * scale
+    assert abs(float(sf.balancing) - float(x[8])) < 1e-12 * scale * a
+
+
+def test_static_forces_reactions_are_antisymmetric():
+    lk, forces, couples = CASES["shaper"]
+    sf = static_forces(lk.solve(np.array([0.2, 2.0])), forces, couples)
+    for (i, j), r in sf.reactions.items():
+        np.testing.assert_array_equal(sf.reactions[(j, i)], -r)
+
+
+def test_example_2_14_self_locking_boundary():
+    l, r, mu0, mu = 100.0, 10.0, 0.15, 0.2
+    rho = friction_circle_radius(r, mu0)
+    x_lock = l * math.sin(math.atan(mu) + math.asin(2 * r * mu0 / l))
+    lk = _double_slider(l)
+
+    def locked(x):
+        s = l - np.sqrt(l * l - np.asarray(x) ** 2)
+        return static_forces(lk.solve(s, order=1), {"B": -1.0}, rho=rho, mu=mu).self_locking
+
+    lo, hi = 5.0, 60.0
+    assert locked(lo)[()] and not locked(hi)[()]
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if locked(mid)[()] else (lo, mid)
+    assert abs(0.5 * (lo + hi) - x_lock) < 1e-8 * l
+    # the required force diverges like 1/(x - x_lock) there
+    dx = np.array([1e-3, 1e-5, 1e-7])
+    x = x_lock + dx
+    sf = static_forces(lk.solve(l - np.sqrt(l * l - x * x), order=1), {"B": -1.0}, rho=rho, mu=mu)
+    k = sf.balancing * dx
+    assert np.all(sf.balancing > 1e2) and np.ptp(k) < 1e-4 * k[0]
+
+
+def test_static_forces_friction_circle_tangency_slider_crank():
+    rho, mu = 0.04, 0.12
+    lk = as_linkage(SliderCrank(1.0, 3.2, 0.3))
+    theta = np.linspace(-3.0, 3.0, 41)
+    sol = lk.solve(theta, order=1)
+    sf = static_forces(sol, {("C", "slider"): -10.0}, rho=rho, mu=mu)
+    for p in _pairs(sol):
+        R = sf.reactions[p.links]
+        point = sf.lines[p.links]
+        if p.kind == "R":
+            # the moment of the reaction about its pin is rho |R| against the relative rotation
+            m = np.imag(np.conj(point - p.at) * R)
+            np.testing.assert_allclose(m, -np.sign(p.rate) * rho * np.abs(R), atol=1e-12)
+        else:
+            # tilted by the friction angle from the normal, against the sliding velocity
+            along = np.real(np.conj(p.e) * R)
+            normal = np.real(np.conj(1j * p.e) * R)
+            np.testing.assert_allclose(along, -np.sign(p.rate) * mu * np.abs(normal), atol=1e-12)
+            tilt = np.arctan2(np.abs(along), np.abs(normal))
+            np.testing.assert_allclose(tilt, friction_angle_of(mu), atol=1e-12)
+
+
+def test_static_forces_friction_power_is_the_dissipation():
+    rho, mu = 0.05, 0.1
+    lk = as_linkage(SliderCrank(1, 3, 0.5))
+    theta = RNG.uniform(-math.pi, math.pi, 100)
+    sol = lk.solve(theta, order=1)
+    sf = static_forces(sol, {("C", "slider"): -10.0}, rho=rho, mu=mu)
+    power_in = sf.balancing + np.real(-10.0 * sol.velocities["C"])
+    lost = 0.0
+    for p in _pairs(sol):
+        R = sf.reactions[p.links]
+        if p.kind == "R":
+            lost = lost + rho * np.abs(R) * np.abs(p.rate)
+        else:
+            lost = lost + mu * np.abs(np.real(np.conj(1j * p.e) * R)) * np.abs(p.rate)
+    ok = ~sf.self_locking
+    assert ok.sum() > 80
+    np.testing.assert_allclose(power_in[ok], lost[ok], rtol=1e-11)
+    driving = ok & (sf.frictionless["crank"] > 0)          # the crank drives (omega = 1)
+    eta = sf.efficiency[driving]
+    assert driving.sum() > 30 and np.all((eta > 0) & (eta < 1))
+    assert np.all(np.isnan(sf.efficiency[~driving]))
+
+
+def test_static_forces_fourbar_friction_converges():
+    lk = as_linkage(FourBar(1, 3, 2.5, 3))
+    sol = lk.solve(np.linspace(0, 6.2, 32), order=1)
+    sf = static_forces(sol, {"C": -10 + 3j}, rho=0.03)
+    ok = ~sf.self_locking
+    assert ok.sum() > 20
+    for key in (("crank", "coupler"), ("coupler", "rocker")):
+        R = sf.reactions[key]
+        m = np.imag(np.conj(sf.lines[key] - sol.points["B" if key[0] == "crank" else "C"]) * R)
+        turning = np.abs(np.sign(sol.omegas[key[1]] - sol.omegas[key[0]]))
+        np.testing.assert_allclose(np.abs(m[ok]), 0.03 * turning[ok] * np.abs(R[ok]), rtol=1e-12, atol=1e-14)
+
+
+def test_static_forces_bad_inputs():
+    lk = as_linkage(SliderCrank(1, 3))
+    sol = lk.solve(np.array([0.3, 1.0]), order=1)
+    with pytest.raises(ValueError, match=r"Expected `rho` >= 0, got -0.1"):
+        static_forces(sol, {"C": -1}, rho=-0.1)
+    with pytest.raises(ValueError, match=r"Expected `mu` >= 0, got -0.2"):
+        static_forces(sol, {"C": -1}, mu=-0.2)
+    with pytest.raises(ValueError, match="cross tangent does not exist"):
+        static_forces(sol, {("C", "slider"): -1}, rho=1.6)
+    with pytest.raises(ValueError, match="Expected a known point"):
+        static_forces(sol, {"Z": -1})
+    with pytest.raises(ValueError, match="order >= 1"):
+        static_forces(lk.solve(0.3), {"C": -1}, rho=0.01)
+    with pytest.raises(ValueError, match="Expected `mu` keys"):
+        static_forces(sol, {"C": -1}, mu={("rod", "ground"): 0.1})
+    bad = as_linkage(FourBar(1, 1.2, 1.5, 3)).solve(np.array([0.5, 3.0]), order=1)
+    with pytest.raises(AssemblyError, match=r"index \(1,\)"):
+        static_forces(bad, {"C": -1})
+    with pytest.raises(ValueError, match="Expected `mu0` >= 0"):
+        friction_circle_radius(10, -0.1)
+
+
+def test_as_linkage_matches_fourbar_and_slider_crank():
+    fb = FourBar(1, 3, 2.5, 3, branch=-1)
+    th = np.linspace(0, 6, 7)
+    np.testing.assert_allclose(as_linkage(fb).solve(th).points["C"], fb.solve(th).C, atol=1e-12)
+    sc = SliderCrank(1, 3, 0.4)
+    np.testing.assert_allclose(as_linkage(sc).solve(th).points["C"].real, sc.solve(th).x, atol=1e-12)
