@@ -244,3 +244,16 @@ def test_as_linkage_matches_fourbar_and_slider_crank():
     np.testing.assert_allclose(as_linkage(fb).solve(th).points["C"], fb.solve(th).C, atol=1e-12)
     sc = SliderCrank(1, 3, 0.4)
     np.testing.assert_allclose(as_linkage(sc).solve(th).points["C"].real, sc.solve(th).x, atol=1e-12)
+
+
+def test_exercise_2_22_virtual_work_and_friction():
+    from mech.exercises.chapter2_statics import EXERCISE_2_22, LAYOUT_2_22, linkage_2_22
+
+    s = EXERCISE_2_22.solve()
+    sol = linkage_2_22().solve(LAYOUT_2_22["theta"], order=1)
+    # ideal: P AE omega1 = Q BF |omega2| (virtual work, from the velocities alone)
+    q0 = 30.0 * LAYOUT_2_22["AE"] * 1.0 / (LAYOUT_2_22["BF"] * abs(float(sol.omegas["lever2"])))
+    assert abs(s["Q without friction"].value - q0) < 1e-10 * q0
+    assert 0.85 * q0 < s["Q with friction"].value < q0
+    assert s["friction-circle radius"].value == 2.5
+    assert EXERCISE_2_22.solve(mu0=0.0)["Q with friction"].value == pytest.approx(q0, rel=1e-12)
