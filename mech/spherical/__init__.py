@@ -6,4 +6,10 @@ Conventions (``CONVENTIONS.md``): the sphere has unit radius, arcs are radians i
 points are unit 3-vectors in arrays of shape ``(..., 3)``, and ``lon`` is 0 at the poles.
 """
 
-__all__: list[str] = []
+from mech.spherical._fourbar import SphericalFourBar, SphericalFourBarPose, ground_frame
+
+__all__ = [
+    "SphericalFourBar",
+    "SphericalFourBarPose",
+    "ground_frame",
+]
