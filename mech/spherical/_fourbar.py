@@ -306,7 +306,7 @@ class SphericalFourBar:
         >>> from mech.spherical._fourbar import SphericalFourBar
         >>> SphericalFourBar(0.3, 0.9, 0.7, 1.0).assembly_range().full_turn
         True
-        >>> rng = SphericalFourBar(0.8, 0.5, 0.6, 0.7).assembly_range()
+        >>> rng = SphericalFourBar(0.8, 0.5, 0.55, 0.7).assembly_range()
         >>> rng.full_turn, rng.intervals.shape
         (False, (1, 2))
         """
