@@ -68,8 +68,11 @@ def mechanism_with_forces(points, bars, forces=(), lines=(), circles=(), ground=
                     arrowprops=dict(arrowstyle="-|>", color=colour, lw=1.6), zorder=5)
         ax.annotate(label, (at.real + f.real, at.imag + f.imag), color=colour, fontsize=10,
                     textcoords="offset points", xytext=(4, -12))
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.margins(0.12)
+    zs = np.array([complex(z) for z in points.values()])
+    pad = 0.3 * span
+    ax.set_xlim(zs.real.min() - pad, zs.real.max() + pad)
+    ax.set_ylim(zs.imag.min() - pad, zs.imag.max() + pad)
+    ax.set_aspect("equal", adjustable="box")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
     if title:
