@@ -79,11 +79,13 @@ def two_force_member(A, B, rho_a, rho_b, tilt, ax=None, *, title=None):
     return ax
 
 
-def efficiency_curves(angle, curves, ax=None, *, lock_angle=None, lock_label=None, xlabel="angle (degrees)"):
+def efficiency_curves(angle, curves, ax=None, *, lock_angle=None, lock_label=None, xlabel="angle (degrees)",
+                      points=None):
     """Efficiencies against an angle (degrees on the axis), with the self-locking angle marked.
 
     ``curves`` maps a label to an array of efficiencies at ``angle`` (radians). Where a
-    curve crosses zero the motion it describes becomes self-locking.
+    curve crosses zero the motion it describes becomes self-locking. ``points`` maps a label
+    to one ``(angle, eta)`` pair to mark (a design point).
     """
     ax = _axes(ax, (7.0, 3.8))
     deg = np.degrees(np.asarray(angle))
@@ -93,6 +95,9 @@ def efficiency_curves(angle, curves, ax=None, *, lock_angle=None, lock_label=Non
     if lock_angle is not None:
         ax.axvline(np.degrees(lock_angle), color="tab:red", lw=1.0, ls="--",
                    label=lock_label or f"self-locking limit {np.degrees(lock_angle):.3f}°")
+    for label, (at, eta) in (points or {}).items():
+        ax.plot([np.degrees(at)], [eta], "o", color="black", zorder=3)
+        ax.annotate(label, (np.degrees(at), eta), textcoords="offset points", xytext=(8, 6), fontsize=8)
     ax.set_xlim(deg[0], deg[-1])
     ax.set_ylim(-1.0, 1.0)
     ax.set_xlabel(xlabel)
