@@ -237,7 +237,10 @@ def _solve_2_24(p):
                "`ScrewJack(d2, p, μ).solve().efficiency`", latex=r"\tan\lambda/\tan(\lambda+\varphi)"),
         *(Result(f"efficiency ({label})", rr.efficiency, "", "`ScrewJack(..., collar=(D, d0)).solve().efficiency`")
           for label, _, rr in results),
-        Result("self-locking", bool(r.self_locking), "", "reverse efficiency ≤ 0 (λ ≤ φ already for the thread)"),
+        Result("lowering efficiency (run-in collar)", r.reverse_efficiency, "", "`ScrewJack(...).solve().reverse_efficiency`"),
+        Result("self-locking", bool(r.self_locking), "",
+               f"lowering efficiency ≤ 0; the jack holds for λ ≤ {math.degrees(r.lock_angle):.3f}° "
+               f"(the thread alone for λ ≤ φ = {math.degrees(jack.friction_angle):.3f}°)"),
     ), ())
     part2 = Part("(2) Load lifted with F at the handle", tuple(
         Result(f"Q ({label})", F * l / rr.raise_torque, "N", "F l / (torque per newton of load)")

@@ -106,8 +106,8 @@ def friction_angle(mu):
     return _out(np.arctan(_nonnegative("mu", mu)))
 
 
-def total_reaction(normal, velocity, mu):
-    """Unit direction of the total reaction on a sliding body (F2).
+def total_reaction(normal, velocity, mu, normal_force=None):
+    """Total reaction on a sliding body: its direction, or the force itself (F2).
 
     Parameters
     ----------
@@ -117,13 +117,16 @@ def total_reaction(normal, velocity, mu):
         Velocity of that body relative to the other one.
     mu : array_like
         Coefficient of friction, >= 0.
+    normal_force : array_like, optional
+        Magnitude N >= 0 of the normal force. If given, the reaction itself is returned,
+        N n + mu N (against the sliding), of magnitude N sqrt(1 + mu^2) = N / cos(phi).
 
     Returns
     -------
-    direction : complex or ndarray
-        Unit vector of the total reaction: the normal turned by atan(mu) against the
-        tangential part of `velocity`. NaN where the body does not slide (the reaction can
-        then lie anywhere inside the friction cone).
+    reaction : complex or ndarray
+        Unit vector of the total reaction (or the force, with `normal_force`): the normal
+        turned by atan(mu) against the tangential part of `velocity`. NaN where the body
+        does not slide (the reaction can then lie anywhere inside the friction cone).
 
     Raises
     ------
@@ -141,6 +144,8 @@ def total_reaction(normal, velocity, mu):
     >>> d = total_reaction(1j, 1.0, 0.1)       # block sliding right on a floor
     >>> round(float(np.degrees(np.angle(d))), 4)
     95.7106
+    >>> total_reaction(1j, 1.0, 0.1, normal_force=50.0)
+    (-5+50j)
     """
     n = np.asarray(normal, dtype=complex)
     if np.any(n == 0):
@@ -150,7 +155,9 @@ def total_reaction(normal, velocity, mu):
     t = -1j * n                                                  # the tangent, n turned -90 deg
     vt = np.real(np.asarray(velocity, dtype=complex) * np.conj(t))
     sense = np.where(vt > 0, 1.0, np.where(vt < 0, -1.0, np.nan))
-    return _out((n - sense * mu * t) / np.hypot(1.0, mu))
+    if normal_force is None:
+        return _out((n - sense * mu * t) / np.hypot(1.0, mu))
+    return _out(_nonnegative("normal_force", normal_force) * (n - sense * mu * t))
 
 
 def slider_state(alpha, phi):

@@ -48,6 +48,14 @@ def test_total_reaction_resists_motion_at_90_plus_phi():
     np.testing.assert_allclose(np.abs(d), 1.0, atol=1e-14)
 
 
+def test_total_reaction_force_magnitude_is_n_over_cos_phi():
+    R = total_reaction(np.exp(0.3j), 2.0 * np.exp(0.3j - 0.5j * np.pi), 0.25, normal_force=40.0)
+    assert abs(R) == pytest.approx(40.0 / math.cos(math.atan(0.25)), rel=1e-14)
+    # its normal part is N and its tangential part opposes the sliding
+    assert np.real(R * np.conj(np.exp(0.3j))) == pytest.approx(40.0, rel=1e-14)
+    assert np.real(R * np.conj(np.exp(0.3j - 0.5j * np.pi))) == pytest.approx(-10.0, rel=1e-13)
+
+
 def test_total_reaction_no_sliding_is_nan():
     assert np.isnan(total_reaction(1j, 2j, 0.2))                     # velocity along the normal
 
