@@ -215,3 +215,18 @@ def test_precision_pairs_planar_limit():
         errors.append(np.max(np.abs(np.array(design.arcs[:3]) / eps - planar) / planar))
     assert errors[2] < 1e-5
     assert errors[1] < errors[0] / 50 and errors[2] < errors[1] / 50
+
+
+def test_function_generator_fourbar_passes_the_pairs():
+    """The SphericalFourBar handed back by a design meets every precision pair when solved
+    by the four-bar's own (cancellation-free) route, not the synthesis equation."""
+    from mech.spherical import SphericalFourBar
+
+    u = chebyshev_spacing(1.0, 10.0, 4)
+    x, y = np.radians(90.0) * (u - 1.0) / 9.0, np.radians(60.0) * np.log10(u)
+    design = precision_pairs(x, y, theta0=np.radians(-120.0), psi0=np.radians(-70.0))[0]
+    fourbar = design.fourbar
+    assert isinstance(fourbar, SphericalFourBar)
+    psi = fourbar.solve(design.theta0 + x, strict=True).psi
+    miss = np.angle(np.exp(1j * (psi - (design.psi0 + y))))
+    assert np.max(np.abs(miss)) < 1e-10
