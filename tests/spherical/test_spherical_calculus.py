@@ -462,3 +462,34 @@ def test_circle_through_rejects_coincident():
 def test_to_xyz_rejects_nan():
     with pytest.raises(ValueError, match="Expected finite `lat`"):
         to_xyz(0.0, np.nan)
+
+
+# ---------------------------------------------------------------- the book's worked examples
+def _book_example_points():
+    a = to_xyz(np.radians(30), np.radians(50))
+    b = point_at(a, np.radians(40), np.radians(60))
+    return a, b
+
+
+def test_example_1_3_1_to_1_3_3_book_values():
+    """Problems 1.3.1-1.3.3 as worked on book-spherical-calculus (A at lon 30, lat 50 deg;
+    arc AB 40 deg; inclination 60 deg; turn 45 deg), against the placement route at 50 digits."""
+    a, b = _book_example_points()
+    m = placement(mpv(a))
+    s, i = mpmath.radians(40), mpmath.radians(60)
+    ref_b = mvec(m, [mpmath.sin(s) * mpmath.cos(i), mpmath.sin(s) * mpmath.sin(i), mpmath.cos(s)])
+    assert np.allclose(b, [float(x) for x in ref_b], atol=TOL)
+    assert np.degrees(inclination(a, b)) == pytest.approx(60.0, abs=1e-11)
+    i2 = mpmath.radians(105)
+    ref_b2 = mvec(m, [mpmath.sin(s) * mpmath.cos(i2), mpmath.sin(s) * mpmath.sin(i2), mpmath.cos(s)])
+    assert np.allclose(turn(a, b, np.radians(45)), [float(x) for x in ref_b2], atol=TOL)
+
+
+def test_example_1_4_1_and_1_4_2_book_values():
+    """Problems 1.4.1 and 1.4.2 on book-spherical-calculus: gamma 70 deg, arc AC 25 deg."""
+    a, b = _book_example_points()
+    c = triangle_point(a, b, np.radians(70), np.radians(25))
+    s, i = mpmath.radians(25), mpmath.radians(130)
+    ref_c = mvec(placement(mpv(a)), [mpmath.sin(s) * mpmath.cos(i), mpmath.sin(s) * mpmath.sin(i), mpmath.cos(s)])
+    assert np.allclose(c, [float(x) for x in ref_c], atol=1e-12)
+    assert np.degrees(angle_at(a, b, c)) == pytest.approx(70.0, abs=1e-11)
