@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:74c28e9ce6e46f9a79890df33b77658b3c1d8c46597ddcc18e31cc87f8afac6f"
+INPUT_HASH = "sha256:0d892d2ed27ae2b5bcc47553d06f7d027e954a9a1cc2a9ff8c0e5c42eb2f4b4a"
 
 __all__ = ['acute_angle', 'slider_crank_pressure_angle', 'guide_bar_pressure_angle']
 
@@ -83,4 +83,4 @@ def guide_bar_pressure_angle(e, s):
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
-    return np.arctan(e/s)
+    return np.arctan2(abs(e), abs(s))

@@ -350,20 +350,20 @@ def slider_crank_dead_points(a, b, e=0.0, *, branch=1):
 
 
 # ----------------------------------------------------------------------------- toggle presses
-def hand_press(*, lever=25.0, handle=250.0, pivot=95.0 - 50.0j, link2=70.0, link3=50.0, link4=50.0):
+def hand_press(*, lever=25.0, handle=250.0, pivot=70.0 - 75.0j, link2=70.0, link3=50.0, link4=50.0):
     """Hand toggle press of Fig. 2-1d, a Watt six-bar with a ram (dimensions chosen here).
 
     The hand lever ``A B`` (pivot A = `pivot`, handle point H at `handle` behind A) pushes
     the knee C through link 2 ``B C``; link 3 ``D C`` hangs from D = 0 and link 4 ``C E``
     drives the ram E on the vertical guide through D. When D, C and E are collinear
-    (lever angle pi, the ram at the bottom) the ram's force gain is infinite (肘杆机构).
+    (lever angle pi/2, the ram at the bottom) the ram's force gain is infinite (肘杆机构).
 
     Parameters
     ----------
     lever, handle : float
         AB and AH (defaults 25 and 250).
     pivot : complex
-        The lever's pivot A (default 95 - 50j).
+        The lever's pivot A (default 70 - 75j).
     link2, link3, link4 : float
         BC, DC and CE (defaults 70, 50, 50).
 
@@ -371,7 +371,7 @@ def hand_press(*, lever=25.0, handle=250.0, pivot=95.0 - 50.0j, link2=70.0, link
     -------
     Linkage
         Points D, A (ground), B, H, C, E; links lever, link2, link3, link4, ram; driver
-        "lever" (its angle; pi is the toggle).
+        "lever" (its angle; pi/2 is the toggle).
 
     Raises
     ------
@@ -385,7 +385,7 @@ def hand_press(*, lever=25.0, handle=250.0, pivot=95.0 - 50.0j, link2=70.0, link
 
     Examples
     --------
-    >>> sol = hand_press().solve(np.pi, order=1)
+    >>> sol = hand_press().solve(np.pi / 2, order=1)
     >>> complex(sol.points["E"]).imag
     -100.0
     """
