@@ -1,4 +1,5 @@
-"""Textbook exercises with generated solutions and variants (chapter 2: 2-2 to 2-7, 2-10).
+"""Textbook exercises with generated solutions and variants (chapter 2: 2-2 to 2-7, 2-10,
+2-19 to 2-24).
 
 Each exercise is an :class:`Exercise` record: a statement with named givens (the
 textbook's numbers by default), a solver built on :mod:`mech.planar`, and a generator of
@@ -6,7 +7,7 @@ other valid numbers. Solutions render themselves as Markdown.
 
 >>> import mech.exercises as ex
 >>> list(ex.EXERCISES)
-['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10']
+['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24']
 >>> sol = ex.get("2-3").solve()
 >>> round(float(sol["time ratio K"].value), 4)
 1.2299
@@ -52,7 +53,7 @@ def get(number):
     >>> get("2-9")
     Traceback (most recent call last):
     ...
-    ValueError: Expected an exercise number among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, got '2-9'
+    ValueError: Expected an exercise number among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, got '2-9'
     """
     key = str(number).strip()
     if key not in EXERCISES:

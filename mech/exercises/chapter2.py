@@ -13,13 +13,15 @@ of 2-3), ``deriv-fourbar-limit-positions`` and ``deriv-transmission-angle`` (par
 are solved on an assumed layout, stated first in each solution, by the general solver
 `mech.planar.Linkage` over a full crank turn and, for 2-10, by instant centres; they are
 shown on ``book-analysis-exercises``; they live in :mod:`mech.exercises.chapter2_analysis`
-and are collected here. Each solver states its conventions in its solution.
+and are collected here. The force exercises 2-19, 2-20, 2-21, 2-23 and 2-24 live in
+:mod:`mech.exercises.chapter2_forces` (page ``book-forces-exercises``) and 2-22 in
+:mod:`mech.exercises.chapter2_statics` (page ``book-forces-static-forces``). Each solver states its conventions in its solution.
 
 Examples
 --------
 >>> from mech.exercises import chapter2
 >>> [ex.number for ex in chapter2.EXERCISES]
-['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10']
+['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24']
 >>> s = chapter2.EXERCISE_2_2.solve()
 >>> [str(iv) for iv in s["AB for a double-rocker"].value]
 ['(15, 45)', '(55, 115)']
@@ -38,6 +40,8 @@ from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, So
 from mech.planar import FourBar, SliderCrank, grashof
 from mech.planar import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
+from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
+from mech.exercises.chapter2_statics import EXERCISE_2_22
 
 __all__ = [
     "EXERCISE_2_2",
@@ -47,6 +51,12 @@ __all__ = [
     "EXERCISE_2_6",
     "EXERCISE_2_7",
     "EXERCISE_2_10",
+    "EXERCISE_2_19",
+    "EXERCISE_2_20",
+    "EXERCISE_2_21",
+    "EXERCISE_2_22",
+    "EXERCISE_2_23",
+    "EXERCISE_2_24",
     "EXERCISES",
     "merge_intervals",
 ]
@@ -450,4 +460,5 @@ EXERCISE_2_6 = Exercise(
 )
 
 EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7,
-             EXERCISE_2_10)
+             EXERCISE_2_10, EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23,
+             EXERCISE_2_24)

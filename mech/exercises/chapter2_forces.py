@@ -18,9 +18,7 @@ import math
 
 from mech._validate import positive_length
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
-from mech.planar._efficiency import push_rod, spreading_wedge_force
-from mech.planar._friction import friction_angle, rolling_mill_max_thickness, thrust_friction_moment
-from mech.planar._screw import ScrewJack
+from mech.planar import ScrewJack, friction_angle, push_rod, rolling_mill_max_thickness, spreading_wedge_force, thrust_friction_moment
 
 __all__ = ["EXERCISE_2_19", "EXERCISE_2_20", "EXERCISE_2_21", "EXERCISE_2_23", "EXERCISE_2_24", "EXERCISES"]
 

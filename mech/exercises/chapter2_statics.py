@@ -22,8 +22,7 @@ import numpy as np
 
 from mech._validate import positive_length
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
-from mech.planar import Linkage
-from mech.planar._statics import friction_circle_radius, static_forces
+from mech.planar import Linkage, friction_circle, static_forces
 
 __all__ = ["EXERCISE_2_22", "linkage_2_22", "LAYOUT_2_22"]
 
@@ -59,7 +58,7 @@ def linkage_2_22(layout=None):
 def _solve_2_22(p):
     P = positive_length("P", p["P"])
     d_pin = positive_length("d_pin", p["d_pin"])
-    rho = friction_circle_radius(d_pin / 2.0, p["mu0"])
+    rho = friction_circle(p["mu0"], d_pin / 2.0)
     L = LAYOUT_2_22
     lk = linkage_2_22()
     sol = lk.solve(L["theta"], order=1, strict=True)          # lever 1 turns counter-clockwise

@@ -19,7 +19,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import statics as _g
 
-__all__ = ["StaticForces", "static_forces", "as_linkage", "friction_circle_radius", "friction_angle_of"]
+__all__ = ["StaticForces", "static_forces", "as_linkage"]
 
 GROUND = "ground"
 
@@ -31,36 +31,6 @@ def _cross(a, b):
 
 def _re_im(z):
     return np.real(z), np.imag(z)
-
-
-def friction_circle_radius(r, mu0):
-    """Friction-circle radius rho = mu0 r of a revolute pair (eq. 2-19).
-
-    Examples
-    --------
-    >>> friction_circle_radius(12.5, 0.2)
-    2.5
-    """
-    r, mu0 = float(r), float(mu0)
-    if not math.isfinite(r) or r < 0:
-        raise ValueError(f"Expected `r` >= 0, got {r!r}")
-    if not math.isfinite(mu0) or mu0 < 0:
-        raise ValueError(f"Expected `mu0` >= 0, got {mu0!r}")
-    return mu0 * r
-
-
-def friction_angle_of(mu):
-    """Friction angle phi = arctan(mu) of a sliding pair (F2), radians.
-
-    Examples
-    --------
-    >>> round(friction_angle_of(0.1), 12)
-    0.099668652491
-    """
-    mu = float(mu)
-    if not math.isfinite(mu) or mu < 0:
-        raise ValueError(f"Expected `mu` >= 0, got {mu!r}")
-    return math.atan(mu)
 
 
 # ----------------------------------------------------------------------------- conversion

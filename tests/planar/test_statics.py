@@ -9,7 +9,8 @@ import pytest
 from mech import AssemblyError
 from mech.planar import FourBar, Guide, Linkage, SliderCrank
 from mech.planar._library import shaper_watt, stephenson_six_bar, watt_six_bar
-from mech.planar._statics import _pairs, as_linkage, friction_angle_of, friction_circle_radius, static_forces
+from mech.planar._friction import friction_angle, friction_circle
+from mech.planar._statics import _pairs, as_linkage, static_forces
 
 RNG = np.random.default_rng(20261122)
 
@@ -136,7 +137,7 @@ def test_static_forces_reactions_are_antisymmetric():
 
 def test_example_2_14_self_locking_boundary():
     l, r, mu0, mu = 100.0, 10.0, 0.15, 0.2
-    rho = friction_circle_radius(r, mu0)
+    rho = friction_circle(mu0, r)
     x_lock = l * math.sin(math.atan(mu) + math.asin(2 * r * mu0 / l))
     lk = _double_slider(l)
 
@@ -177,7 +178,7 @@ def test_static_forces_friction_circle_tangency_slider_crank():
             normal = np.real(np.conj(1j * p.e) * R)
             np.testing.assert_allclose(along, -np.sign(p.rate) * mu * np.abs(normal), atol=1e-12)
             tilt = np.arctan2(np.abs(along), np.abs(normal))
-            np.testing.assert_allclose(tilt, friction_angle_of(mu), atol=1e-12)
+            np.testing.assert_allclose(tilt, friction_angle(mu), atol=1e-12)
 
 
 def test_static_forces_friction_power_is_the_dissipation():
@@ -235,7 +236,7 @@ def test_static_forces_bad_inputs():
     with pytest.raises(AssemblyError, match=r"index \(1,\)"):
         static_forces(bad, {"C": -1})
     with pytest.raises(ValueError, match="Expected `mu0` >= 0"):
-        friction_circle_radius(10, -0.1)
+        friction_circle(-0.1, 10)
 
 
 def test_as_linkage_matches_fourbar_and_slider_crank():
