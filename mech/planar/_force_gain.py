@@ -413,7 +413,7 @@ def jaw_crusher(*, crank=12.0, pitman=250.0, toggle_back=90.0, toggle_front=90.0
     crank, pitman, toggle_back, toggle_front, jaw : float
         AB (the eccentricity), BC, CD, CE and FE (defaults 12, 250, 90, 90, 300).
     back_pivot, jaw_pivot : complex
-        D and F (defaults 88 - 268j and -100 + 32j): the plates open to about 175 degrees.
+        D and F (defaults 88 - 268j and -100 + 32j): the plates open to about 172 degrees.
 
     Returns
     -------

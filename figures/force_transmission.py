@@ -1,0 +1,106 @@
+"""Figures of pressure and transmission angles and force gain (``book/forces/transmission.md``).
+
+Plain plotting functions: they take a `Linkage` with its `LinkageSolution`, or arrays
+computed by ``mech``, and Matplotlib axes (new ones when None), and return the axes.
+Nothing is computed or drawn at import.
+"""
+
+import numpy as np
+
+__all__ = ["angle_at_joint", "angle_curves", "gain_curves"]
+
+
+def _axes(ax, size=(5.0, 4.0)):
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        _, ax = plt.subplots(figsize=size)
+    return ax
+
+
+def angle_at_joint(ax, linkage, solution, index, *, joint, force_from, arm_from, gamma, scale=None):
+    """Draw a pose with the force line, the joint's velocity and the transmission angle.
+
+    Parameters
+    ----------
+    linkage, solution : the linkage and its solution (order >= 1).
+    index : int
+        Which pose.
+    joint, force_from, arm_from : str
+        The joint J, the other pin of the two-force coupler (force along it -> J), and the
+        follower's pivot (the arm pivot -> J).
+    gamma : float
+        The transmission angle at this pose, radians (written in the legend).
+    """
+    from figures.linkages import draw_linkage
+
+    ax = _axes(ax)
+    draw_linkage(ax, linkage, solution, index)
+    P = {k: complex(np.asarray(v)[index]) for k, v in solution.points.items()}
+    J, K, F = P[joint], P[force_from], P[arm_from]
+    v = complex(np.asarray(solution.velocities[joint])[index])
+    L = scale or 0.45 * abs(J - F)
+    u = (J - K) / abs(J - K)
+    ax.annotate("", xy=((J + L * u).real, (J + L * u).imag),
+                xytext=(J.real, J.imag), arrowprops=dict(arrowstyle="-|>", color="tab:red", lw=1.8))
+    w = v / abs(v) * L
+    ax.annotate("", xy=((J + w).real, (J + w).imag), xytext=(J.real, J.imag),
+                arrowprops=dict(arrowstyle="-|>", color="tab:blue", lw=1.8))
+    # arc of gamma between the force line and the arm line at J
+    arm = (J - F) / abs(J - F)
+    a0, a1 = np.angle(u), np.angle(arm)
+    for ref in (arm, -arm):
+        d = np.angle(ref / u)
+        if abs(abs(d) - gamma) < 1e-6:
+            a1 = a0 + d
+            break
+    t = np.linspace(a0, a1, 40)
+    r = 0.3 * L
+    ax.plot(J.real + r * np.cos(t), J.imag + r * np.sin(t), color="tab:green", lw=1.5)
+    ax.plot([J.real, J.real - L * arm.real * 0.6], [J.imag, J.imag - L * arm.imag * 0.6], ":", color="grey")
+    ax.plot([], [], color="tab:red", label="force F (along the coupler)")
+    ax.plot([], [], color="tab:blue", label="velocity v")
+    ax.plot([], [], color="tab:green", label=f"γ = {np.degrees(gamma):.1f}°, α = {90 - np.degrees(gamma):.1f}°")
+    ax.legend(loc="best", fontsize=8)
+    ax.set_aspect("equal")
+    return ax
+
+
+def angle_curves(ax, x, curves, *, minima=(), limits=(40.0, 50.0), xlabel="crank angle θ (deg)"):
+    """Angles in degrees against `x` (radians, shown in degrees), with minima and limits.
+
+    ``curves``: mapping label -> angle array (radians); ``minima``: (x, angle, label)
+    triples in radians; ``limits``: horizontal design lines in degrees (F51).
+    """
+    ax = _axes(ax, (6.0, 3.6))
+    xd = np.degrees(x)
+    for label, y in curves.items():
+        ax.plot(xd, np.degrees(y), label=label)
+    for xm, ym, label in minima:
+        ax.plot(np.degrees(xm), np.degrees(ym), "o", color="black")
+        ax.annotate(label, (np.degrees(xm), np.degrees(ym)), textcoords="offset points", xytext=(6, -12),
+                    fontsize=8)
+    for lim in limits:
+        ax.axhline(lim, color="grey", ls="--", lw=0.8)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("angle (deg)")
+    ax.set_ylim(0, 92)
+    ax.legend(fontsize=8, loc="lower right")
+    ax.grid(alpha=0.3)
+    return ax
+
+
+def gain_curves(ax, x, curves, *, xlabel, ylabel="|mechanical advantage|", log=True, marks=()):
+    """Absolute force gain against `x`, on a log axis by default; `marks` are vertical lines."""
+    ax = _axes(ax, (6.0, 3.6))
+    for label, y in curves.items():
+        ax.plot(x, np.abs(y), label=label)
+    for xm in marks:
+        ax.axvline(xm, color="grey", ls=":", lw=1.0)
+    if log:
+        ax.set_yscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, which="both")
+    return ax
