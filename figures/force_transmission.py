@@ -58,6 +58,10 @@ def angle_at_joint(ax, linkage, solution, index, *, joint, force_from, arm_from,
     r = 0.3 * L
     ax.plot(J.real + r * np.cos(t), J.imag + r * np.sin(t), color="tab:green", lw=1.5)
     ax.plot([J.real, J.real - L * arm.real * 0.6], [J.imag, J.imag - L * arm.imag * 0.6], ":", color="grey")
+    ends = np.array([J + L * u, J + w, J - 0.6 * L * arm])
+    ax.plot(ends.real, ends.imag, ls="none")                  # let the limits include the arrows
+    ax.relim()
+    ax.autoscale_view()
     ax.plot([], [], color="tab:red", label="force F (along the coupler)")
     ax.plot([], [], color="tab:blue", label="velocity v")
     ax.plot([], [], color="tab:green", label=f"γ = {np.degrees(gamma):.1f}°, α = {90 - np.degrees(gamma):.1f}°")
