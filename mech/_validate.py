@@ -2,7 +2,7 @@
 
 import numpy as np
 
-__all__ = ["positive_length", "real_number", "finite_array", "branch_sign", "nonnegative_int"]
+__all__ = ["positive_length", "real_number", "finite_array", "arc", "arc_array", "branch_sign", "nonnegative_int"]
 
 
 def _show(value):
@@ -38,6 +38,23 @@ def finite_array(name, value):
     if not np.all(np.isfinite(arr)):
         bad = float(arr[~np.isfinite(arr)].ravel()[0])
         raise ValueError(f"Expected finite `{name}`, got {bad!r}")
+    return arr
+
+
+def arc(name, value):
+    """Return ``value`` as a float after checking that it is an arc in (0, pi) (a sphere)."""
+    x = real_number(name, value)
+    if not 0.0 < x < np.pi:
+        raise ValueError(f"Expected `{name}` in (0, pi), got {x!r}")
+    return x
+
+
+def arc_array(name, value):
+    """Return ``value`` as a float array after checking that every entry is in (0, pi)."""
+    arr = finite_array(name, value)
+    bad = (arr <= 0.0) | (arr >= np.pi)
+    if np.any(bad):
+        raise ValueError(f"Expected `{name}` in (0, pi), got {float(arr[bad].ravel()[0])!r}")
     return arr
 
 

@@ -5,7 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
 from mech._pose import Pose
-from mech._validate import branch_sign, finite_array, nonnegative_int, real_number
+from mech._validate import arc as _arc, branch_sign, finite_array, nonnegative_int, real_number
 from mech.spatial import AssemblyRange
 
 __all__ = ["SphericalFourBar", "SphericalFourBarPose", "ground_frame"]
@@ -16,14 +16,6 @@ _VECTORS = {0: ("B", "C", "P"),
             2: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP",
                 "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}
 _SCALARS = {0: ("psi",), 1: ("psi", "omega_output"), 2: ("psi", "omega_output", "alpha_output")}
-
-
-def _arc(name, value):
-    """Return `value` as a float after checking that it is an arc in (0, pi)."""
-    x = real_number(name, value)
-    if not 0.0 < x < np.pi:
-        raise ValueError(f"Expected `{name}` in (0, pi), got {x!r}")
-    return x
 
 
 def _rotation(frame, tol=1e-9):

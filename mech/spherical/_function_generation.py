@@ -12,7 +12,7 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
-from mech._validate import finite_array, positive_length, real_number
+from mech._validate import arc as _arc, finite_array, real_number
 
 __all__ = [
     "FunctionGenerator",
@@ -29,13 +29,6 @@ _DENSE = 721          # samples of the input range for the limit-position check
 def _wrap(angle):
     """Angle wrapped to (-pi, pi]."""
     return np.arctan2(np.sin(angle), np.cos(angle))
-
-
-def _arc(name, value):
-    x = positive_length(name, value)
-    if not x < np.pi:
-        raise ValueError(f"Expected `{name}` < pi, got {x!r}")
-    return x
 
 
 def _simulate(arcs, theta, branch):

@@ -23,7 +23,7 @@ from types import MappingProxyType
 import numpy as np
 
 from mech._generated import spherical_polygons as _gen
-from mech._validate import finite_array
+from mech._validate import arc_array as _arcs, finite_array
 
 __all__ = [
     "chain_components",
@@ -40,14 +40,6 @@ __all__ = [
 
 _CHAINS = {m: getattr(_gen, f"spherical_chain_{m}") for m in range(1, 7)}
 _FAMILIES = ("sine", "sine-cosine", "cosine")
-
-
-def _arcs(name, value):
-    arr = finite_array(name, value)
-    bad = (arr <= 0.0) | (arr >= np.pi)
-    if np.any(bad):
-        raise ValueError(f"Expected `{name}` in (0, pi), got {float(arr[bad].ravel()[0])!r}")
-    return arr
 
 
 def _polygon_arrays(arcs, angles):

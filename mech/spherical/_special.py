@@ -15,10 +15,9 @@ from mech._generated.spherical_types import (
     isogram_ratios,
     spherical_slider_limits,
 )
-from mech._validate import branch_sign, finite_array, real_number
+from mech._validate import arc as _arc, branch_sign, finite_array, real_number
 from mech.planar import time_ratio
 from mech.spherical._fourbar import SphericalFourBar
-from mech.spherical._types import _arc
 
 __all__ = [
     "universal_joint",

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated.spherical_types import spherical_type_slacks
-from mech._validate import real_number
+from mech._validate import arc as _arc, real_number
 
 __all__ = ["SphericalType", "classify", "inversions", "antipode_reduction"]
 
@@ -34,13 +34,6 @@ class SphericalType:
     longest: str
     meeting_angles: tuple
     slacks: tuple
-
-
-def _arc(name, value):
-    x = real_number(name, value)
-    if not 0.0 < x < np.pi:
-        raise ValueError(f"Expected `{name}` in (0, pi), got {x!r}")
-    return x
 
 
 def antipode_reduction(a, b, c, d):
@@ -193,7 +186,6 @@ def classify(a, b, c, d, *, tol=1e-12):
     meeting = tuple(angle for angle, product in ((0.0, signs[0] * signs[1]), (np.pi, signs[2] * signs[3]))
                     if product == 0)
     order = np.argsort(reduced, kind="stable")
-    s, l = reduced[order[0]], reduced[order[-1]]
     return SphericalType(
         kind=_kind(revolving, ("A", "D")),
         grashof=bool(revolving),

@@ -82,9 +82,9 @@ def test_arcs_from_coefficients_no_linkage():
 
 
 def test_freudenstein_coefficients_bad_arc():
-    with pytest.raises(ValueError, match="Expected `c` < pi"):
+    with pytest.raises(ValueError, match=r"Expected `c` in \(0, pi\), got 3.5"):
         freudenstein_coefficients(0.4, 0.9, 3.5, 1.0)
-    with pytest.raises(ValueError, match="Expected `a` > 0"):
+    with pytest.raises(ValueError, match=r"Expected `a` in \(0, pi\), got -0.4"):
         freudenstein_coefficients(-0.4, 0.9, 0.5, 1.0)
 
 
