@@ -30,13 +30,15 @@ def kinds_gallery(poses, titles, *, elev=35.0, azim=-60.0):
     """One small globe per kind: `poses` is a list of (A, B, C, D) unit vectors."""
     import matplotlib.pyplot as plt
 
-    fig = plt.figure(figsize=(3.0 * len(poses), 3.4))
+    columns = min(3, len(poses))
+    rows = -(-len(poses) // columns)
+    fig = plt.figure(figsize=(3.6 * columns, 3.6 * rows))
     for i, ((A, B, C, D), title) in enumerate(zip(poses, titles)):
-        ax = fig.add_subplot(1, len(poses), i + 1, projection="3d")
+        ax = fig.add_subplot(rows, columns, i + 1, projection="3d")
         sphere.globe(ax, meridians=8, parallels=4)
         draw_linkage(ax, A, B, C, D)
         sphere.finish(ax, elev=elev, azim=azim)
-        ax.set_title(title, fontsize=9)
+        ax.set_title(title, fontsize=10)
     fig.tight_layout()
     return fig
 
