@@ -20,6 +20,7 @@ from mech.spherical._circles import (
     intersect,
 )
 from mech.spherical._coordinates import distance, distance_lonlat, from_xyz, local_frame, to_xyz
+from mech.spherical._dual import Dual, dual
 from mech.spherical._fourbar import SphericalFourBar, SphericalFourBarPose, ground_frame
 from mech.spherical._function_generation import (
     FunctionGenerator,
@@ -62,11 +63,13 @@ from mech.spherical._special import (
     spherical_slider_crank,
     universal_joint,
 )
+from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
 __all__ = [
     "Circle",
     "Collinearity",
+    "Dual",
     "FunctionGenerator",
     "Intersection",
     "PolygonRelations",
@@ -92,6 +95,9 @@ __all__ = [
     "distance",
     "distance_lonlat",
     "distance_to_great_circle",
+    "dual",
+    "dual_fourbar_joints",
+    "dual_fourbar_output",
     "freudenstein_coefficients",
     "from_xyz",
     "great_circle_at",
@@ -111,6 +117,7 @@ __all__ = [
     "precision_pairs",
     "rotate_about",
     "rotation_matrix",
+    "rssr_from_transference",
     "sine_cosine_law",
     "sine_law",
     "slider_crank_stroke",
