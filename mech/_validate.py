@@ -2,7 +2,7 @@
 
 import numpy as np
 
-__all__ = ["positive_length", "real_number", "finite_array", "arc", "arc_array", "branch_sign", "nonnegative_int"]
+__all__ = ["positive_length", "real_number", "finite_array", "arc", "arc_array", "branch_sign", "nonnegative_int", "motion_inputs"]
 
 
 def _show(value):
@@ -70,3 +70,20 @@ def nonnegative_int(name, value, maximum):
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= value <= maximum:
         raise ValueError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
     return int(value)
+
+
+def motion_inputs(name, angle, order, omega, alpha):
+    """Check a driver's angle and the rates an order needs; broadcast them together.
+
+    Returns ``(order, shape, arrays)``: the checked order (0, 1 or 2), the common shape and
+    the broadcast read-only arrays ``[angle]``, ``[angle, omega]`` or
+    ``[angle, omega, alpha]`` (the rates a lower order does not need are not checked).
+    """
+    order = nonnegative_int("order", order, 2)
+    inputs = [finite_array(name, angle)]
+    if order >= 1:
+        inputs.append(finite_array("omega", omega))
+    if order >= 2:
+        inputs.append(finite_array("alpha", alpha))
+    shape = np.broadcast_shapes(*(x.shape for x in inputs))
+    return order, shape, [np.broadcast_to(x, shape) for x in inputs]

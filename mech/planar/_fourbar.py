@@ -4,7 +4,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
-from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
+from mech._validate import branch_sign, motion_inputs, positive_length
 from mech._pose import Pose
 
 __all__ = ["FourBar", "FourBarPose"]
@@ -183,15 +183,8 @@ class FourBar:
         >>> pose.valid.tolist(), pose.aP.shape
         ([True, True], (2,))
         """
-        order = nonnegative_int("order", order, 2)
-        theta = finite_array("theta", theta)
-        inputs = [theta]
-        if order >= 1:
-            inputs.append(finite_array("omega", omega))
-        if order >= 2:
-            inputs.append(finite_array("alpha", alpha))
-        shape = np.broadcast_shapes(*(x.shape for x in inputs))
-        flat = [np.broadcast_to(x, shape).reshape(-1) for x in inputs]
+        order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
+        flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size
         out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float)
                for name in _FIELDS[: _FIELD_COUNT[order]]}

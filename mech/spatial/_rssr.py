@@ -7,7 +7,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import rssr as _gen
-from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
+from mech._validate import branch_sign, finite_array, motion_inputs, positive_length, real_number
 from mech._pose import Pose
 
 __all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
@@ -240,15 +240,7 @@ class RSSR:
         >>> pose.valid.tolist(), pose.aC.shape
         ([True, True], (2, 3))
         """
-        order = nonnegative_int("order", order, 2)
-        phi01 = finite_array("phi01", phi01)
-        inputs = [phi01]
-        if order >= 1:
-            inputs.append(finite_array("omega", omega))
-        if order >= 2:
-            inputs.append(finite_array("alpha", alpha))
-        shape = np.broadcast_shapes(*(x.shape for x in inputs))
-        phi01, *rates = (np.broadcast_to(x, shape) for x in inputs)
+        order, shape, (phi01, *rates) = motion_inputs("phi01", phi01, order, omega, alpha)
         l1, l2, l3, s0, s3, h0, lam = dims = self._dims()
         sigma = self._branch
         A, B, C, disc = self._coefficients(phi01)

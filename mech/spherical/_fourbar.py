@@ -5,7 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
 from mech._pose import Pose
-from mech._validate import arc as _arc, branch_sign, finite_array, nonnegative_int, real_number
+from mech._validate import arc as _arc, branch_sign, motion_inputs, nonnegative_int, real_number
 from mech.spatial import AssemblyRange
 
 __all__ = ["SphericalFourBar", "SphericalFourBarPose", "ground_frame"]
@@ -215,15 +215,8 @@ class SphericalFourBar:
         >>> pose.valid.tolist(), pose.aP.shape
         ([True, True], (2, 3))
         """
-        order = nonnegative_int("order", order, 2)
-        theta = finite_array("theta", theta)
-        inputs = [theta]
-        if order >= 1:
-            inputs.append(finite_array("omega", omega))
-        if order >= 2:
-            inputs.append(finite_array("alpha", alpha))
-        shape = np.broadcast_shapes(*(x.shape for x in inputs))
-        flat = [np.broadcast_to(x, shape).reshape(-1) for x in inputs]
+        order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
+        flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size
         out = {name: np.empty((size, 3)) for name in _VECTORS[order]}
         out.update({name: np.empty(size) for name in _SCALARS[order]})
