@@ -332,7 +332,10 @@ def _coefficients(pairs, value, kind, what):
             raise ValueError(f"Expected `{what}` keys among {sorted(names, key=str)}, got {unknown[0]!r}")
         table = dict(value)
     else:
-        table = {n: value for n in names}
+        v = float(value)
+        if not math.isfinite(v) or v < 0:       # checked even where no pair of this kind exists
+            raise ValueError(f"Expected `{what}` >= 0, got {v!r}")
+        table = {n: v for n in names}
     out = {}
     for k, v in table.items():
         v = float(v)

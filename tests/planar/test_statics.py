@@ -258,3 +258,9 @@ def test_exercise_2_22_virtual_work_and_friction():
     assert 0.85 * q0 < s["Q with friction"].value < q0
     assert s["friction-circle radius"].value == 2.5
     assert EXERCISE_2_22.solve(mu0=0.0)["Q with friction"].value == pytest.approx(q0, rel=1e-12)
+
+
+def test_static_forces_negative_mu_without_sliding_pairs():
+    sol = as_linkage(FourBar(1, 3, 2.5, 3)).solve(0.5, order=1)
+    with pytest.raises(ValueError, match="Expected `mu` >= 0, got -0.2"):
+        static_forces(sol, {"C": -10}, mu=-0.2)
