@@ -13,9 +13,9 @@ Subpackages are imported on first use, so ``import mech`` stays light:
 
 import importlib as _importlib
 
-from mech._errors import AssemblyError
+from mech._errors import AssemblyError, InputTypeError
 
-__all__ = ["AssemblyError", "exercises", "planar", "spatial", "spherical"]
+__all__ = ["AssemblyError", "InputTypeError", "exercises", "planar", "spatial", "spherical"]
 __version__ = "0.1.0"
 
 _SUBPACKAGES = {"exercises", "planar", "spatial", "spherical"}

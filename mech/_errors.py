@@ -1,6 +1,6 @@
 """Exceptions shared by every part of the package."""
 
-__all__ = ["AssemblyError"]
+__all__ = ["AssemblyError", "InputTypeError"]
 
 
 class AssemblyError(ValueError):
@@ -8,4 +8,12 @@ class AssemblyError(ValueError):
 
     Raised by ``solve(..., strict=True)``; the message names the first failing input.
     Without ``strict``, such inputs give NaN and ``valid == False`` instead.
+    """
+
+
+class InputTypeError(TypeError, ValueError):
+    """An argument has the wrong type: complex, boolean, string, ``None`` or another object.
+
+    It is both a ``TypeError`` and a ``ValueError``, so ``except ValueError`` still catches
+    every bad input. The message names the argument and shows the value.
     """

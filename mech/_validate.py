@@ -1,44 +1,125 @@
-"""Input checks that raise ``ValueError("Expected X, got Y")`` naming the argument."""
+"""The package's one input layer: checks that raise ``"Expected X, got Y"`` naming the argument.
+
+Every public function sends its numeric arguments through these checks. They accept real
+numbers only: Python ints and floats, NumPy integer and floating scalars and arrays, and
+sequences of those. They reject, naming the argument and showing the value:
+
+- complex numbers and complex arrays (casting would silently drop the imaginary part);
+- booleans (``True`` is not a length), strings, bytes, ``None`` and other objects;
+- NaN and infinities (unless a caller explicitly allows them);
+- a wrong shape where a shape is fixed.
+
+A wrong *type* raises :class:`mech.InputTypeError`, which is both a ``TypeError`` and a
+``ValueError``; a wrong *value* raises ``ValueError``. So ``except ValueError`` catches every
+bad input, and ``except TypeError`` catches exactly the wrong types.
+"""
+
+import numbers
 
 import numpy as np
 
-__all__ = ["positive_length", "real_number", "finite_array", "arc", "arc_array", "branch_sign", "nonnegative_int", "motion_inputs"]
+from mech._errors import InputTypeError
+
+__all__ = [
+    "positive_length",
+    "real_number",
+    "real_array",
+    "finite_array",
+    "arc",
+    "arc_array",
+    "branch_sign",
+    "nonnegative_int",
+    "motion_inputs",
+    "vector3",
+    "bool_flag",
+]
 
 
 def _show(value):
-    arr = np.asarray(value)
-    return repr(arr.item()) if arr.ndim == 0 else np.array2string(arr, threshold=6)
-
-
-def positive_length(name, value):
-    """Return ``value`` as a float after checking that it is finite and > 0."""
+    """A short, safe text of ``value`` for an error message."""
     try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"Expected `{name}` to be a real number, got {value!r}") from None
-    if not np.isfinite(x) or x <= 0.0:
-        raise ValueError(f"Expected `{name}` > 0, got {x!r}")
-    return x
+        arr = np.asarray(value)
+    except Exception:  # pragma: no cover - objects that refuse even to be wrapped
+        return repr(value)[:80]
+    if arr.dtype.kind in "biufc" and arr.ndim == 0:
+        return repr(arr.item())
+    if arr.dtype.kind in "biufc":
+        return np.array2string(arr, threshold=6)
+    text = repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def _kind_name(arr):
+    return {"b": "boolean", "c": "complex", "U": "string", "S": "bytes", "O": "object",
+            "M": "datetime", "m": "timedelta", "V": "structured"}.get(arr.dtype.kind, str(arr.dtype))
+
+
+def _first_bad_object(arr):
+    for item in arr.ravel():
+        if isinstance(item, (bool, np.bool_)) or not isinstance(item, numbers.Real):
+            return item
+    return None
+
+
+def real_array(name, value, *, finite=True):
+    """Return ``value`` as a float array after checking that it holds real numbers only.
+
+    Rejects booleans, complex numbers, strings, ``None`` and other objects with an
+    :class:`~mech.InputTypeError`, and (with ``finite=True``) NaN and infinities with a
+    ``ValueError``; every message names the argument ``name`` and shows the bad value.
+    """
+    if value is None or isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
+        raise InputTypeError(f"Expected `{name}` to be a real number, got {value!r}")
+    try:
+        arr = np.asarray(value)
+    except Exception as exc:
+        raise InputTypeError(f"Expected `{name}` to be real numbers, got {_show(value)} ({exc})") from None
+    kind = arr.dtype.kind
+    if kind == "O":
+        bad = _first_bad_object(arr)
+        if bad is not None or arr.size == 0 and arr.ndim == 0:
+            raise InputTypeError(f"Expected `{name}` to be real numbers, got {bad!r} in {_show(value)}")
+        try:
+            arr = arr.astype(float)
+        except (TypeError, ValueError, OverflowError):
+            raise InputTypeError(f"Expected `{name}` to be real numbers, got {_show(value)}") from None
+    elif kind not in "iuf":
+        raise InputTypeError(
+            f"Expected `{name}` to be real numbers, got a {_kind_name(arr)} value {_show(value)}"
+        )
+    arr = np.asarray(arr, dtype=float)
+    if finite and not np.all(np.isfinite(arr)):
+        bad = float(arr[~np.isfinite(arr)].ravel()[0])
+        raise ValueError(f"Expected finite `{name}`, got {bad!r}")
+    return arr
+
+
+def finite_array(name, value):
+    """Return ``value`` as a float array after checking that it holds finite real numbers."""
+    return real_array(name, value, finite=True)
+
+
+def _scalar(name, value):
+    arr = real_array(name, value, finite=False)
+    if arr.ndim != 0:
+        raise ValueError(f"Expected `{name}` to be a single number, got shape {arr.shape}: {_show(value)}")
+    return float(arr)
 
 
 def real_number(name, value):
-    """Return ``value`` as a float after checking that it is a finite real number."""
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"Expected `{name}` to be a real number, got {value!r}") from None
+    """Return ``value`` as a float after checking that it is one finite real number."""
+    x = _scalar(name, value)
     if not np.isfinite(x):
         raise ValueError(f"Expected finite `{name}`, got {x!r}")
     return x
 
 
-def finite_array(name, value):
-    """Return ``value`` as a float array after checking that every entry is finite."""
-    arr = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(arr)):
-        bad = float(arr[~np.isfinite(arr)].ravel()[0])
-        raise ValueError(f"Expected finite `{name}`, got {bad!r}")
-    return arr
+def positive_length(name, value):
+    """Return ``value`` as a float after checking that it is finite and > 0."""
+    x = _scalar(name, value)
+    if not (np.isfinite(x) and x > 0.0):
+        raise ValueError(f"Expected `{name}` > 0, got {x!r}")
+    return x
 
 
 def arc(name, value):
@@ -58,18 +139,34 @@ def arc_array(name, value):
     return arr
 
 
+def vector3(name, value):
+    """Return ``value`` as a float array of shape ``(..., 3)`` with finite entries."""
+    arr = finite_array(name, value)
+    if arr.ndim == 0 or arr.shape[-1] != 3:
+        raise ValueError(f"Expected `{name}` of shape (..., 3), got shape {arr.shape}")
+    return arr
+
+
 def branch_sign(value, name="branch"):
     """Return ``value`` as the int +1 or -1."""
-    if value not in (1, -1) or isinstance(value, bool):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, numbers.Real)) \
+            or value not in (1, -1):
         raise ValueError(f"Expected `{name}` to be +1 or -1, got {value!r}")
     return int(value)
 
 
 def nonnegative_int(name, value, maximum):
     """Return ``value`` as an int in ``[0, maximum]``."""
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= value <= maximum:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) or not 0 <= value <= maximum:
         raise ValueError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
     return int(value)
+
+
+def bool_flag(name, value):
+    """Return ``value`` as a bool after checking that it is ``True`` or ``False``."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise InputTypeError(f"Expected `{name}` to be True or False, got {value!r}")
+    return bool(value)
 
 
 def motion_inputs(name, angle, order, omega, alpha):
@@ -85,5 +182,9 @@ def motion_inputs(name, angle, order, omega, alpha):
         inputs.append(finite_array("omega", omega))
     if order >= 2:
         inputs.append(finite_array("alpha", alpha))
-    shape = np.broadcast_shapes(*(x.shape for x in inputs))
+    try:
+        shape = np.broadcast_shapes(*(x.shape for x in inputs))
+    except ValueError:
+        shapes = ", ".join(f"`{n}` {x.shape}" for n, x in zip((name, "omega", "alpha"), inputs))
+        raise ValueError(f"Expected shapes that broadcast together, got {shapes}") from None
     return order, shape, [np.broadcast_to(x, shape) for x in inputs]
