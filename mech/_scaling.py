@@ -11,7 +11,9 @@ same linkage given in millimetres differ only by the rounding of their inputs.
 
 import math
 
-__all__ = ["length_scale"]
+import numpy as np
+
+__all__ = ["length_scale", "length_scale_array"]
 
 
 def length_scale(*lengths):
@@ -30,3 +32,17 @@ def length_scale(*lengths):
         return 1.0
     # frexp gives biggest = m * 2**e with m in [0.5, 1)
     return math.ldexp(1.0, math.frexp(biggest)[1] - 1)
+
+
+def length_scale_array(*lengths):
+    """`length_scale` element by element over broadcast arrays of finite lengths.
+
+    Examples
+    --------
+    >>> from mech._scaling import length_scale_array
+    >>> length_scale_array([3.0, 0.0, 1e-300], 0.5).tolist()
+    [2.0, 0.5, 0.5]
+    """
+    biggest = np.maximum.reduce([np.abs(np.asarray(x, dtype=float)) for x in np.broadcast_arrays(*lengths)])
+    exponent = np.frexp(biggest)[1] - 1
+    return np.where(biggest == 0.0, 1.0, np.ldexp(1.0, exponent))

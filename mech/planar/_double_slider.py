@@ -257,7 +257,9 @@ class TangentMechanism:
     Notes
     -----
     The bar meets the guide unless it is parallel to it, ``cos(theta) = 0``; only there
-    is the pose NaN with ``valid == False``. Derivation: :ref:`deriv-special-mechanisms`.
+    is the pose NaN with ``valid == False``. All outputs are linear in `L`, so angles do not
+    depend on the unit of length; a slide beyond the largest float reads ``inf``.
+    Derivation: :ref:`deriv-special-mechanisms`.
 
     Examples
     --------
@@ -287,7 +289,9 @@ class TangentMechanism:
         if strict and not np.all(valid):
             first = float(theta[~valid].ravel()[0])
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {first!r}: the bar is parallel to the guide")
-        with np.errstate(divide="ignore", invalid="ignore"):
+        # near cos(theta) = 0 a huge L makes h overflow to inf: the true slide is beyond
+        # the floating-point range, so inf is its correctly rounded value
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             h = _gen.tangent_position(self._L, theta)
             fields = {"theta": theta, "valid": valid, "h": h, "S": self._L + 1j * h}
             if order >= 1:
