@@ -38,9 +38,10 @@ class RSSRPose(Pose):
     alpha_output, aB, aC : ndarray
         d2 phi03/dt2 and the pin accelerations; present when solved with ``order >= 2``.
     rates_valid : ndarray of bool
-        With ``order >= 1``: False where the pose does not assemble or is a limit
-        position (the rates are infinite there); ``omega_output, vC, alpha_output, aC``
-        are NaN exactly there.
+        With ``order >= 1``: False where the pose does not assemble or where
+        A^2 + B^2 = C^2 (a limit position, or a pose where the two branches touch): the
+        rocker's rates are infinite or undetermined there, and ``omega_output, vC,
+        alpha_output, aC`` are NaN exactly where this mask is False.
     """
 
     _ORDER_OF = {"omega_output": 1, "vB": 1, "vC": 1, "rates_valid": 1,
@@ -249,8 +250,9 @@ class RSSR:
         Notes
         -----
         See :ref:`deriv-rssr`. Rates are unbounded at the limit positions
-        (A^2 + B^2 = C^2): the pose is valid there, but ``rates_valid`` is False and the
-        rates of the rocker and its pin are NaN (the crank pin's stay finite). The
+        (A^2 + B^2 = C^2): the pose is valid there (``strict`` does not raise), but
+        ``rates_valid`` is False and the rates of the rocker and its pin are NaN (the
+        crank pin's stay finite); ``valid`` concerns positions, ``rates_valid`` rates. The
         formulas run on the lengths and offsets divided by a power of two near the
         largest (`mech._scaling`): angles do not depend on the unit of length, and points
         and linear rates scale exactly with it.
@@ -281,21 +283,22 @@ class RSSR:
         else:
             with np.errstate(invalid="ignore", divide="ignore"):
                 fields["P"] = _stack(*_gen.rssr_coupler_point(Bx, By, Bz, Cx, Cy, Cz, l2, lam, p, q, u))
-        if order >= 1:
-            omega = rates[0]
-            dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega, rates[1] if order >= 2 else 0.0)
-            with np.errstate(invalid="ignore", divide="ignore"):
+        # at a limit position the root vanishes and the rates are infinite: they are
+        # masked below by mask_singular_rates
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            if order >= 1:
+                omega = rates[0]
+                dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega, rates[1] if order >= 2 else 0.0)
                 w3 = np.where(valid, _abc.abc_rate(dA, dB, dC, phi03, root, sigma), np.nan)
-            fields["omega_output"] = w3[()]
-            fields["vB"], fields["vC"] = (_stack(*v) for v in np.split(
-                np.array(np.broadcast_arrays(*_gen.rssr_velocity(l1, l3, lam, phi01, phi03, omega, w3))), 2))
-        if order >= 2:
-            alpha = rates[1]
-            with np.errstate(invalid="ignore", divide="ignore"):
+                fields["omega_output"] = w3[()]
+                fields["vB"], fields["vC"] = (_stack(*v) for v in np.split(
+                    np.array(np.broadcast_arrays(*_gen.rssr_velocity(l1, l3, lam, phi01, phi03, omega, w3))), 2))
+            if order >= 2:
+                alpha = rates[1]
                 a3 = np.where(valid, _abc.abc_accel(C, dA, dB, ddA, ddB, ddC, phi03, w3, root, sigma), np.nan)
-            fields["alpha_output"] = a3[()]
-            fields["aB"], fields["aC"] = (_stack(*v) for v in np.split(np.array(np.broadcast_arrays(
-                *_gen.rssr_acceleration(l1, l3, lam, phi01, phi03, omega, w3, alpha, a3))), 2))
+                fields["alpha_output"] = a3[()]
+                fields["aB"], fields["aC"] = (_stack(*v) for v in np.split(np.array(np.broadcast_arrays(
+                    *_gen.rssr_acceleration(l1, l3, lam, phi01, phi03, omega, w3, alpha, a3))), 2))
         for name in _LINEAR.intersection(fields):
             fields[name] = fields[name] * self._scale
         if order >= 1:
