@@ -21,6 +21,8 @@ import numpy as np
 import pytest
 
 from mech.planar import GuideBar, SliderCrank
+from mech.planar._force_gain import slider_crank_dead_points, slider_crank_mechanical_advantage
+from mech.planar._pressure_angle import slider_crank_min_transmission_angle, slider_crank_pressure_angle
 from mech.planar._double_slider import EllipticTrammel, OldhamCoupling, ScotchYoke, TangentMechanism
 from mech.planar._library import _triangle
 from mech.planar._special import RotatingGuideBar, SwingingBlock
@@ -181,6 +183,26 @@ def test_length_helpers_scale_invariance(scale):
     corner = _quiet(_triangle, 41.5 * scale, 40.1 * scale, 55.8 * scale, 1, "b-d-e")
     want = _triangle(41.5, 40.1, 55.8, 1, "b-d-e")
     assert abs(corner / scale - want) <= RTOL * abs(want)
+
+
+@pytest.mark.parametrize("scale", SCALES)
+def test_slider_crank_functions_scale_invariance(scale):
+    """The free functions on slider-crank dimensions: angles unchanged, the mechanical
+    advantage (force over torque, 1 / length) divided by the scale, dead points times it."""
+    dims, scaled = (30.0, 100.0, 20.0), (30.0 * scale, 100.0 * scale, 20.0 * scale)
+    np.testing.assert_allclose(_quiet(slider_crank_pressure_angle, *scaled, THETA),
+                               slider_crank_pressure_angle(*dims, THETA), rtol=0, atol=RTOL)
+    assert _quiet(slider_crank_min_transmission_angle, *scaled)[0] == pytest.approx(
+        slider_crank_min_transmission_angle(*dims)[0], rel=RTOL)
+    # the advantage has poles at the limit positions: compare where it is below 1 / mm
+    # (30 times its smallest magnitude), where its condition number is modest
+    want = slider_crank_mechanical_advantage(*dims, THETA)
+    keep = np.abs(want) < 1.0
+    assert keep.sum() > 600
+    np.testing.assert_allclose(_quiet(slider_crank_mechanical_advantage, *scaled, THETA)[keep] * scale,
+                               want[keep], rtol=RTOL)
+    np.testing.assert_allclose(np.array(_quiet(slider_crank_dead_points, *scaled).inputs) / scale,
+                               slider_crank_dead_points(*dims).inputs, rtol=RTOL)
 
 
 def test_length_scale_is_a_power_of_two_near_the_longest():
