@@ -14,6 +14,9 @@ from mech._scaling import length_scale
 __all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
 
 
+# smallest l1 l3 / D**2 (D: the largest dimension) for which A, B, C of (2-71) and their
+# squares are finite floats
+_MIN_L1_L3 = 2.0 ** -500
 # fields that scale with the unit of length, and the rates found from the loop equation
 _LINEAR = frozenset({"B", "C", "P", "vB", "vC", "aB", "aC"})
 _SOLVED_RATES = ("omega_output", "vC", "alpha_output", "aC")
@@ -144,6 +147,16 @@ class RSSR:
         self._unit = tuple(x / self._scale for x in
                            (self._l1, self._l2, self._l3, self._s0, self._s3, self._h0)) + (self._lam,)
         self._unit_coupler = tuple(x / self._scale for x in self._coupler)
+        # (2-71) is divided by l1 l3: with both far below the other dimensions its
+        # coefficients, and their squares, would overflow
+        l1, _, l3 = self._unit[:3]
+        if l1 * l3 < _MIN_L1_L3:
+            largest = max(abs(x) for x in (self._l1, self._l2, self._l3, self._s0, self._s3, self._h0))
+            raise ValueError(
+                f"Expected `l1` * `l3` >= 2**-500 * {largest!r}**2 (the largest length or offset, "
+                f"squared) so that the coefficients of (2-71) stay finite, got `l1` = {self._l1!r}, "
+                f"`l3` = {self._l3!r}"
+            )
 
     l1 = property(lambda self: self._l1, doc="Crank length AB.")
     l2 = property(lambda self: self._l2, doc="Coupler length BC.")
@@ -348,6 +361,8 @@ class RSSR:
         if len(merged) > 1 and abs(merged[-1][1] - 2 * np.pi - merged[0][0]) < 1e-9:
             merged[0] = (merged[-1][0], merged[0][1] + 2 * np.pi)
             merged.pop()
+        if not merged:                              # it assembles at isolated angles at most
+            return AssemblyRange(np.empty((0, 2)), False)
         if len(merged) == 1 and merged[0][1] - merged[0][0] > 2 * np.pi - 1e-9:
             return AssemblyRange(np.empty((0, 2)), True)
         out = np.array([(s - 2 * np.pi * np.floor((s + np.pi) / (2 * np.pi)), 0.0) for s, _ in merged])

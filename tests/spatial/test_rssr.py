@@ -319,3 +319,25 @@ def test_solve_limit_position_rates_masked():
     for name in ("omega_output", "vC", "alpha_output", "aC"):
         assert np.isnan(getattr(pose, name)[0]).all(), name
     assert np.isfinite(pose.vB[0]).all() and np.isfinite(pose.aB[0]).all()
+
+
+def test_rssr_crank_and_rocker_too_small_for_the_coefficients():
+    """(2-71) is divided by l1 l3: below 2**-500 of the largest dimension squared its
+    coefficients would overflow, so the constructor names the short link instead."""
+    with pytest.raises(ValueError, match=r"Expected `l1` \* `l3` >= 2\*\*-500.*got `l1` = 1e-160"):
+        RSSR(1e-160, 2.0, 1.0, 0.3, 0.2, 2.0, 0.5)
+    with pytest.raises(ValueError, match=r"`l3` = 1e-100"):
+        RSSR(1e-100, 2.0, 1e-100, 0.3, 0.2, 2.0, 0.5)
+    # just inside the bound everything is finite and quiet, over a full turn
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for dims in [(2.0**-498, 2.0, 1.0, 0.3, 0.2, 2.0, 0.5), (1.0, 2.0, 2.0**-498, 0.3, 0.2, 2.0, 0.5)]:
+            rssr = RSSR(*dims)
+            pose = rssr.solve(np.linspace(-np.pi, np.pi, 61), order=2, omega=1.5, alpha=0.5)
+            assert pose.valid.all() and pose.rates_valid.all() and rssr.assembly_range().full_turn
+
+
+def test_assembly_range_nowhere_assembled():
+    """Links that meet at most at isolated angles: an empty range, not an IndexError."""
+    rng = RSSR(2.0**-249, 2.0, 2.0**-249, 0.3, 0.2, 2.0, 0.5).assembly_range()
+    assert rng.intervals.shape == (0, 2) and not rng.full_turn
