@@ -4,7 +4,7 @@ import numpy as np
 
 from mech._generated import slider_crank as _gen
 from mech._validate import finite_array, nonnegative_int, positive_length
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
 from mech._scaling import length_scale
 
 __all__ = ["GuideBar", "GuideBarPose"]
@@ -12,6 +12,7 @@ __all__ = ["GuideBar", "GuideBarPose"]
 
 # fields that scale with the unit of length
 _LINEAR = frozenset({"rho", "B", "v_slide", "vB", "a_slide", "aB"})
+_SOLVED_RATES = ("omega_guide", "v_slide", "alpha_guide", "a_slide")
 
 
 class GuideBarPose(Pose):
@@ -29,9 +30,13 @@ class GuideBarPose(Pose):
         With ``order >= 1``: d psi/dt, d rho/dt and the velocity of B.
     alpha_guide, a_slide, aB : ndarray
         With ``order >= 2``: the second derivatives and the acceleration of B.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: all True (the guide-bar has no dead point for a driving
+        crank); present for the common rule of `mech._pose.Pose`.
     """
 
-    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "alpha_guide": 2, "a_slide": 2, "aB": 2}
+    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "rates_valid": 1,
+                 "alpha_guide": 2, "a_slide": 2, "aB": 2}
 
 
 class GuideBar:
@@ -155,6 +160,8 @@ class GuideBar:
         shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
         fields = {k: np.array(np.broadcast_to(v, shape))[()] for k, v in fields.items()}
         fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        if order >= 1:
+            mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
         return GuideBarPose(order, fields)
 
     def swing(self):

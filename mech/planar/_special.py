@@ -10,7 +10,7 @@ import numpy as np
 from mech._generated import special_mechanisms as _gen
 from mech._validate import finite_array, nonnegative_int, positive_length
 from mech.planar._guide_bar import GuideBar
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
 from mech._scaling import length_scale
 
 __all__ = ["RotatingGuideBar", "RotatingGuideBarPose", "SwingingBlock"]
@@ -51,9 +51,13 @@ class RotatingGuideBarPose(Pose):
         With ``order >= 1``: d psi/dt, d rho/dt and the velocity of B.
     alpha_guide, a_slide, aB : ndarray
         With ``order >= 2``: the second derivatives and the acceleration of B.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: all True (no dead point for a driving crank); present for
+        the common rule of `mech._pose.Pose`.
     """
 
-    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "alpha_guide": 2, "a_slide": 2, "aB": 2}
+    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "rates_valid": 1,
+                 "alpha_guide": 2, "a_slide": 2, "aB": 2}
 
 
 class RotatingGuideBar:
@@ -166,6 +170,8 @@ class RotatingGuideBar:
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
         fields = _finish(fields)
         fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        if order >= 1:
+            mask_singular_rates(fields, ("omega_guide", "v_slide", "alpha_guide", "a_slide")[: 2 * order])
         return RotatingGuideBarPose(order, fields)
 
     def guide_turns_per_crank_turn(self):
