@@ -5,7 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import special_mechanisms as _gen
 from mech._validate import finite_array, positive_length, real_number
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
 from mech.planar._special import _finish, _inputs
 
 __all__ = [
@@ -18,6 +18,13 @@ __all__ = [
     "OldhamCoupling",
     "OldhamPose",
 ]
+
+
+def _rates_mask(order, fields, pose_class):
+    """Add ``rates_valid`` (the rule of `mech._pose.Pose`) over every rate of the pose."""
+    if order >= 1:
+        mask_singular_rates(fields, [k for k in pose_class._ORDER_OF if k in fields])
+    return fields
 
 
 class TrammelPose(Pose):
@@ -36,9 +43,11 @@ class TrammelPose(Pose):
         With ``order >= 1``; ``omega_coupler = -omega``.
     aB, aC, aP, alpha_coupler : ndarray
         With ``order >= 2``.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: all True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"vB": 1, "vC": 1, "vP": 1, "omega_coupler": 1,
+    _ORDER_OF = {"vB": 1, "vC": 1, "vP": 1, "omega_coupler": 1, "rates_valid": 1,
                  "aB": 2, "aC": 2, "aP": 2, "alpha_coupler": 2}
 
 
@@ -149,7 +158,7 @@ class EllipticTrammel:
         if order >= 2:
             fields.update(zip(("aB", "aC", "aP", "alpha_coupler"),
                               _gen.trammel_acceleration(*args, omega, alpha)))
-        return TrammelPose(order, _finish(fields))
+        return TrammelPose(order, _rates_mask(order, _finish(fields), TrammelPose))
 
     def path_axes(self):
         """Semi-axes (major, minor) of the ellipse traced by the coupler point.
@@ -167,9 +176,9 @@ class EllipticTrammel:
 
 class ScotchYokePose(Pose):
     """Poses of a sine mechanism (from `ScotchYoke.solve`): ``theta, valid, x, B``;
-    ``v`` with ``order >= 1``; ``acc`` with ``order >= 2``."""
+    ``v`` and ``rates_valid`` (all True) with ``order >= 1``; ``acc`` with ``order >= 2``."""
 
-    _ORDER_OF = {"v": 1, "acc": 2}
+    _ORDER_OF = {"v": 1, "rates_valid": 1, "acc": 2}
 
 
 class ScotchYoke:
@@ -224,7 +233,7 @@ class ScotchYoke:
             fields["v"] = _gen.scotch_yoke_velocity(self._a, theta, omega)
         if order >= 2:
             fields["acc"] = _gen.scotch_yoke_acceleration(self._a, theta, omega, alpha)
-        return ScotchYokePose(order, _finish(fields))
+        return ScotchYokePose(order, _rates_mask(order, _finish(fields), ScotchYokePose))
 
     def stroke(self):
         """Stroke 2a (F22)."""
@@ -233,9 +242,10 @@ class ScotchYoke:
 
 class TangentPose(Pose):
     """Poses of a tangent mechanism (from `TangentMechanism.solve`): ``theta, valid, h, S``;
-    ``v`` with ``order >= 1``; ``acc`` with ``order >= 2``."""
+    ``v`` and ``rates_valid`` with ``order >= 1`` (False where `valid` is, or where a rate
+    overflows; the rates are NaN exactly there); ``acc`` with ``order >= 2``."""
 
-    _ORDER_OF = {"v": 1, "acc": 2}
+    _ORDER_OF = {"v": 1, "rates_valid": 1, "acc": 2}
 
 
 class TangentMechanism:
@@ -257,7 +267,9 @@ class TangentMechanism:
     Notes
     -----
     The bar meets the guide unless it is parallel to it, ``cos(theta) = 0``; only there
-    is the pose NaN with ``valid == False``. Derivation: :ref:`deriv-special-mechanisms`.
+    is the pose NaN with ``valid == False``. All outputs are linear in `L`, so angles do not
+    depend on the unit of length; a slide beyond the largest float reads ``inf``.
+    Derivation: :ref:`deriv-special-mechanisms`.
 
     Examples
     --------
@@ -287,7 +299,9 @@ class TangentMechanism:
         if strict and not np.all(valid):
             first = float(theta[~valid].ravel()[0])
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {first!r}: the bar is parallel to the guide")
-        with np.errstate(divide="ignore", invalid="ignore"):
+        # near cos(theta) = 0 a huge L makes h overflow to inf: the true slide is beyond
+        # the floating-point range, so inf is its correctly rounded value
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             h = _gen.tangent_position(self._L, theta)
             fields = {"theta": theta, "valid": valid, "h": h, "S": self._L + 1j * h}
             if order >= 1:
@@ -299,7 +313,7 @@ class TangentMechanism:
             if name in fields:
                 nan = np.nan + 1j * np.nan if name == "S" else np.nan
                 fields[name] = np.where(fields["valid"], fields[name], nan)[()]
-        return TangentPose(order, fields)
+        return TangentPose(order, _rates_mask(order, fields, TangentPose))
 
 
 class OldhamPose(Pose):
@@ -321,9 +335,11 @@ class OldhamPose(Pose):
         With ``order >= 1``: ``omega_orbit = 2 omega``, the others ``omega``.
     aS, alpha_orbit, alpha_slider, alpha_output : ndarray
         With ``order >= 2``.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: all True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"vS": 1, "omega_orbit": 1, "omega_slider": 1, "omega_output": 1,
+    _ORDER_OF = {"vS": 1, "omega_orbit": 1, "omega_slider": 1, "omega_output": 1, "rates_valid": 1,
                  "aS": 2, "alpha_orbit": 2, "alpha_slider": 2, "alpha_output": 2}
 
 
@@ -386,7 +402,7 @@ class OldhamCoupling:
         if order >= 2:
             aS, a_orbit = _gen.oldham_acceleration(self._e0, theta, omega, alpha)
             fields.update(aS=aS, alpha_orbit=a_orbit, alpha_slider=alpha, alpha_output=alpha)
-        return OldhamPose(order, _finish(fields))
+        return OldhamPose(order, _rates_mask(order, _finish(fields), OldhamPose))
 
     def inertia_force(self, m, omega):
         """Magnitude of the cross-slider's rotating inertia force, ``m (e0/2)(2 omega)^2``.

@@ -4,9 +4,15 @@ import numpy as np
 
 from mech._generated import slider_crank as _gen
 from mech._validate import finite_array, nonnegative_int, positive_length
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
+from mech._scaling import length_scale
 
 __all__ = ["GuideBar", "GuideBarPose"]
+
+
+# fields that scale with the unit of length
+_LINEAR = frozenset({"rho", "B", "v_slide", "vB", "a_slide", "aB"})
+_SOLVED_RATES = ("omega_guide", "v_slide", "alpha_guide", "a_slide")
 
 
 class GuideBarPose(Pose):
@@ -24,9 +30,13 @@ class GuideBarPose(Pose):
         With ``order >= 1``: d psi/dt, d rho/dt and the velocity of B.
     alpha_guide, a_slide, aB : ndarray
         With ``order >= 2``: the second derivatives and the acceleration of B.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: all True (the guide-bar has no dead point for a driving
+        crank); present for the common rule of `mech._pose.Pose`.
     """
 
-    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "alpha_guide": 2, "a_slide": 2, "aB": 2}
+    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "rates_valid": 1,
+                 "alpha_guide": 2, "a_slide": 2, "aB": 2}
 
 
 class GuideBar:
@@ -53,7 +63,9 @@ class GuideBar:
     -----
     Formulas from :ref:`deriv-slider-crank` (section on the guide-bar). At the guide's
     limit positions the crank is perpendicular to the guide, so the extreme angle equals
-    the swing (F23) and ``sin(swing / 2) = a / d``.
+    the swing (F23) and ``sin(swing / 2) = a / d``. The formulas run on the lengths
+    divided by a power of two near `d` (`mech._scaling`): angles do not depend on the
+    unit of length, and lengths and linear rates scale exactly with it.
 
     Examples
     --------
@@ -71,6 +83,9 @@ class GuideBar:
             raise ValueError(
                 f"Expected `a` < `d` = {self._d!r} for an oscillating guide, got {self._a!r}"
             )
+        self._scale = length_scale(self._a, self._d)
+        # the generated formulas see lengths of order one only (see mech._scaling)
+        self._unit = (self._a / self._scale, self._d / self._scale)
 
     a = property(lambda self: self._a, doc="Crank length AB.")
     d = property(lambda self: self._d, doc="Frame length AD.")
@@ -132,18 +147,21 @@ class GuideBar:
         """
         order = nonnegative_int("order", order, 2)
         theta = finite_array("theta", theta)
-        psi, rho, B = _gen.guide_bar_position(self._a, self._d, theta)
+        psi, rho, B = _gen.guide_bar_position(*self._unit, theta)
         fields = {"theta": theta, "valid": np.ones(theta.shape, dtype=bool), "psi": psi, "rho": rho, "B": B}
         if order >= 1:
             omega = finite_array("omega", omega)
-            wg, vs, vB = _gen.guide_bar_velocity(self._a, self._d, theta, omega)
+            wg, vs, vB = _gen.guide_bar_velocity(*self._unit, theta, omega)
             fields.update(omega_guide=wg, v_slide=vs, vB=vB)
         if order >= 2:
             alpha = finite_array("alpha", alpha)
-            ag, as_, aB = _gen.guide_bar_acceleration(self._a, self._d, theta, omega, alpha)
+            ag, as_, aB = _gen.guide_bar_acceleration(*self._unit, theta, omega, alpha)
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
         shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
         fields = {k: np.array(np.broadcast_to(v, shape))[()] for k, v in fields.items()}
+        fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        if order >= 1:
+            mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
         return GuideBarPose(order, fields)
 
     def swing(self):
@@ -154,7 +172,7 @@ class GuideBar:
         >>> round(float(np.degrees(GuideBar(150.0, 300.0).swing())), 9)
         60.0
         """
-        return float(_gen.guide_bar_swing(self._a, self._d)[0])
+        return float(_gen.guide_bar_swing(*self._unit)[0])
 
     def extreme_angle(self):
         """Extreme angle (极位夹角) of the crank; it equals the swing (F23).
@@ -184,4 +202,4 @@ class GuideBar:
         >>> GuideBar(150.0, 300.0).min_guide_length()
         450.0
         """
-        return float(_gen.guide_bar_swing(self._a, self._d)[1])
+        return float(_gen.guide_bar_swing(*self._unit)[1]) * self._scale

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._scaling import length_scale
 from mech._validate import positive_length
 from mech.planar._linkage import Guide, Linkage
 
@@ -43,11 +44,14 @@ JANSEN_HOLY_NUMBERS = {
 
 def _triangle(base, r1, r2, side, what):
     """Local coordinates of X with |OX| = r1, |PX| = r2, O = 0, P = base, X left if side > 0."""
-    x = (base * base + r1 * r1 - r2 * r2) / (2.0 * base)
-    h2 = (r1 - x) * (r1 + x)
+    # squares of the sides divided by a power of two cannot overflow or underflow
+    unit = length_scale(base, r1, r2)
+    b, p, q = base / unit, r1 / unit, r2 / unit
+    x = (b * b + p * p - q * q) / (2.0 * b)
+    h2 = (p - x) * (p + x)
     if not h2 > 0.0:
         raise ValueError(f"Expected the sides of {what} to form a triangle, got {base!r}, {r1!r}, {r2!r}")
-    return complex(x, math.copysign(math.sqrt(h2), side))
+    return complex(x * unit, math.copysign(math.sqrt(h2) * unit, side))
 
 
 def _lengths(**kw):

@@ -13,6 +13,7 @@ import numpy as np
 
 from mech._generated import pressure_angle as _g
 from mech._generated.transmission_angle import fourbar_transmission
+from mech._scaling import length_scale
 from mech._validate import finite_array, positive_length, real_number
 from mech.planar._grashof import grashof
 
@@ -307,8 +308,9 @@ def slider_crank_pressure_angle(a, b, e, theta):
     a, b = positive_length("a", a), positive_length("b", b)
     e = real_number("e", e)
     theta = finite_array("theta", theta)
+    unit = length_scale(a, b, e)         # an angle: the same in any unit of length
     with np.errstate(invalid="ignore"):
-        return _float(_g.slider_crank_pressure_angle(a, b, e, theta))
+        return _float(_g.slider_crank_pressure_angle(a / unit, b / unit, e / unit, theta))
 
 
 def slider_crank_min_transmission_angle(a, b, e=0.0):
@@ -350,7 +352,9 @@ def slider_crank_min_transmission_angle(a, b, e=0.0):
         raise ValueError(f"Expected `a` + |`e`| <= `b` = {b!r} so that the crank turns fully, "
                          f"got a + |e| = {a + abs(e)!r}")
     theta_at = np.pi / 2 if e < 0 else -np.pi / 2
-    return float(np.pi / 2 - _g.slider_crank_pressure_angle(a, b, e, theta_at)), float(theta_at)
+    unit = length_scale(a, b, e)         # an angle: the same in any unit of length
+    alpha = _g.slider_crank_pressure_angle(a / unit, b / unit, e / unit, theta_at)
+    return float(np.pi / 2 - alpha), float(theta_at)
 
 
 def guide_bar_pressure_angle(s, e=0.0):

@@ -8,7 +8,8 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
+from mech._scaling import length_scale
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
 
@@ -29,9 +30,13 @@ class SliderCrankPose(Pose):
     acc, alpha_coupler, aB : ndarray
         With ``order >= 2``: slider acceleration, rod angular acceleration, acceleration
         of B.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: False where the pose does not assemble or is a dead point;
+        ``v, omega_coupler, acc, alpha_coupler`` are NaN exactly there.
     """
 
-    _ORDER_OF = {"v": 1, "omega_coupler": 1, "vB": 1, "acc": 2, "alpha_coupler": 2, "aB": 2}
+    _ORDER_OF = {"v": 1, "omega_coupler": 1, "vB": 1, "rates_valid": 1,
+                 "acc": 2, "alpha_coupler": 2, "aB": 2}
 
 
 @dataclass(frozen=True)
@@ -59,6 +64,11 @@ class SliderCrankSeries(NamedTuple):
     v: np.ndarray
     acc: np.ndarray
     cos_phi: np.ndarray
+
+
+# fields that scale with the unit of length, and the rates found from the loop equations
+_LINEAR = frozenset({"x", "B", "C", "v", "vB", "acc", "aB"})
+_SOLVED_RATES = ("omega_coupler", "v", "alpha_coupler", "acc")
 
 
 def _float(value):
@@ -95,7 +105,9 @@ class SliderCrank:
     free of cancellation up to the dead points. The crank turns fully when
     ``b >= a + |e|``; otherwise it rocks between two dead points (``|s| = b``), where the
     branches meet, the rod is perpendicular to the guide and the rates are infinite;
-    beyond them the pose is NaN with ``valid == False``.
+    beyond them the pose is NaN with ``valid == False``. The formulas run on the lengths
+    divided by a power of two near the longest (`mech._scaling`), so any finite positive
+    lengths give the same angles, and lengths and linear rates scale exactly with them.
 
     Examples
     --------
@@ -112,6 +124,9 @@ class SliderCrank:
         self._b = positive_length("b", b)
         self._e = real_number("e", e)
         self._branch = branch_sign(branch)
+        self._scale = length_scale(self._a, self._b, self._e)
+        # the generated formulas see lengths of order one only (see mech._scaling)
+        self._unit = (self._a / self._scale, self._b / self._scale, self._e / self._scale)
         if self._b < abs(self._e) - self._a:
             raise ValueError(
                 f"Expected `b` >= |e| - a = {abs(self._e) - self._a!r} so that the rod reaches "
@@ -126,7 +141,8 @@ class SliderCrank:
     @property
     def crank_turns(self):
         """True if the crank turns fully, ``b >= a + |e|``."""
-        return self._b >= self._a + abs(self._e)
+        a, b, e = self._unit
+        return b >= a + abs(e)
 
     def __repr__(self):
         return f"SliderCrank(a={self._a!r}, b={self._b!r}, e={self._e!r}, branch={self._branch})"
@@ -154,7 +170,7 @@ class SliderCrank:
         -------
         SliderCrankPose
             Fields ``B, C, x, phi, valid`` of the broadcast shape; with ``order >= 1``
-            also ``v, omega_coupler, vB``; with ``order >= 2`` also
+            also ``v, omega_coupler, vB, rates_valid``; with ``order >= 2`` also
             ``acc, alpha_coupler, aB``. Nothing above `order` is computed.
 
         Raises
@@ -167,8 +183,13 @@ class SliderCrank:
 
         Notes
         -----
-        At a dead point of a rocking crank (``|a sin(theta) - e| = b``) the position is
-        valid and exact but the rates are infinite (``inf`` or NaN).
+        At a dead point of a rocking crank (``|a sin(theta) - e| = b``) the position
+        exists and is exact, so ``valid`` is True (and ``strict`` does not raise), but the
+        velocity equations are singular: the rates are infinite (undetermined when
+        ``omega = 0``). There ``rates_valid`` is False and ``v, omega_coupler, acc,
+        alpha_coupler`` are NaN; ``vB`` and ``aB``, set by the crank alone, stay finite.
+        Near a dead point the rates are finite and grow like the inverse square root of
+        the distance to it. ``valid`` concerns positions, ``rates_valid`` rates.
 
         Examples
         --------
@@ -182,7 +203,7 @@ class SliderCrank:
         """
         order = nonnegative_int("order", order, 2)
         theta = finite_array("theta", theta)
-        args = (self._a, self._b, self._e)
+        args = self._unit
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             x, phi, B, C = _gen.slider_crank_position(*args, theta, self._branch)
         # the generated root is NaN exactly where the rod cannot reach the guide
@@ -209,7 +230,11 @@ class SliderCrank:
             if name not in ("theta", "valid", "B", "vB", "aB"):
                 nan = np.nan + 1j * np.nan if np.iscomplexobj(value) else np.nan
                 value = np.where(np.broadcast_to(valid, shape), value, nan)
+            if name in _LINEAR:
+                value = value * self._scale
             fields[name] = np.array(value)[()]
+        if order >= 1:
+            mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
         return SliderCrankPose(order, fields)
 
     def _require_turning(self, what):
@@ -254,7 +279,9 @@ class SliderCrank:
         from mech.planar._quick_return import time_ratio
 
         self._require_turning("limit positions")
-        out = [float(v) for v in _gen.slider_crank_limits(self._a, self._b, self._e, self._branch)]
+        out = [float(v) for v in _gen.slider_crank_limits(*self._unit, self._branch)]
+        for k in (2, 3, 4):               # x_extended, x_folded, stroke are lengths
+            out[k] *= self._scale
         return SliderCrankLimits(*out, time_ratio=float(time_ratio(out[-1])))
 
     def stroke(self):
@@ -268,7 +295,7 @@ class SliderCrank:
         60.0
         """
         self._require_turning("the stroke")
-        return float(_gen.slider_crank_limits(self._a, self._b, self._e, self._branch)[4])
+        return float(_gen.slider_crank_limits(*self._unit, self._branch)[4]) * self._scale
 
     def extreme_angle(self):
         """Extreme angle theta_0 (极位夹角, F31): ``asin(|e|/(b-a)) - asin(|e|/(b+a))``.
@@ -282,7 +309,7 @@ class SliderCrank:
         7.75167
         """
         self._require_turning("the extreme angle")
-        return float(_gen.slider_crank_limits(self._a, self._b, self._e, self._branch)[5])
+        return float(_gen.slider_crank_limits(*self._unit, self._branch)[5])
 
     def time_ratio(self):
         """Time ratio K = (pi + theta_0) / (pi - theta_0) of eq. (2-9).
@@ -310,7 +337,7 @@ class SliderCrank:
         """
         theta = finite_array("theta", theta)
         with np.errstate(invalid="ignore"):
-            return _float(_gen.slider_crank_transmission(self._a, self._b, self._e, theta))
+            return _float(_gen.slider_crank_transmission(*self._unit, theta))
 
     def min_transmission_angle(self):
         """Minimum transmission angle and the crank angle where it occurs (F57).
@@ -327,7 +354,7 @@ class SliderCrank:
         (60.0, -90.0)
         """
         self._require_turning("the minimum transmission angle")
-        gamma_min = float(_gen.slider_crank_min_transmission(self._a, self._b, self._e))
+        gamma_min = float(_gen.slider_crank_min_transmission(*self._unit))
         return gamma_min, (np.pi / 2 if self._e < 0 else -np.pi / 2)
 
     def approximate(self, theta, omega=1.0):
@@ -359,6 +386,8 @@ class SliderCrank:
             )
         theta = finite_array("theta", theta)
         omega = finite_array("omega", omega)
-        out = _gen.slider_crank_series(self._a, self._a / self._b, theta, omega)
+        a, b, _ = self._unit
+        x, v, acc, cos_phi = _gen.slider_crank_series(a, a / b, theta, omega)
         shape = np.broadcast_shapes(theta.shape, omega.shape)
+        out = (x * self._scale, v * self._scale, acc * self._scale, cos_phi)
         return SliderCrankSeries(*(np.array(np.broadcast_to(v, shape))[()] for v in out))

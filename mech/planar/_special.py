@@ -10,7 +10,8 @@ import numpy as np
 from mech._generated import special_mechanisms as _gen
 from mech._validate import finite_array, nonnegative_int, positive_length
 from mech.planar._guide_bar import GuideBar
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
+from mech._scaling import length_scale
 
 __all__ = ["RotatingGuideBar", "RotatingGuideBarPose", "SwingingBlock"]
 
@@ -27,6 +28,10 @@ def _inputs(order, theta, omega, alpha):
     omega = finite_array("omega", omega) if order >= 1 else omega
     alpha = finite_array("alpha", alpha) if order >= 2 else alpha
     return order, theta, omega, alpha
+
+
+# fields of the guide-bar poses that scale with the unit of length
+_LINEAR = frozenset({"rho", "B", "v_slide", "vB", "a_slide", "aB"})
 
 
 class RotatingGuideBarPose(Pose):
@@ -46,9 +51,13 @@ class RotatingGuideBarPose(Pose):
         With ``order >= 1``: d psi/dt, d rho/dt and the velocity of B.
     alpha_guide, a_slide, aB : ndarray
         With ``order >= 2``: the second derivatives and the acceleration of B.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: all True (no dead point for a driving crank); present for
+        the common rule of `mech._pose.Pose`.
     """
 
-    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "alpha_guide": 2, "a_slide": 2, "aB": 2}
+    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "rates_valid": 1,
+                 "alpha_guide": 2, "a_slide": 2, "aB": 2}
 
 
 class RotatingGuideBar:
@@ -77,7 +86,9 @@ class RotatingGuideBar:
     ``psi(theta + 2 pi) = psi(theta) + 2 pi``. For ``a == d`` (Fig. 2-58) the guide turns
     at exactly half the crank speed, ``psi = pi/2 + theta/2`` (F50, phi1 = 2 phi3), and the
     block passes through D at ``theta = 0 (mod 2 pi)``; the two cases are chosen by the
-    exact comparison ``a == d``.
+    exact comparison ``a == d``. The formulas run on the lengths divided by a power of two
+    near `a` (`mech._scaling`): angles do not depend on the unit of length, and lengths
+    and linear rates scale exactly with it.
 
     Examples
     --------
@@ -95,6 +106,9 @@ class RotatingGuideBar:
         self._d = positive_length("d", d)
         if self._a < self._d:
             raise ValueError(f"Expected `a` >= `d` = {self._d!r} for a rotating guide, got {self._a!r}")
+        self._scale = length_scale(self._a, self._d)
+        # the generated formulas see lengths of order one only (see mech._scaling)
+        self._unit = (self._a / self._scale, self._d / self._scale)
 
     a = property(lambda self: self._a, doc="Crank length AB.")
     d = property(lambda self: self._d, doc="Frame length AD.")
@@ -135,25 +149,30 @@ class RotatingGuideBar:
         (0.0, 1.0, 2.0)
         """
         order, theta, omega, alpha = _inputs(order, theta, omega, alpha)
-        equal = self._a == self._d
+        a, d = self._unit
+        equal = a == d
         if equal:
-            psi, rho, B = _gen.equal_guide_bar_position(self._a, theta)
+            psi, rho, B = _gen.equal_guide_bar_position(a, theta)
         else:
-            psi, rho, B = _gen.rotating_guide_bar_position(self._a, self._d, theta)
+            psi, rho, B = _gen.rotating_guide_bar_position(a, d, theta)
         fields = {"theta": theta, "valid": np.ones(np.shape(theta), dtype=bool), "psi": psi, "rho": rho, "B": B}
         if order >= 1:
             if equal:
-                wg, vs, vB = _gen.equal_guide_bar_velocity(self._a, theta, omega)
+                wg, vs, vB = _gen.equal_guide_bar_velocity(a, theta, omega)
             else:
-                wg, vs, vB = _gen.rotating_guide_bar_velocity(self._a, self._d, theta, omega)
+                wg, vs, vB = _gen.rotating_guide_bar_velocity(a, d, theta, omega)
             fields.update(omega_guide=wg, v_slide=vs, vB=vB)
         if order >= 2:
             if equal:
-                ag, as_, aB = _gen.equal_guide_bar_acceleration(self._a, theta, omega, alpha)
+                ag, as_, aB = _gen.equal_guide_bar_acceleration(a, theta, omega, alpha)
             else:
-                ag, as_, aB = _gen.rotating_guide_bar_acceleration(self._a, self._d, theta, omega, alpha)
+                ag, as_, aB = _gen.rotating_guide_bar_acceleration(a, d, theta, omega, alpha)
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
-        return RotatingGuideBarPose(order, _finish(fields))
+        fields = _finish(fields)
+        fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        if order >= 1:
+            mask_singular_rates(fields, ("omega_guide", "v_slide", "alpha_guide", "a_slide")[: 2 * order])
+        return RotatingGuideBarPose(order, fields)
 
     def guide_turns_per_crank_turn(self):
         """Turns of the guide per crank turn: 1 for ``a > d``, 1/2 for ``a == d`` (F50).

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._errors import AssemblyError
+from mech._scaling import length_scale
 from mech._validate import finite_array, positive_length
 
 __all__ = ["TriadPose", "TriadSixBar"]
@@ -88,7 +89,9 @@ class TriadSixBar:
     ``|C - B|^2 = b^2``, ``|D - G|^2 = g^2``, ``|E - F|^2 = f^2`` with
     ``D = C + cd exp(i phi_3)``, ``E = C + ce exp(i (phi_3 + angle))``. The assembly mode
     is the one Newton's method reaches from the starting pose; along an array of input
-    angles each solution starts the next. Used on the page :ref:`book-instant-centres`.
+    angles each solution starts the next. Newton's method runs on the lengths and pivots
+    divided by a power of two near the largest (`mech._scaling`), so angles do not depend
+    on the unit of length. Used on the page :ref:`book-instant-centres`.
 
     Examples
     --------
@@ -105,23 +108,29 @@ class TriadSixBar:
             positive_length(n, v) for n, v in zip(("a", "b", "cd", "ce", "g", "f"), (a, b, cd, ce, g, f)))
         self.angle = float(finite_array("angle", angle))
         self.G, self.F = _complex_point("G", G), _complex_point("F", F)
+        self._scale = length_scale(self.a, self.b, self.cd, self.ce, self.g, self.f,
+                                   self.G.real, self.G.imag, self.F.real, self.F.imag)
+        # Newton's method sees lengths of order one only (see mech._scaling)
+        self._unit = tuple(x / self._scale for x in (self.a, self.b, self.cd, self.ce, self.g, self.f,
+                                                     self.G, self.F))
 
     def __repr__(self):
         return (f"TriadSixBar({self.a!r}, {self.b!r}, {self.cd!r}, {self.ce!r}, {self.angle!r}, "
                 f"{self.g!r}, {self.f!r}, {self.G!r}, {self.F!r})")
 
     def _residual(self, q, B):
+        """Residuals and Jacobian in the unit lengths of `_unit` (`q` and `B` in those too)."""
+        _, b, cd, ce, g, f, G, F = self._unit
         C = q[0] + 1j * q[1]
         eD = np.exp(1j * q[2])
         eE = np.exp(1j * (q[2] + self.angle))
-        D, E = C + self.cd * eD, C + self.ce * eE
-        r = np.array([abs(C - B) ** 2 - self.b**2, abs(D - self.G) ** 2 - self.g**2,
-                      abs(E - self.F) ** 2 - self.f**2]) / 2
+        D, E = C + cd * eD, C + ce * eE
+        r = np.array([abs(C - B) ** 2 - b**2, abs(D - G) ** 2 - g**2, abs(E - F) ** 2 - f**2]) / 2
         # rows: d r / d (x_C, y_C, phi_3)
         J = np.array([
             [(C - B).real, (C - B).imag, 0.0],
-            [(D - self.G).real, (D - self.G).imag, (np.conj(D - self.G) * 1j * self.cd * eD).real],
-            [(E - self.F).real, (E - self.F).imag, (np.conj(E - self.F) * 1j * self.ce * eE).real],
+            [(D - G).real, (D - G).imag, (np.conj(D - G) * 1j * cd * eD).real],
+            [(E - F).real, (E - F).imag, (np.conj(E - F) * 1j * ce * eE).real],
         ])
         return r, J, C, D, E
 
@@ -154,16 +163,17 @@ class TriadSixBar:
         """
         theta = finite_array("theta", theta)
         omega = float(finite_array("omega", omega))
-        C0 = _complex_point("start[0]", start[0])
+        C0 = _complex_point("start[0]", start[0]) / self._scale
         q = np.array([C0.real, C0.imag, float(finite_array("start[1]", start[1]))])
-        size = self.a + self.b + self.cd + self.ce + self.g + self.f
+        a, b, _, _, g, f, G, F = self._unit
+        size = sum(self._unit[:6])
         flat = theta.reshape(-1)
         n = flat.size
         out = {k: np.full(n, np.nan + 0j) for k in ("B", "C", "D", "E", "vB", "vC", "vD", "vE")}
         phi, om = np.full((n, 5), np.nan), np.full((n, 5), np.nan)
         valid, iters = np.zeros(n, bool), np.zeros(n, int)
         for k, t in enumerate(flat):
-            B = self.a * np.exp(1j * t)
+            B = a * np.exp(1j * t)
             trial = q.copy()
             for it in range(1, max_iter + 1):
                 r, J, *_ = self._residual(trial, B)
@@ -190,10 +200,10 @@ class TriadSixBar:
             vD, vE = vC + 1j * w3 * (D - C), vC + 1j * w3 * (E - C)
             valid[k] = True
             for name, value in zip(("B", "C", "D", "E", "vB", "vC", "vD", "vE"), (B, C, D, E, vB, vC, vD, vE)):
-                out[name][k] = value
-            phi[k] = [t, np.angle(C - B), trial[2], np.angle(D - self.G), np.angle(E - self.F)]
-            om[k] = [omega, (np.conj(C - B) * (vC - vB)).imag / self.b**2, w3,
-                     (np.conj(D - self.G) * vD).imag / self.g**2, (np.conj(E - self.F) * vE).imag / self.f**2]
+                out[name][k] = value * self._scale
+            phi[k] = [t, np.angle(C - B), trial[2], np.angle(D - G), np.angle(E - F)]
+            om[k] = [omega, (np.conj(C - B) * (vC - vB)).imag / b**2, w3,
+                     (np.conj(D - G) * vD).imag / g**2, (np.conj(E - F) * vE).imag / f**2]
         shape = theta.shape
         arrays = {k: v.reshape(shape)[()] for k, v in out.items()}
         return TriadPose(theta[()], valid.reshape(shape)[()], arrays["B"], arrays["C"], arrays["D"],

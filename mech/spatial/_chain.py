@@ -12,6 +12,7 @@ import numpy as np
 
 from mech._generated import open_chains as _gen
 from mech._pose import Pose
+from mech._scaling import length_scale_array
 from mech._validate import finite_array, nonnegative_int, positive_length, real_number
 from mech.spatial._transforms import hd
 
@@ -380,5 +381,7 @@ def example_2_25_reach(phi12, s2, s0, p):
     >>> float(example_2_25_reach(np.pi / 2, 0.2, 0.3, 0.2))
     0.5
     """
-    args = [finite_array(n, v) for n, v in zip(("phi12", "s2", "s0", "p"), (phi12, s2, s0, p))]
-    return np.asarray(_gen.example_2_25_reach(*args))[()]
+    phi12, s2, s0, p = (finite_array(n, v) for n, v in zip(("phi12", "s2", "s0", "p"), (phi12, s2, s0, p)))
+    # the squares inside the root see lengths divided by a power of two (mech._scaling)
+    unit = length_scale_array(s2, s0, p)
+    return np.asarray(_gen.example_2_25_reach(phi12, s2 / unit, s0 / unit, p / unit) * unit)[()]

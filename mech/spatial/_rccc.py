@@ -5,7 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
 from mech._validate import branch_sign, finite_array, nonnegative_int, real_number
 
 __all__ = ["RCCC", "RCCCPose"]
@@ -24,9 +24,12 @@ class RCCCPose(Pose):
         Angles and slides of the middle cylinders at B and C (H-D).
     omega_output, v_output : ndarray
         d phi41/dt and d S4/dt; present when solved with ``order >= 1``.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: False where the pose does not assemble or is a limit position
+        of the spherical image (infinite rates); the two rates are NaN exactly there.
     """
 
-    _ORDER_OF = {"omega_output": 1, "v_output": 1}
+    _ORDER_OF = {"omega_output": 1, "v_output": 1, "rates_valid": 1}
 
 
 class RCCC:
@@ -158,8 +161,13 @@ class RCCC:
             omega = finite_array("omega", omega)
             # d/dtheta of the coefficients: the dual parts at theta + eps (rule (1))
             dA, dB, dC = (x.dual_part for x in _abc.spherical_fourbar_abc(a, b, c, d, Dual(th, 1.0)))
-            dpsi = _abc.abc_rate(dA, dB, dC, psi, root, sigma)
-            dpsi0 = _gen.rccc_slide_rate(a, b, c, d, a0, b0, c0, d0, self._s1, th, psi, dpsi)
-            fields["omega_output"] = -dpsi * omega
-            fields["v_output"] = -dpsi0 * omega
+            # the root vanishes at a limit position: the rates are infinite there
+            with np.errstate(divide="ignore", invalid="ignore"):
+                dpsi = _abc.abc_rate(dA, dB, dC, psi, root, sigma)
+                dpsi0 = _gen.rccc_slide_rate(a, b, c, d, a0, b0, c0, d0, self._s1, th, psi, dpsi)
+                fields["omega_output"] = -dpsi * omega
+                fields["v_output"] = -dpsi0 * omega
+            shape = np.broadcast_shapes(*(np.shape(v) for v in fields.values()))
+            fields = {k: np.array(np.broadcast_to(v, shape))[()] for k, v in fields.items()}
+            mask_singular_rates(fields, ("omega_output", "v_output"))
         return RCCCPose(order, fields)

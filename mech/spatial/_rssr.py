@@ -8,9 +8,18 @@ from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import rssr as _gen
 from mech._validate import branch_sign, finite_array, motion_inputs, positive_length, real_number
-from mech._pose import Pose
+from mech._pose import Pose, mask_singular_rates
+from mech._scaling import length_scale
 
 __all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
+
+
+# smallest l1 l3 / D**2 (D: the largest dimension) for which A, B, C of (2-71) and their
+# squares are finite floats
+_MIN_L1_L3 = 2.0 ** -500
+# fields that scale with the unit of length, and the rates found from the loop equation
+_LINEAR = frozenset({"B", "C", "P", "vB", "vC", "aB", "aC"})
+_SOLVED_RATES = ("omega_output", "vC", "alpha_output", "aC")
 
 
 def _stack(*components):
@@ -31,9 +40,15 @@ class RSSRPose(Pose):
         d phi03/dt and the pin velocities; present when solved with ``order >= 1``.
     alpha_output, aB, aC : ndarray
         d2 phi03/dt2 and the pin accelerations; present when solved with ``order >= 2``.
+    rates_valid : ndarray of bool
+        With ``order >= 1``: False where the pose does not assemble or where
+        A^2 + B^2 = C^2 (a limit position, or a pose where the two branches touch): the
+        rocker's rates are infinite or undetermined there, and ``omega_output, vC,
+        alpha_output, aC`` are NaN exactly where this mask is False.
     """
 
-    _ORDER_OF = {"omega_output": 1, "vB": 1, "vC": 1, "alpha_output": 2, "aB": 2, "aC": 2}
+    _ORDER_OF = {"omega_output": 1, "vB": 1, "vC": 1, "rates_valid": 1,
+                 "alpha_output": 2, "aB": 2, "aC": 2}
 
 
 @dataclass(frozen=True)
@@ -127,6 +142,21 @@ class RSSR:
         if not all(np.isfinite((p, q, u))):
             raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
         self._coupler = (p, q, u)
+        self._scale = length_scale(self._l1, self._l2, self._l3, self._s0, self._s3, self._h0)
+        # the generated formulas see lengths of order one only (see mech._scaling)
+        self._unit = tuple(x / self._scale for x in
+                           (self._l1, self._l2, self._l3, self._s0, self._s3, self._h0)) + (self._lam,)
+        self._unit_coupler = tuple(x / self._scale for x in self._coupler)
+        # (2-71) is divided by l1 l3: with both far below the other dimensions its
+        # coefficients, and their squares, would overflow
+        l1, _, l3 = self._unit[:3]
+        if l1 * l3 < _MIN_L1_L3:
+            largest = max(abs(x) for x in (self._l1, self._l2, self._l3, self._s0, self._s3, self._h0))
+            raise ValueError(
+                f"Expected `l1` * `l3` >= 2**-500 * {largest!r}**2 (the largest length or offset, "
+                f"squared) so that the coefficients of (2-71) stay finite, got `l1` = {self._l1!r}, "
+                f"`l3` = {self._l3!r}"
+            )
 
     l1 = property(lambda self: self._l1, doc="Crank length AB.")
     l2 = property(lambda self: self._l2, doc="Coupler length BC.")
@@ -139,7 +169,8 @@ class RSSR:
     coupler = property(lambda self: self._coupler, doc="Coupler point (p, q, u).")
 
     def _dims(self):
-        return (self._l1, self._l2, self._l3, self._s0, self._s3, self._h0, self._lam)
+        """The dimensions with every length divided by the power of two `_scale`."""
+        return self._unit
 
     def __repr__(self):
         return (f"RSSR({self._l1!r}, {self._l2!r}, {self._l3!r}, {self._s0!r}, {self._s3!r}, "
@@ -150,7 +181,7 @@ class RSSR:
         dims = self._dims()
         A, B, C = _gen.rssr_abc(*dims, phi01)
         _, rho, r2 = _gen.rssr_reach(*dims, phi01)
-        factored = _gen.rssr_discriminant(self._l1, self._l3, rho, np.sqrt(np.maximum(r2, 0.0)))
+        factored = _gen.rssr_discriminant(dims[0], dims[2], rho, np.sqrt(np.maximum(r2, 0.0)))
         disc = np.where(r2 >= 0.0, factored, _abc.abc_discriminant(A, B, C))
         return A, B, C, disc
 
@@ -182,7 +213,7 @@ class RSSR:
         l1, _, l3, s0, s3, h0, lam = self._dims()
         Bx, By, Bz, Cx, Cy, Cz = _gen.rssr_points(l1, l3, s0, s3, h0, lam, finite_array("phi01", phi01),
                                                   finite_array("phi03", phi03))
-        return _stack(Bx, By, Bz), _stack(Cx, Cy, Cz)
+        return _stack(Bx, By, Bz) * self._scale, _stack(Cx, Cy, Cz) * self._scale
 
     def discriminant(self, phi01):
         """A**2 + B**2 - C**2 of (2-71) at crank angles `phi01`: >= 0 where it assembles.
@@ -220,7 +251,7 @@ class RSSR:
         -------
         RSSRPose
             ``phi01, phi03, B, C, P, valid``; with ``order >= 1`` also
-            ``omega_output, vB, vC``; with ``order >= 2`` also ``alpha_output, aB, aC``.
+            ``omega_output, vB, vC, rates_valid``; with ``order >= 2`` also ``alpha_output, aB, aC``.
 
         Raises
         ------
@@ -231,7 +262,13 @@ class RSSR:
 
         Notes
         -----
-        See :ref:`deriv-rssr`. Rates are unbounded at the limit positions (A^2 + B^2 = C^2).
+        See :ref:`deriv-rssr`. Rates are unbounded at the limit positions
+        (A^2 + B^2 = C^2): the pose is valid there (``strict`` does not raise), but
+        ``rates_valid`` is False and the rates of the rocker and its pin are NaN (the
+        crank pin's stay finite); ``valid`` concerns positions, ``rates_valid`` rates. The
+        formulas run on the lengths and offsets divided by a power of two near the
+        largest (`mech._scaling`): angles do not depend on the unit of length, and points
+        and linear rates scale exactly with it.
 
         Examples
         --------
@@ -253,27 +290,32 @@ class RSSR:
         Bx, By, Bz, Cx, Cy, Cz = _gen.rssr_points(l1, l3, s0, s3, h0, lam, phi01, phi03)
         fields = {"phi01": phi01[()], "phi03": phi03[()], "valid": valid[()],
                   "B": _stack(Bx, By, Bz), "C": _stack(Cx, Cy, Cz)}
-        p, q, u = self._coupler
+        p, q, u = self._unit_coupler
         if q == 0.0 and u == 0.0:
             fields["P"] = fields["B"] + (p / l2) * (fields["C"] - fields["B"])
         else:
             with np.errstate(invalid="ignore", divide="ignore"):
                 fields["P"] = _stack(*_gen.rssr_coupler_point(Bx, By, Bz, Cx, Cy, Cz, l2, lam, p, q, u))
-        if order >= 1:
-            omega = rates[0]
-            dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega, rates[1] if order >= 2 else 0.0)
-            with np.errstate(invalid="ignore", divide="ignore"):
+        # at a limit position the root vanishes and the rates are infinite: they are
+        # masked below by mask_singular_rates
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            if order >= 1:
+                omega = rates[0]
+                dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega, rates[1] if order >= 2 else 0.0)
                 w3 = np.where(valid, _abc.abc_rate(dA, dB, dC, phi03, root, sigma), np.nan)
-            fields["omega_output"] = w3[()]
-            fields["vB"], fields["vC"] = (_stack(*v) for v in np.split(
-                np.array(np.broadcast_arrays(*_gen.rssr_velocity(l1, l3, lam, phi01, phi03, omega, w3))), 2))
-        if order >= 2:
-            alpha = rates[1]
-            with np.errstate(invalid="ignore", divide="ignore"):
+                fields["omega_output"] = w3[()]
+                fields["vB"], fields["vC"] = (_stack(*v) for v in np.split(
+                    np.array(np.broadcast_arrays(*_gen.rssr_velocity(l1, l3, lam, phi01, phi03, omega, w3))), 2))
+            if order >= 2:
+                alpha = rates[1]
                 a3 = np.where(valid, _abc.abc_accel(C, dA, dB, ddA, ddB, ddC, phi03, w3, root, sigma), np.nan)
-            fields["alpha_output"] = a3[()]
-            fields["aB"], fields["aC"] = (_stack(*v) for v in np.split(np.array(np.broadcast_arrays(
-                *_gen.rssr_acceleration(l1, l3, lam, phi01, phi03, omega, w3, alpha, a3))), 2))
+                fields["alpha_output"] = a3[()]
+                fields["aB"], fields["aC"] = (_stack(*v) for v in np.split(np.array(np.broadcast_arrays(
+                    *_gen.rssr_acceleration(l1, l3, lam, phi01, phi03, omega, w3, alpha, a3))), 2))
+        for name in _LINEAR.intersection(fields):
+            fields[name] = fields[name] * self._scale
+        if order >= 1:
+            mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
         return RSSRPose(order, fields)
 
     def assembly_range(self):
@@ -319,6 +361,8 @@ class RSSR:
         if len(merged) > 1 and abs(merged[-1][1] - 2 * np.pi - merged[0][0]) < 1e-9:
             merged[0] = (merged[-1][0], merged[0][1] + 2 * np.pi)
             merged.pop()
+        if not merged:                              # it assembles at isolated angles at most
+            return AssemblyRange(np.empty((0, 2)), False)
         if len(merged) == 1 and merged[0][1] - merged[0][0] > 2 * np.pi - 1e-9:
             return AssemblyRange(np.empty((0, 2)), True)
         out = np.array([(s - 2 * np.pi * np.floor((s + np.pi) / (2 * np.pi)), 0.0) for s, _ in merged])

@@ -2,6 +2,8 @@
 digits on the vector constraint (C built by Rodrigues' rotation, no H-D matrix), mpmath
 derivatives, the textbook's half-angle formula evaluated literally, and sampling."""
 
+import warnings
+
 import mpmath
 import numpy as np
 import pytest
@@ -241,3 +243,106 @@ def test_solve_bad_input():
         rssr.solve(0.0, order=3)
     with pytest.raises(AttributeError, match=r"needs solve\(\.\.\., order=1\)"):
         rssr.solve(0.0).omega_output
+
+
+# ----------------------------------------------------------------------------- scale invariance
+SCALES = [1e-300, 1e-200, 1e-160, 1e-150, 1e-110, 1e-50, 1.0, 1e50, 1e110, 1e160, 1e200, 1e300]
+# Inputs at scale s differ from exact multiples of the unit ones by one rounding each; away
+# from the limit positions (the sweeps keep |A^2 + B^2 - C^2| >= 0.05) the outputs then
+# agree to a few hundred ulps at most.
+RTOL = 256 * np.finfo(float).eps
+_LINEAR = ("B", "C", "P", "vB", "vC", "aB", "aC")
+
+
+def _scaled(dims, s):
+    """The RSSR dimensions with every length and offset times s (lam is an angle)."""
+    return tuple(x * s for x in dims[:6]) + (dims[6],)
+
+
+@pytest.mark.parametrize("scale", SCALES)
+@pytest.mark.parametrize("dims", [(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 1.0),      # crank turns fully
+                                  (2.0, 2.5, 1.5, 0.3, -0.4, 1.5, 0.8)])    # crank rocks
+@pytest.mark.parametrize("branch", [1, -1])
+def test_solve_scale_invariance(dims, branch, scale):
+    unit = RSSR(*dims, branch=branch, coupler=(0.7, -0.3, 0.2))
+    phi = np.linspace(-np.pi, np.pi, 721)
+    phi = phi[np.abs(unit.discriminant(phi)) >= 0.05]
+    want = unit.solve(phi, order=2, omega=1.5, alpha=-0.5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        rssr = RSSR(*_scaled(dims, scale), branch=branch, coupler=(0.7 * scale, -0.3 * scale, 0.2 * scale))
+        got = rssr.solve(phi, order=2, omega=1.5, alpha=-0.5)
+        assert np.max(np.abs(rssr.discriminant(phi) - unit.discriminant(phi))) <= RTOL
+    assert np.array_equal(got.valid, want.valid) and np.array_equal(got.rates_valid, want.rates_valid)
+    assert np.array_equal(got.rates_valid, want.valid)
+    ok = want.valid
+    assert not np.isnan(got.phi03[ok]).any() and np.isnan(got.phi03[~ok]).all()
+    assert np.max(np.abs(_wrap(got.phi03[ok] - want.phi03[ok])), initial=0.0) <= RTOL
+    for name in ("omega_output", "alpha_output"):
+        ref = getattr(want, name)[ok]
+        assert np.max(np.abs(getattr(got, name)[ok] - ref), initial=0.0) <= RTOL * max(1.0, np.max(np.abs(ref)))
+    for name in _LINEAR:
+        ref = getattr(want, name)[ok]
+        error = np.abs(getattr(got, name)[ok] / scale - ref)
+        assert np.max(error, initial=0.0) <= RTOL * max(1.0, np.max(np.abs(ref))), name
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e-160, 1e160, 1e300])
+def test_solve_agrees_with_mpmath_at_scale(scale):
+    """mpmath on the vector constraint with the scaled dimensions as given (no rescaling:
+    mpmath has no overflow), the residual divided by l2^2 so that its tolerance is unit-free."""
+    dims = _scaled((1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 1.0), scale)
+    l2 = mpmath.mpf(dims[1])
+    for branch in (1, -1):
+        for p1 in (-2.5, -0.4, 0.9, 2.2):
+            pose = RSSR(*dims, branch=branch).solve(p1)
+
+            def f(x):
+                B, C, _, _ = _points_mp(dims, p1, x)
+                return (mpmath.norm(C - B) ** 2 - l2**2) / l2**2
+
+            reference = mpmath.findroot(f, mpmath.mpf(float(pose.phi03)) + mpmath.mpf("1e-4"))
+            assert abs(float(_wrap(float(reference) - pose.phi03))) <= RTOL
+            B, C, _, _ = _points_mp(dims, p1, reference)
+            for got, want in ((pose.B, B), (pose.C, C)):
+                assert max(abs(got[i] - want[i]) for i in range(3)) <= RTOL * l2
+
+
+def test_solve_limit_position_rates_masked():
+    """RSSR(1, 2, 1, 0, 0, 4, 0) reaches D only at phi01 = 0 (|BD| = 3 = l2 + l3): the pose
+    there is exact and valid, the rocker's rates singular (NaN, rates_valid False)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pose = RSSR(1.0, 2.0, 1.0, 0.0, 0.0, 4.0, 0.0).solve([0.0, 0.1], order=2, strict=False)
+    assert pose.valid.tolist() == [True, False] and pose.rates_valid.tolist() == [False, False]
+    np.testing.assert_allclose(pose.C[0], [3.0, 0.0, 0.0], atol=1e-15)
+    for name in ("omega_output", "vC", "alpha_output", "aC"):
+        assert np.isnan(getattr(pose, name)[0]).all(), name
+    assert np.isfinite(pose.vB[0]).all() and np.isfinite(pose.aB[0]).all()
+
+
+def test_rssr_crank_and_rocker_too_small_for_the_coefficients():
+    """(2-71) is divided by l1 l3: below 2**-500 of the largest dimension squared its
+    coefficients would overflow, so the constructor names the short link instead."""
+    with pytest.raises(ValueError, match=r"Expected `l1` \* `l3` >= 2\*\*-500.*got `l1` = 1e-160"):
+        RSSR(1e-160, 2.0, 1.0, 0.3, 0.2, 2.0, 0.5)
+    with pytest.raises(ValueError, match=r"`l3` = 1e-100"):
+        RSSR(1e-100, 2.0, 1e-100, 0.3, 0.2, 2.0, 0.5)
+    # just inside the bound everything is quiet, and never NaN under a True mask
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for dims in [(2.0**-498, 2.0, 1.0, 0.3, 0.2, 2.0, 0.5), (1.0, 2.0, 2.0**-498, 0.3, 0.2, 2.0, 0.5)]:
+            rssr = RSSR(*dims)
+            pose = rssr.solve(np.linspace(-np.pi, np.pi, 61), order=2, omega=1.5, alpha=0.5)
+            rssr.assembly_range()
+            assert not np.isnan(pose.C[pose.valid]).any()
+            assert not np.isnan(pose.aC[pose.rates_valid]).any()
+    # a crank of 2**-498: C barely moves, and the crank turns fully
+    pose = RSSR(2.0**-498, 2.0, 1.0, 0.3, 0.2, 2.0, 0.5).solve(np.linspace(-np.pi, np.pi, 61), order=2)
+    assert pose.valid.all() and pose.rates_valid.all()
+
+
+def test_assembly_range_nowhere_assembled():
+    """Links that meet at most at isolated angles: an empty range, not an IndexError."""
+    rng = RSSR(2.0**-249, 2.0, 2.0**-249, 0.3, 0.2, 2.0, 0.5).assembly_range()
+    assert rng.intervals.shape == (0, 2) and not rng.full_turn
