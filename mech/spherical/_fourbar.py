@@ -4,6 +4,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
+from mech.spherical._fourbar_branch import change_gaps, solve_change_point
 from mech._pose import Pose
 from mech._validate import arc as _arc, branch_sign, motion_inputs, nonnegative_int, real_number
 from mech.spatial import AssemblyRange
@@ -136,8 +137,12 @@ class SphericalFourBar:
     (5, 3)
     """
 
-    def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), frame=None):
+    def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), frame=None, rtol=1e-12):
         self._a, self._b, self._c, self._d = (_arc(n, v) for n, v in zip("abcd", (a, b, c, d)))
+        rtol = real_number("rtol", rtol)
+        if not 0.0 <= rtol < 1e-3:
+            raise ValueError(f"Expected `rtol` in [0, 1e-3), got {rtol!r}")
+        self._gaps = change_gaps(self._a, self._b, self._c, self._d, rtol)
         self._branch = branch_sign(branch)
         try:
             r, gamma = (float(v) for v in coupler)
@@ -156,6 +161,11 @@ class SphericalFourBar:
     coupler = property(lambda self: self._coupler, doc="Coupler point (r, gamma).")
     frame = property(lambda self: None if self._frame is None else self._frame.copy(),
                      doc="Placement rotation, or None for the default frame.")
+
+    @property
+    def change_point(self):
+        """True if the two branches meet at theta = 0 or pi (a gap within `rtol` of zero)."""
+        return any(g == 0.0 for g in self._gaps.values())
 
     @property
     def A(self):
@@ -240,6 +250,9 @@ class SphericalFourBar:
         """Solve one block of flat inputs in the default frame, writing into `out`."""
         a, b, c, d, (r, gamma) = self._a, self._b, self._c, self._d, self._coupler
         theta = inputs[0]
+        if self.change_point:
+            self._solve_change_block(inputs, order, out)
+            return
         with np.errstate(invalid="ignore", divide="ignore"):
             psi, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz = _gen.spherical_fourbar_position(
                 a, b, c, d, r, gamma, theta, -self._branch)
@@ -273,6 +286,59 @@ class SphericalFourBar:
             for i, name in enumerate(("dw_coupler", "dw_output", "aB", "aC", "aP")):
                 for k in range(3):
                     out[name][:, k] = vectors[3 * i + k]
+
+    def _solve_change_block(self, inputs, order, out):
+        """`_solve_block` for a change-point linkage: the smooth closed form, whose exact
+        theta-derivatives give the rates (see `mech.spherical._fourbar_branch`)."""
+        theta = inputs[0]
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            psi, B, C, P = solve_change_point((self._a, self._b, self._c, self._d), self._coupler,
+                                              self._gaps, theta, self._branch, order)
+            ok = np.isfinite(psi.v)
+            for k in range(3):
+                for name, jet in (("B", B[k]), ("C", C[k]), ("P", P[k])):
+                    out[name][:, k] = np.where(ok, jet.v, np.nan)
+            # (-pi, pi], as atan2 gives it
+            out["psi"][...] = np.where(ok, np.pi - np.mod(np.pi - psi.v, 2 * np.pi), np.nan)
+            if order < 1:
+                return
+            omega = inputs[1]
+            out["omega_output"][...] = psi.d1 * omega
+            D = np.array([np.sin(self._d), 0.0, np.cos(self._d)])
+            out["w_input"][...] = 0.0
+            out["w_input"][:, 2] = omega
+            out["w_output"][...] = out["omega_output"][:, None] * D
+            Bv, Cv = (np.stack([x.v for x in X], axis=-1) for X in (B, C))
+            dB, dC = (np.stack([x.d1 for x in X], axis=-1) for X in (B, C))
+            for name, X in (("vB", B), ("vC", C), ("vP", P)):
+                for k in range(3):
+                    out[name][:, k] = X[k].d1 * omega
+            # the coupler spins about B at lam = omega * Lam relative to the input link:
+            # C' = A x C + Lam B x C, so Lam = (C' - A x C) . (B x C) / sin^2 b
+            ez = np.array([0.0, 0.0, 1.0])
+            BxC = np.cross(Bv, Cv)
+            rel = dC - np.cross(ez, Cv)
+            sb2 = np.sin(self._b) ** 2
+            Lam = np.sum(rel * BxC, axis=-1) / sb2
+            lam = omega * Lam
+            out["w_coupler"][...] = omega[:, None] * ez + lam[:, None] * Bv
+            if order < 2:
+                return
+            alpha = inputs[2]
+            w2 = omega * omega
+            out["alpha_output"][...] = psi.d2 * w2 + psi.d1 * alpha
+            out["dw_input"][...] = 0.0
+            out["dw_input"][:, 2] = alpha
+            out["dw_output"][...] = out["alpha_output"][:, None] * D
+            for name, X in (("aB", B), ("aC", C), ("aP", P)):
+                for k in range(3):
+                    out[name][:, k] = X[k].d2 * w2 + X[k].d1 * alpha
+            ddC = np.stack([x.d2 for x in C], axis=-1)
+            dBxC = np.cross(dB, Cv) + np.cross(Bv, dC)
+            dLam = (np.sum((ddC - np.cross(ez, dC)) * BxC, axis=-1) + np.sum(rel * dBxC, axis=-1)) / sb2
+            dlam = alpha * Lam + w2 * dLam
+            out["dw_coupler"][...] = (alpha[:, None] * ez + dlam[:, None] * Bv
+                                      + (lam * omega)[:, None] * np.cross(ez, Bv))
 
     def assembly_range(self):
         """The input angles where the linkage assembles; its ends are limit positions.
