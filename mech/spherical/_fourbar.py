@@ -108,12 +108,15 @@ class SphericalFourBar:
     frame : array_like, shape (3, 3), optional
         Proper rotation placing the linkage: every point is ``frame @`` its position in
         the default frame (A = (0, 0, 1), D = (sin d, 0, cos d)). See `ground_frame`.
+    rtol : float, optional
+        Relative tolerance (of a + b + c + d) within which a gap of the arc BD to the
+        ends of its window counts as zero, making this a change-point linkage.
 
     Raises
     ------
     ValueError
         If an arc is not in (0, pi), `branch` is not +1 or -1, `coupler` is not two finite
-        numbers, or `frame` is not a proper rotation.
+        numbers, `frame` is not a proper rotation, or `rtol` is not in [0, 1e-3).
 
     Notes
     -----
@@ -121,9 +124,17 @@ class SphericalFourBar:
     and psi the angle at D from A->D continued to D->C, both counter-clockwise seen from
     outside; as the arcs shrink the linkage becomes `mech.planar.FourBar` with
     ``coupler=(r cos gamma, r sin gamma)``, point for point in the tangent plane at A.
-    Along a branch psi is continuous in theta (a fixed root of the input-output equation);
-    at a limit position (the ends of `assembly_range`) the two branches meet, and the
-    rates are unbounded there.
+    Along a branch psi is continuous in theta; at a limit position (the ends of
+    `assembly_range`) the two branches meet, and the rates are unbounded there. A
+    change-point linkage (`change_point`: deltoids, isograms, rhombi, all arcs pi/2 and
+    their antipodal forms, any s + l = p + q) has its branches meet at theta = 0 or pi with
+    the four joints on one great circle; there the motion continues smoothly onto the other
+    sign of det[B, D, C] (a parallel isogram stays parallel), positions and rates
+    continuous, and `branch` names the branch on 0 < theta < pi. A linkage with one such
+    angle returns to its first branch after two input turns. Where B passes through D
+    (a = d, b = c) or through -D (a + d = b + c = pi) the pose is the limit along the
+    branch. Change-point linkages are solved by the half-angle form, eqs. (11)-(13) of
+    :ref:`deriv-spherical-fourbar`, with exact theta-derivatives for the rates.
 
     Examples
     --------

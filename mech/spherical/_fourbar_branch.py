@@ -10,7 +10,8 @@ with its sign (sin(theta/2) at theta = 0, cos(theta/2) at theta = pi). Where B p
 through D (a = d, b = c) or through the antipode of D (a + d = b + c = pi), the common
 factors of delta and beta are cancelled, so the pose there is the limit along the branch.
 Rates are exact derivatives of the same closed form, carried by truncated Taylor series in
-theta (`_Jet`), so they are continuous through the change points too.
+theta (`_Jet`), so they are continuous through the change points too. Derivation:
+:ref:`deriv-spherical-fourbar`, eqs. (11) to (13).
 """
 
 import numpy as np
