@@ -266,3 +266,24 @@ def test_solve_change_point_planar_limit_closed_form(shape):
     assert pose.valid.all()
     assert np.max(np.abs(pose.psi - want)) <= 4 * eps**2
     assert np.max(np.abs(pose.omega_output - rate)) <= 4 * eps**2
+
+
+def test_solve_change_point_frame_and_strict():
+    """A placed change-point linkage: every vector is the frame times the default one
+    (the default frame is checked against the reference above); strict=True raises only
+    outside the assembly range, not at B = D."""
+    from mech import AssemblyError
+    from mech.spherical import ground_frame
+
+    R = ground_frame(0.3, -0.4, 1.1)
+    home = SphericalFourBar(0.3, 0.8, 0.8, 0.3, coupler=COUPLER)
+    placed = SphericalFourBar(0.3, 0.8, 0.8, 0.3, coupler=COUPLER, frame=R)
+    theta = np.array([-1e-7, 0.0, 1e-7, 2.0])
+    a, b = home.solve(theta, order=2), placed.solve(theta, order=2)
+    for field in ("B", "C", "P", "vP", "aP", "w_coupler", "dw_coupler", "w_output", "dw_input"):
+        assert np.max(np.abs(getattr(b, field) - getattr(a, field) @ R.T)) <= 4 * EPS
+    assert placed.solve(theta, strict=True).valid.all()
+    kite = SphericalFourBar(0.8, 0.3, 0.3, 0.8)            # rocks: |theta| <= 0.849
+    assert kite.change_point and kite.solve([-0.5, 0.0, 0.5], strict=True).valid.all()
+    with pytest.raises(AssemblyError, match="theta = 1.0"):
+        kite.solve([0.0, 1.0], strict=True)
