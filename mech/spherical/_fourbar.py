@@ -17,6 +17,8 @@ _VECTORS = {0: ("B", "C", "P"),
             2: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP",
                 "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}
 _SCALARS = {0: ("psi",), 1: ("psi", "omega_output"), 2: ("psi", "omega_output", "alpha_output")}
+_RATE_ORDER = {**{k: 1 for k in ("omega_output", "w_input", "w_coupler", "w_output", "vB", "vC", "vP")},
+               **{k: 2 for k in ("alpha_output", "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}}
 
 
 def _rotation(frame, tol=1e-9):
@@ -27,7 +29,9 @@ def _rotation(frame, tol=1e-9):
         raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got {frame!r}") from None
     if R.shape != (3, 3) or not np.all(np.isfinite(R)):
         raise ValueError(f"Expected `frame` to be a finite 3x3 rotation matrix, got {frame!r}")
-    if np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
+    # entries of a rotation are at most 1 in size: test that first, so that R.T @ R
+    # cannot overflow
+    if np.max(np.abs(R)) > 1.0 + tol or np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
         raise ValueError("Expected `frame` to be a proper rotation (R.T @ R = I, det R = +1), "
                          f"got {np.array2string(R, precision=6)}")
     return R
@@ -213,6 +217,8 @@ class SphericalFourBar:
             Angular velocity and acceleration of the input link, broadcast against `theta`.
         strict : bool, optional
             Raise `AssemblyError` instead of returning NaN where it cannot assemble.
+            Rates are found for the input rates scaled to at most 1 and scaled back, so
+            any finite `omega`, `alpha` work; a rate beyond the float range is +-inf.
 
         Returns
         -------
@@ -239,11 +245,26 @@ class SphericalFourBar:
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size
+        # rates are solved for omega / m and alpha / m^2 (m = max(|omega|, sqrt|alpha|)),
+        # then scaled back: no overflow inside, and a rate beyond the float range is +-inf
+        if order >= 1:
+            m = np.abs(flat[1]) if order == 1 else np.maximum(np.abs(flat[1]), np.sqrt(np.abs(flat[2])))
+            m = np.where(m > 0.0, m, 1.0)
+            flat[1] = flat[1] / m
+            if order >= 2:
+                flat[2] = flat[2] / m / m
         out = {name: np.empty((size, 3)) for name in _VECTORS[order]}
         out.update({name: np.empty(size) for name in _SCALARS[order]})
         for start in range(0, max(size, 1), _BLOCK):
             block = slice(start, start + _BLOCK)
             self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()})
+        if order >= 1:
+            with np.errstate(over="ignore"):
+                for name, value in out.items():
+                    power = _RATE_ORDER.get(name, 0)
+                    scale = m if value.ndim == 1 else m[:, None]
+                    for _ in range(power):
+                        value *= scale
         valid = ~np.isnan(out["psi"])
         if strict and not np.all(valid):
             bad = float(flat[0][~valid][0])

@@ -287,3 +287,20 @@ def test_solve_change_point_frame_and_strict():
     assert kite.change_point and kite.solve([-0.5, 0.0, 0.5], strict=True).valid.all()
     with pytest.raises(AssemblyError, match="theta = 1.0"):
         kite.solve([0.0, 1.0], strict=True)
+
+
+@pytest.mark.parametrize("arcs", [(0.3, 0.9, 0.7, 1.0), (0.3, 0.8, 0.8, 0.3)])
+def test_solve_rates_any_input_speed(arcs):
+    """Rates scale as omega and (omega^2, alpha) for input rates from 1e-300 to 1e300;
+    where the true value exceeds the float range it is +-inf (never NaN), with no warning."""
+    linkage = SphericalFourBar(*arcs, coupler=COUPLER)
+    theta = np.array([0.0, 1.0, -2.5])
+    unit = linkage.solve(theta, order=2, omega=1.0, alpha=0.0)
+    spin = linkage.solve(theta, order=2, omega=0.0, alpha=1.0)
+    for omega, alpha in [(1e-300, 0.0), (1e-150, 1e-300), (1e150, 0.0), (-3e100, 1e200), (1e153, -1e306)]:
+        pose = linkage.solve(theta, order=2, omega=omega, alpha=alpha)
+        np.testing.assert_allclose(pose.omega_output, omega * unit.omega_output, rtol=4 * EPS, atol=0)
+        want = omega * omega * unit.aP + alpha * spin.aP
+        np.testing.assert_allclose(pose.aP, want, rtol=1e-14, atol=1e-14 * np.max(np.abs(want)))
+    huge = linkage.solve(theta, order=2, omega=1e200, alpha=0.0)
+    assert huge.valid.all() and not np.isnan(huge.aP).any() and np.isinf(huge.alpha_output).all()
