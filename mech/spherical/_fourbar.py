@@ -215,10 +215,10 @@ class SphericalFourBar:
             Highest time derivative to compute; nothing above it is computed.
         omega, alpha : array_like, optional
             Angular velocity and acceleration of the input link, broadcast against `theta`.
+            Any finite values: rates are solved for them scaled to at most 1 and scaled
+            back, so a rate beyond the float range is +-inf, never NaN.
         strict : bool, optional
             Raise `AssemblyError` instead of returning NaN where it cannot assemble.
-            Rates are found for the input rates scaled to at most 1 and scaled back, so
-            any finite `omega`, `alpha` work; a rate beyond the float range is +-inf.
 
         Returns
         -------
