@@ -172,7 +172,7 @@ def solve_change_point(dims, coupler, gaps, theta, branch, order):
     neg_s, neg_ch = s.v < 0.0, ch.v < 0.0
 
     if through_d and through_anti:
-        # a = b = c = d = pi/2 in effect: C stays at a pole of the great circle BD
+        # every arc pi/2: C stays at a pole of the great circle through B and D
         delta = _Jet.const(np.pi / 2, th)
         beta = _Jet.const(np.pi / 2, th)
     else:
@@ -230,7 +230,7 @@ def solve_change_point(dims, coupler, gaps, theta, branch, order):
         delta = _atan2(y_dir, x_dir)
     psi = delta - branch * beta
 
-    sb, cb, sc, cc = np.sin(b), np.cos(b), np.sin(c), np.cos(c)
+    sb, sc, cc = np.sin(b), np.sin(c), np.cos(c)
     cth, sth = th.cos(), th.sin()
     B = (cth * sa, sth * sa, _Jet.const(ca, th))
     cp, sp = psi.cos(), psi.sin()
