@@ -11,6 +11,7 @@ import numpy as np
 
 from mech._validate import finite_array
 from mech.spherical._coordinates import _cross_accurate, _vectors, distance, local_frame
+from mech.spherical._coordinates import _norm as _robust_norm
 from mech.spherical._rigid_body import _great_circle_normal
 
 __all__ = ["Circle", "Collinearity", "Intersection", "great_circle_through", "great_circle_at",
@@ -23,7 +24,7 @@ def _dot(u, v):
 
 
 def _norm(u):
-    return np.sqrt(_dot(u, u))
+    return _robust_norm(u)
 
 
 def _frozen(value):

@@ -16,22 +16,40 @@ __all__ = ["to_xyz", "from_xyz", "local_frame", "distance", "distance_lonlat"]
 _EPS = np.finfo(float).eps
 
 
+def _norm(v):
+    """Euclidean norm over the last axis, free of overflow and underflow.
+
+    Each row is divided by its largest absolute component before squaring (as `hypot`
+    does), so rows of size 1e-300 or 1e300 keep full relative accuracy; zero rows give 0.
+    """
+    v = np.asarray(v, dtype=float)
+    big = np.max(np.abs(v), axis=-1)
+    safe = np.where(big > 0.0, big, 1.0)
+    w = v / safe[..., None]
+    return big * np.sqrt(np.sum(w * w, axis=-1))
+
+
 def _vectors(name, value):
     """Return ``value`` as a float array of shape (..., 3) with finite, non-zero rows.
 
     Rows whose norm is 1 to within a few rounding errors are used as given (dividing by a
     norm of 1 +- 1e-16 would move the point sideways by a rounding error, which matters for
-    arcs of 1e-8); other rows are scaled to unit length.
+    arcs of 1e-8); other rows are scaled to unit length. Each row is first divided by its
+    largest absolute component, so any finite non-zero row (1e-300 or 1e300 in size) gives
+    a unit vector; only an exactly zero row is rejected.
     """
     arr = finite_array(name, value)
     if arr.ndim == 0 or arr.shape[-1] != 3:
         raise ValueError(f"Expected `{name}` of shape (..., 3), got shape {arr.shape}")
-    norm = np.sqrt(np.sum(arr * arr, axis=-1))
-    if np.any(norm == 0.0):
-        index = np.argwhere(np.atleast_1d(norm == 0.0))[0]
+    big = np.max(np.abs(arr), axis=-1)
+    if np.any(big == 0.0):
+        index = np.argwhere(np.atleast_1d(big == 0.0))[0]
         raise ValueError(f"Expected non-zero vectors in `{name}`, got the zero vector at index {tuple(index)}")
-    scale = np.where(np.abs(norm - 1.0) <= 8 * _EPS, 1.0, norm)
-    return arr / scale[..., None]
+    scaled = arr / big[..., None]
+    size = np.sqrt(np.sum(scaled * scaled, axis=-1))          # in [1, sqrt(3)]
+    # a unit row has big in [1/sqrt(3), 1], where big * size cannot overflow
+    near_unit = (big <= 1.0) & (np.abs(np.minimum(big, 1.0) * size - 1.0) <= 8 * _EPS)
+    return np.where(near_unit[..., None], arr, scaled / size[..., None])
 
 
 def _stack(*components):
@@ -228,7 +246,7 @@ def distance(p, q):
     q = _vectors("q", q)
     p, q = np.broadcast_arrays(p, q)
     c = _cross_accurate(p, q)
-    return np.arctan2(np.sqrt(np.sum(c * c, axis=-1)), np.sum(p * q, axis=-1))
+    return np.arctan2(_norm(c), np.sum(p * q, axis=-1))
 
 
 def distance_lonlat(lon1, lat1, lon2, lat2):

@@ -4,6 +4,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
+from mech.spherical._fourbar_branch import change_gaps, solve_change_point
 from mech._pose import Pose
 from mech._validate import arc as _arc, branch_sign, motion_inputs, nonnegative_int, real_number
 from mech.spatial import AssemblyRange
@@ -16,6 +17,8 @@ _VECTORS = {0: ("B", "C", "P"),
             2: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP",
                 "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}
 _SCALARS = {0: ("psi",), 1: ("psi", "omega_output"), 2: ("psi", "omega_output", "alpha_output")}
+_RATE_ORDER = {**{k: 1 for k in ("omega_output", "w_input", "w_coupler", "w_output", "vB", "vC", "vP")},
+               **{k: 2 for k in ("alpha_output", "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}}
 
 
 def _rotation(frame, tol=1e-9):
@@ -26,7 +29,9 @@ def _rotation(frame, tol=1e-9):
         raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got {frame!r}") from None
     if R.shape != (3, 3) or not np.all(np.isfinite(R)):
         raise ValueError(f"Expected `frame` to be a finite 3x3 rotation matrix, got {frame!r}")
-    if np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
+    # entries of a rotation are at most 1 in size: test that first, so that R.T @ R
+    # cannot overflow
+    if np.max(np.abs(R)) > 1.0 + tol or np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
         raise ValueError("Expected `frame` to be a proper rotation (R.T @ R = I, det R = +1), "
                          f"got {np.array2string(R, precision=6)}")
     return R
@@ -107,12 +112,15 @@ class SphericalFourBar:
     frame : array_like, shape (3, 3), optional
         Proper rotation placing the linkage: every point is ``frame @`` its position in
         the default frame (A = (0, 0, 1), D = (sin d, 0, cos d)). See `ground_frame`.
+    rtol : float, optional
+        Relative tolerance (of a + b + c + d) within which a gap of the arc BD to the
+        ends of its window counts as zero, making this a change-point linkage.
 
     Raises
     ------
     ValueError
         If an arc is not in (0, pi), `branch` is not +1 or -1, `coupler` is not two finite
-        numbers, or `frame` is not a proper rotation.
+        numbers, `frame` is not a proper rotation, or `rtol` is not in [0, 1e-3).
 
     Notes
     -----
@@ -120,9 +128,17 @@ class SphericalFourBar:
     and psi the angle at D from A->D continued to D->C, both counter-clockwise seen from
     outside; as the arcs shrink the linkage becomes `mech.planar.FourBar` with
     ``coupler=(r cos gamma, r sin gamma)``, point for point in the tangent plane at A.
-    Along a branch psi is continuous in theta (a fixed root of the input-output equation);
-    at a limit position (the ends of `assembly_range`) the two branches meet, and the
-    rates are unbounded there.
+    Along a branch psi is continuous in theta; at a limit position (the ends of
+    `assembly_range`) the two branches meet, and the rates are unbounded there. A
+    change-point linkage (`change_point`: deltoids, isograms, rhombi, all arcs pi/2 and
+    their antipodal forms, any s + l = p + q) has its branches meet at theta = 0 or pi with
+    the four joints on one great circle; there the motion continues smoothly onto the other
+    sign of det[B, D, C] (a parallel isogram stays parallel), positions and rates
+    continuous, and `branch` names the branch on 0 < theta < pi. A linkage with one such
+    angle returns to its first branch after two input turns. Where B passes through D
+    (a = d, b = c) or through -D (a + d = b + c = pi) the pose is the limit along the
+    branch. Change-point linkages are solved by the half-angle form, eqs. (11)-(13) of
+    :ref:`deriv-spherical-fourbar`, with exact theta-derivatives for the rates.
 
     Examples
     --------
@@ -136,8 +152,12 @@ class SphericalFourBar:
     (5, 3)
     """
 
-    def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), frame=None):
+    def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), frame=None, rtol=1e-12):
         self._a, self._b, self._c, self._d = (_arc(n, v) for n, v in zip("abcd", (a, b, c, d)))
+        rtol = real_number("rtol", rtol)
+        if not 0.0 <= rtol < 1e-3:
+            raise ValueError(f"Expected `rtol` in [0, 1e-3), got {rtol!r}")
+        self._gaps = change_gaps(self._a, self._b, self._c, self._d, rtol)
         self._branch = branch_sign(branch)
         try:
             r, gamma = (float(v) for v in coupler)
@@ -156,6 +176,11 @@ class SphericalFourBar:
     coupler = property(lambda self: self._coupler, doc="Coupler point (r, gamma).")
     frame = property(lambda self: None if self._frame is None else self._frame.copy(),
                      doc="Placement rotation, or None for the default frame.")
+
+    @property
+    def change_point(self):
+        """True if the two branches meet at theta = 0 or pi (a gap within `rtol` of zero)."""
+        return any(g == 0.0 for g in self._gaps.values())
 
     @property
     def A(self):
@@ -190,6 +215,8 @@ class SphericalFourBar:
             Highest time derivative to compute; nothing above it is computed.
         omega, alpha : array_like, optional
             Angular velocity and acceleration of the input link, broadcast against `theta`.
+            Any finite values: rates are solved for them scaled to at most 1 and scaled
+            back, so a rate beyond the float range is +-inf, never NaN.
         strict : bool, optional
             Raise `AssemblyError` instead of returning NaN where it cannot assemble.
 
@@ -218,11 +245,26 @@ class SphericalFourBar:
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size
+        # rates are solved for omega / m and alpha / m^2 (m = max(|omega|, sqrt|alpha|)),
+        # then scaled back: no overflow inside, and a rate beyond the float range is +-inf
+        if order >= 1:
+            m = np.abs(flat[1]) if order == 1 else np.maximum(np.abs(flat[1]), np.sqrt(np.abs(flat[2])))
+            m = np.where(m > 0.0, m, 1.0)
+            flat[1] = flat[1] / m
+            if order >= 2:
+                flat[2] = flat[2] / m / m
         out = {name: np.empty((size, 3)) for name in _VECTORS[order]}
         out.update({name: np.empty(size) for name in _SCALARS[order]})
         for start in range(0, max(size, 1), _BLOCK):
             block = slice(start, start + _BLOCK)
             self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()})
+        if order >= 1:
+            with np.errstate(over="ignore"):
+                for name, value in out.items():
+                    power = _RATE_ORDER.get(name, 0)
+                    scale = m if value.ndim == 1 else m[:, None]
+                    for _ in range(power):
+                        value *= scale
         valid = ~np.isnan(out["psi"])
         if strict and not np.all(valid):
             bad = float(flat[0][~valid][0])
@@ -240,6 +282,9 @@ class SphericalFourBar:
         """Solve one block of flat inputs in the default frame, writing into `out`."""
         a, b, c, d, (r, gamma) = self._a, self._b, self._c, self._d, self._coupler
         theta = inputs[0]
+        if self.change_point:
+            self._solve_change_block(inputs, order, out)
+            return
         with np.errstate(invalid="ignore", divide="ignore"):
             psi, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz = _gen.spherical_fourbar_position(
                 a, b, c, d, r, gamma, theta, -self._branch)
@@ -273,6 +318,59 @@ class SphericalFourBar:
             for i, name in enumerate(("dw_coupler", "dw_output", "aB", "aC", "aP")):
                 for k in range(3):
                     out[name][:, k] = vectors[3 * i + k]
+
+    def _solve_change_block(self, inputs, order, out):
+        """`_solve_block` for a change-point linkage: the smooth closed form, whose exact
+        theta-derivatives give the rates (see `mech.spherical._fourbar_branch`)."""
+        theta = inputs[0]
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            psi, B, C, P = solve_change_point((self._a, self._b, self._c, self._d), self._coupler,
+                                              self._gaps, theta, self._branch, order)
+            ok = np.isfinite(psi.v)
+            for k in range(3):
+                for name, jet in (("B", B[k]), ("C", C[k]), ("P", P[k])):
+                    out[name][:, k] = np.where(ok, jet.v, np.nan)
+            # (-pi, pi], as atan2 gives it
+            out["psi"][...] = np.where(ok, np.pi - np.mod(np.pi - psi.v, 2 * np.pi), np.nan)
+            if order < 1:
+                return
+            omega = inputs[1]
+            out["omega_output"][...] = psi.d1 * omega
+            D = np.array([np.sin(self._d), 0.0, np.cos(self._d)])
+            out["w_input"][...] = 0.0
+            out["w_input"][:, 2] = omega
+            out["w_output"][...] = out["omega_output"][:, None] * D
+            Bv, Cv = (np.stack([x.v for x in X], axis=-1) for X in (B, C))
+            dB, dC = (np.stack([x.d1 for x in X], axis=-1) for X in (B, C))
+            for name, X in (("vB", B), ("vC", C), ("vP", P)):
+                for k in range(3):
+                    out[name][:, k] = X[k].d1 * omega
+            # the coupler spins about B at lam = omega * Lam relative to the input link:
+            # C' = A x C + Lam B x C, so Lam = (C' - A x C) . (B x C) / sin^2 b
+            ez = np.array([0.0, 0.0, 1.0])
+            BxC = np.cross(Bv, Cv)
+            rel = dC - np.cross(ez, Cv)
+            sb2 = np.sin(self._b) ** 2
+            Lam = np.sum(rel * BxC, axis=-1) / sb2
+            lam = omega * Lam
+            out["w_coupler"][...] = omega[:, None] * ez + lam[:, None] * Bv
+            if order < 2:
+                return
+            alpha = inputs[2]
+            w2 = omega * omega
+            out["alpha_output"][...] = psi.d2 * w2 + psi.d1 * alpha
+            out["dw_input"][...] = 0.0
+            out["dw_input"][:, 2] = alpha
+            out["dw_output"][...] = out["alpha_output"][:, None] * D
+            for name, X in (("aB", B), ("aC", C), ("aP", P)):
+                for k in range(3):
+                    out[name][:, k] = X[k].d2 * w2 + X[k].d1 * alpha
+            ddC = np.stack([x.d2 for x in C], axis=-1)
+            dBxC = np.cross(dB, Cv) + np.cross(Bv, dC)
+            dLam = (np.sum((ddC - np.cross(ez, dC)) * BxC, axis=-1) + np.sum(rel * dBxC, axis=-1)) / sb2
+            dlam = alpha * Lam + w2 * dLam
+            out["dw_coupler"][...] = (alpha[:, None] * ez + dlam[:, None] * Bv
+                                      + (lam * omega)[:, None] * np.cross(ez, Bv))
 
     def assembly_range(self):
         """The input angles where the linkage assembles; its ends are limit positions.

@@ -24,6 +24,7 @@ import numpy as np
 
 from mech._generated import spherical_polygons as _gen
 from mech._validate import arc_array as _arcs, finite_array
+from mech.spherical._coordinates import _norm
 
 __all__ = [
     "chain_components",
@@ -267,13 +268,13 @@ def close_polygon(axes):
     u = finite_array("axes", axes)
     if u.ndim < 2 or u.shape[-1] != 3 or u.shape[-2] < 3:
         raise ValueError(f"Expected `axes` of shape (..., n, 3) with n >= 3, got shape {u.shape}")
-    norm = np.linalg.norm(u, axis=-1, keepdims=True)
+    norm = _norm(u)[..., None]
     if np.any(norm == 0.0):
         raise ValueError("Expected nonzero `axes`, got a zero vector")
     u = u / norm
     nxt = np.roll(u, -1, axis=-2)
     cross = np.cross(u, nxt)
-    sine = np.linalg.norm(cross, axis=-1)
+    sine = _norm(cross)
     if np.any(sine == 0.0):
         raise ValueError("Expected consecutive `axes` that are not parallel, got a parallel pair")
     arcs = np.arctan2(sine, np.sum(u * nxt, axis=-1))

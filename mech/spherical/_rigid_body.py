@@ -11,7 +11,7 @@ import numpy as np
 
 from mech._generated.spherical_calculus import sph_rotation
 from mech._validate import finite_array
-from mech.spherical._coordinates import _cross_accurate, _vectors, local_frame
+from mech.spherical._coordinates import _cross_accurate, _norm, _vectors, local_frame
 
 __all__ = ["tangent", "inclination", "point_at", "rotation_matrix", "rotate_about", "turn",
            "angle_at", "triangle_point", "velocity"]
@@ -71,7 +71,7 @@ def tangent(a, b):
     """
     a, b, c = _great_circle_normal(_vectors("a", a), _vectors("b", b))
     t = np.cross(c, a)
-    return t / np.sqrt(_dot(t, t))[..., None]
+    return t / _norm(t)[..., None]
 
 
 def inclination(a, b):

@@ -105,16 +105,17 @@ def isogram(a, b, *, branch=1):
     Notes
     -----
     Its loop splits into two motions tan(psi/2) = k tan(theta/2) (eq. (3) of
-    :ref:`deriv-spherical-types`, see `isogram_output`) that meet at theta = 0 and pi. A
-    branch is a fixed root of the loop equation, so branch +1 follows the "parallelogram"
-    motion on (0, pi) and the crossed one on (pi, 2 pi); branch -1 the other way round.
+    :ref:`deriv-spherical-types`, see `isogram_output`) that meet at theta = 0 and pi.
+    `SphericalFourBar` continues each motion smoothly through these change points, so
+    branch +1 is the "parallelogram" motion at every input angle and branch -1 the crossed
+    one (each passes from one sign of det[B, D, C] to the other at 0 and pi).
 
     Examples
     --------
     >>> import numpy as np
     >>> from mech.spherical._special import isogram, isogram_output
-    >>> psi = isogram(0.4, 0.9).solve(1.0).psi
-    >>> bool(np.isclose(psi, isogram_output(1.0, 0.4, 0.9)))
+    >>> psi = isogram(0.4, 0.9).solve([1.0, 4.0]).psi
+    >>> np.allclose(psi, np.angle(np.exp(1j * isogram_output([1.0, 4.0], 0.4, 0.9))))
     True
     """
     return SphericalFourBar(a, b, a, b, branch=branch_sign(branch))

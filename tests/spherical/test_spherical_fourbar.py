@@ -14,6 +14,7 @@ import pytest
 from mech import AssemblyError
 from mech.planar import FourBar
 from mech.spherical._fourbar import SphericalFourBar, ground_frame
+from mech.spherical._types import classify
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import spherical_reference as ref  # noqa: E402
@@ -63,10 +64,14 @@ def _reference_angles(linkage, count=2, margin=0.05):
 def test_solve_matches_reference(case):
     arcs, branch, coupler, frame = LINKAGES[case]
     linkage = SphericalFourBar(*arcs, branch=branch, coupler=coupler, frame=frame)
-    reference = ref.Linkage(*arcs, branch=branch, coupler=coupler,
-                            frame=None if frame is None else frame.tolist())
+    meeting = classify(*arcs).meeting_angles
     omega, alpha = 1.3, -0.4
     for theta in _reference_angles(linkage):
+        # past a change point (0 or pi) the motion continues on the other det[B, D, C] sign
+        side = branch * (-1 if 0.0 in meeting and np.sin(theta / 2) < 0 else 1)
+        side *= -1 if np.pi in meeting and np.cos(theta / 2) < 0 else 1
+        reference = ref.Linkage(*arcs, branch=side, coupler=coupler,
+                                frame=None if frame is None else frame.tolist())
         pose = linkage.solve(theta, order=2, omega=omega, alpha=alpha)
         exact = ref.pose(reference, theta)
         exact.update(ref.rates(reference, theta, omega, alpha))

@@ -274,15 +274,16 @@ def test_isogram_output_closes_the_loop(a, b):
         assert np.all(np.abs(np.diff(psi)) < 0.5)          # continuous
 
 
-def test_isogram_branch_plus_is_parallel_then_crossed():
+def test_isogram_branch_plus_stays_parallel():
+    """Through its change points at 0 and pi the parallel isogram stays parallel and the
+    crossed one stays crossed (the branch guarantee of CONVENTIONS.md)."""
     a, b = 0.4, 0.9
-    theta = np.array([0.5, 2.0, 3.5, 5.0])
-    psi = isogram(a, b).solve(theta).psi
+    theta = np.array([-3.0, -1e-9, 0.0, 0.5, 2.0, np.pi, 3.5, 5.0])
     par = isogram_output(theta, a, b)
     cross = isogram_output(theta, a, b, crossed=True)
     wrap = lambda x: np.angle(np.exp(1j * x))
-    assert np.allclose(wrap(psi[:2] - par[:2]), 0.0, atol=1e-12)
-    assert np.allclose(wrap(psi[2:] - cross[2:]), 0.0, atol=1e-12)
+    assert np.allclose(wrap(isogram(a, b).solve(theta).psi - par), 0.0, atol=1e-12)
+    assert np.allclose(wrap(isogram(a, b, branch=-1).solve(theta).psi - cross), 0.0, atol=1e-12)
 
 
 def test_isogram_planar_limit():
