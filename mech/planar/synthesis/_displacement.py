@@ -55,8 +55,9 @@ def pose_set(theta, d, counts):
 
 
 def _wrapped_turn(theta_1, theta_i):
-    """theta_i - theta_1 wrapped into [-pi, pi), so that a whole turn counts as none."""
-    return np.remainder(theta_i - theta_1 + np.pi, 2 * np.pi) - np.pi
+    """theta_i - theta_1 less its nearest whole number of turns (exact when already small)."""
+    turn = theta_i - theta_1
+    return turn - 2 * np.pi * np.round(turn / (2 * np.pi))
 
 
 def displacement_matrix(theta_1, d_1, theta_i, d_i):
@@ -142,9 +143,9 @@ def pole(theta_1, d_1, theta_i, d_i):
 
     Notes
     -----
-    The relative turn is first wrapped into [-pi, pi), so poses a whole turn apart count
-    as a translation. For a small turn the pole is far away, as it must be; the half-angle
-    form keeps its relative accuracy. Derivation: :ref:`deriv-displacement`.
+    The relative turn is first reduced by its nearest whole number of turns, so poses a
+    whole turn apart count as a translation. For a small turn the pole is far away, as it
+    must be; the half-angle form keeps its relative accuracy. Derivation: :ref:`deriv-displacement`.
 
     Examples
     --------
