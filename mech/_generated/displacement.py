@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:9c9afc1f31bdb1d2f174ac5cdab5af5f9f926149350f5e91259c8c6e312d868b"
+INPUT_HASH = "sha256:5289dfbd12dea352f6ff562b5e619e29195760e083792e9a5911d1a5dfc53c05"
 
 __all__ = ['planar_displacement', 'displacement_pole', 'crank_design_row', 'crank_residual', 'slider_residual', 'circumcentre']
 
@@ -55,7 +55,7 @@ def planar_displacement(theta_1, x_1, y_1, theta_i, x_i, y_i):
 
 
 def displacement_pole(theta_1, x_1, y_1, theta_i, x_i, y_i):
-    """Pole of the displacement from pose 1 to pose i (half-angle form).
+    """Pole of the displacement from pose 1 to pose i (bisector and cot form).
 
     Generated from ``derivations/planar/displacement.md``, equations (2-31) to (2-40).
 
@@ -83,13 +83,13 @@ def displacement_pole(theta_1, x_1, y_1, theta_i, x_i, y_i):
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
-    x0 = (1/2)*theta_1 - 1/2*theta_i
-    x1 = np.sin(x0)
-    x2 = np.cos(x0)
-    x3 = (1/2)/x1
+    x0 = (1/2)*x_1
+    x1 = (1/2)*y_1
+    x2 = (1/2)*theta_1 - 1/2*theta_i
+    x3 = np.cos(x2)/np.sin(x2)
     return (
-        x3*(x1*x_1 + x1*x_i - x2*y_1 + x2*y_i),
-        -x3*(-x1*y_1 - x1*y_i - x2*x_1 + x2*x_i),
+        x0 + x3*(-x1 + (1/2)*y_i) + (1/2)*x_i,
+        x1 - x3*(-x0 + (1/2)*x_i) + (1/2)*y_i,
     )
 
 

@@ -141,6 +141,21 @@ def test_pole_small_turn_keeps_relative_accuracy():
     assert abs(q - complex(ref)) < 1e-12 * abs(complex(ref))
 
 
+def test_pole_beyond_float_range_is_infinite():
+    q = pole(0.0, 1e300, 1e-300, -1e300)          # about -2e600j: -inf on the bisector, never NaN
+    assert q.real == 0.0 and q.imag == -np.inf
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e300])
+def test_dyad_three_poses_scale_invariance(scale):
+    theta, d = np.array([0.0, 0.3, 0.7]), np.array([0, 1 + 0.2j, 1.8 + 0.9j])
+    ref = dyad_for_circle_point(theta, d, 0.5 + 0.5j)
+    got = dyad_for_circle_point(theta, d * scale, (0.5 + 0.5j) * scale)
+    assert abs(got.centre_point / scale - ref.centre_point) < 1e-14 * abs(ref.centre_point)
+    back = dyad_for_centre_point(theta, d * scale, got.centre_point)
+    assert abs(back.circle_point / scale - (0.5 + 0.5j)) < 1e-13
+
+
 def test_pole_pure_translation_raises():
     with pytest.raises(ValueError, match="pure translation"):
         pole(0.5, 0, 0.5, 1 + 1j)

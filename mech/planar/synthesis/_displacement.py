@@ -120,8 +120,9 @@ def displacement_matrix(theta_1, d_1, theta_i, d_i):
 def pole(theta_1, d_1, theta_i, d_i):
     """The pole of two poses: the one point of the plane that the displacement leaves fixed.
 
-    Solves ``Q = exp(1j*(theta_i - theta_1))*(Q - d_1) + d_i`` in the half-angle form
-    ``Q = 1j*(exp(-1j*h)*d_i - exp(1j*h)*d_1) / (2*sin(h))``, ``h = (theta_i - theta_1)/2``.
+    Solves ``Q = exp(1j*(theta_i - theta_1))*(Q - d_1) + d_i``: the pole lies on the
+    perpendicular bisector of the chord d_1 d_i, ``Q = (d_1 + d_i)/2 + 0.5j*(d_i - d_1)*cot(h)``
+    with ``h = (theta_i - theta_1)/2``.
 
     Parameters
     ----------
@@ -145,7 +146,8 @@ def pole(theta_1, d_1, theta_i, d_i):
     -----
     The relative turn is first reduced by its nearest whole number of turns, so poses a
     whole turn apart count as a translation. For a small turn the pole is far away, as it
-    must be; the half-angle form keeps its relative accuracy. Derivation: :ref:`deriv-displacement`.
+    must be; the chord-first form keeps its relative accuracy, and a pole beyond the float
+    range comes out infinite (never NaN). Derivation: :ref:`deriv-displacement`.
 
     Examples
     --------
@@ -165,6 +167,12 @@ def pole(theta_1, d_1, theta_i, d_i):
             "Expected poses that turn relative to each other (a pure translation has its pole at "
             f"infinity), got theta_1 = {float(t1.ravel()[k])!r}, theta_i = {float(ti.ravel()[k])!r}"
         )
-    with np.errstate(over="ignore"):   # a pole beyond the float range is infinite, correctly
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         qx, qy = _gen.displacement_pole(np.zeros_like(turn), p1.real, p1.imag, turn, pi_.real, pi_.imag)
-    return (qx + 1j * qy)[()]
+    # A pole beyond the float range is infinite along the bisector; where the chord has a
+    # zero component, 0 * inf gave NaN and the exact value is the midpoint's component.
+    qx = np.where(np.isnan(qx), p1.real / 2 + pi_.real / 2, qx)
+    qy = np.where(np.isnan(qy), p1.imag / 2 + pi_.imag / 2, qy)
+    out = np.empty(turn.shape, dtype=complex)
+    out.real, out.imag = qx, qy        # not qx + 1j*qy: 1j * inf would put a NaN in the real part
+    return out[()]

@@ -67,11 +67,18 @@ def _images(theta, d, z):
 
 
 def _circumcentre(w):
-    """Circumcentres of the three points on the last axis of `w`."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        cx, cy = _gen.circumcentre(w[..., 0].real, w[..., 0].imag, w[..., 1].real, w[..., 1].imag,
-                                   w[..., 2].real, w[..., 2].imag)
-    return cx + 1j * cy
+    """Circumcentres of the three points on the last axis of `w` (inf or NaN if collinear).
+
+    The points are moved to the first and scaled by their spread, so squares of their
+    coordinates neither overflow nor underflow at any unit of length.
+    """
+    rel = w - w[..., :1]
+    scale = np.max(np.abs(rel), axis=-1)
+    scale = np.where(scale > 0, scale, 1.0)
+    rel = rel / scale[..., None]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        cx, cy = _gen.circumcentre(0.0, 0.0, rel[..., 1].real, rel[..., 1].imag, rel[..., 2].real, rel[..., 2].imag)
+        return w[..., 0] + scale * (cx + 1j * cy)
 
 
 def _bisector_point(w, along):
@@ -132,8 +139,8 @@ def dyad_for_circle_point(theta, d, circle_point, *, along=0.0):
     >>> theta, d = np.array([0.0, 0.3, 0.7]), np.array([0, 1 + 0.2j, 1.8 + 0.9j])
     >>> crank = dyad_for_circle_point(theta, d, 0.5 + 0.5j)
     >>> Z = np.exp(1j * theta) * crank.circle_point + d
-    >>> np.round(np.abs(Z - crank.centre_point) - crank.length, 12)
-    array([ 0.,  0., -0.])
+    >>> bool(np.allclose(np.abs(Z - crank.centre_point), crank.length, rtol=1e-14))
+    True
     """
     theta, d = pose_set(theta, d, (2, 3))
     z = complex_array("circle_point", circle_point)
