@@ -20,7 +20,7 @@ def _axes(ax, size=(7.5, 6.5)):
     return ax
 
 
-def poses_figure(theta, d, *, length, ax=None, colour="black"):
+def poses_figure(theta, d, *, length, ax=None, colour="black", labels=True):
     """Draw each pose as its reference point and an arrow along its reference line.
 
     Parameters
@@ -31,6 +31,8 @@ def poses_figure(theta, d, *, length, ax=None, colour="black"):
         Reference points (the translations of the poses).
     length : float
         Length of the drawn reference lines.
+    labels : bool, optional
+        Write P_1, P_2, ... beside the reference points.
     """
     ax = _axes(ax)
     theta, d = np.asarray(theta, dtype=float), np.asarray(d, dtype=complex)
@@ -39,7 +41,8 @@ def poses_figure(theta, d, *, length, ax=None, colour="black"):
         ax.annotate("", xy=(t.real, t.imag), xytext=(p.real, p.imag),
                     arrowprops={"arrowstyle": "-|>", "color": colour, "lw": 1.6})
         ax.plot(p.real, p.imag, "o", color=colour, ms=5)
-        ax.annotate(f"$P_{k}$", (p.real, p.imag), xytext=(-14, 4), textcoords="offset points", fontsize=10)
+        if labels:
+            ax.annotate(f"$P_{k}$", (p.real, p.imag), xytext=(-14, 4), textcoords="offset points", fontsize=10)
     ax.set_aspect("equal")
     ax.grid(alpha=0.25)
     return ax
@@ -61,7 +64,7 @@ def burmester_figure(theta, d, centres, circle_positions, *, length, ax=None, la
     labels : sequence of str, optional
         One legend entry per dyad.
     """
-    ax = poses_figure(theta, d, length=length, ax=ax)
+    ax = poses_figure(theta, d, length=length, ax=ax, labels=False)
     centres = np.asarray(centres, dtype=complex)
     circle_positions = np.asarray(circle_positions, dtype=complex)
     labels = labels or [f"dyad {k + 1}" for k in range(centres.size)]
