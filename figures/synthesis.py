@@ -7,7 +7,7 @@ draw, and return the axes. Nothing is computed or drawn at import.
 
 import numpy as np
 
-__all__ = ["poses_figure", "burmester_figure", "guidance_fourbar_figure"]
+__all__ = ["poses_figure", "burmester_figure", "curves_figure", "guidance_fourbar_figure"]
 
 _DYAD_COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink")
 
@@ -79,6 +79,57 @@ def burmester_figure(theta, d, centres, circle_positions, *, length, ax=None, la
         ax.plot([A.real, Z[0].real], [A.imag, Z[0].imag], "-", color=colour, lw=1.5)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return ax
+
+
+def curves_figure(theta, d, curves, *, length, axes=None, labels=None, marks=None, limits=None):
+    """Draw circle-point curves (left, at pose 1) and centre-point curves (right) of pose sets.
+
+    Parameters
+    ----------
+    theta, d : array_like, shape (n,)
+        The poses, as in `poses_figure`.
+    curves : sequence of (array_like of complex, array_like of complex)
+        For each curve, its circle points in the ground frame at pose 1 and its centre
+        points (any shape; NaN entries are skipped).
+    length : float
+        Length of the drawn reference lines.
+    axes : pair of Axes, optional
+        Where to draw; a new figure with two panels when None.
+    labels : sequence of str, optional
+        One legend entry per curve.
+    marks : (array_like of complex, array_like of complex), optional
+        Points to mark on the two panels (e.g. the Burmester moving pivots and centre points).
+    limits : sequence of two (xmin, xmax, ymin, ymax), optional
+        Axis limits of the two panels.
+    """
+    from matplotlib.lines import Line2D
+
+    if axes is None:
+        import matplotlib.pyplot as plt
+
+        _, axes = plt.subplots(1, 2, figsize=(12.0, 6.0))
+    labels = labels or [f"curve {k + 1}" for k in range(len(curves))]
+    handles = []
+    for side, (ax, title) in enumerate(zip(axes, ("circle points (pose 1)", "centre points"))):
+        poses_figure(theta, d, length=length, ax=ax, labels=False)
+        for k, pair in enumerate(curves):
+            colour = _DYAD_COLOURS[k % len(_DYAD_COLOURS)]
+            pts = np.asarray(pair[side], dtype=complex).ravel()
+            pts = pts[np.isfinite(pts)]
+            ax.plot(pts.real, pts.imag, ".", color=colour, ms=1.5)
+            if side == 0:
+                handles.append(Line2D([], [], color=colour, marker="o", ls="", label=labels[k]))
+        if marks is not None:
+            m = np.asarray(marks[side], dtype=complex)
+            ax.plot(m.real, m.imag, "^" if side else "o", mfc="none", mec="black", ms=11, mew=1.5)
+        if limits is not None:
+            ax.set_xlim(*limits[side][:2])
+            ax.set_ylim(*limits[side][2:])
+        ax.set_title(title, fontsize=10)
+    if marks is not None:
+        handles.append(Line2D([], [], color="black", marker="^", mfc="none", ls="", label="Burmester dyads (5 poses)"))
+    axes[1].legend(handles=handles, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    return axes
 
 
 def guidance_fourbar_figure(theta, d, A, D, B, C, path, *, length, ax=None):

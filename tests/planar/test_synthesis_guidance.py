@@ -11,6 +11,7 @@ from scipy.optimize import least_squares
 from mech import InputTypeError
 from mech.planar import FourBar, grashof
 from mech.planar.synthesis import (
+    circle_point_curve,
     Dyad,
     burmester,
     displacement_matrix,
@@ -381,3 +382,81 @@ def test_bad_values_raise(call, match):
 def test_wrong_types_raise(call, match):
     with pytest.raises(InputTypeError, match=match):
         call()
+
+
+# --- four poses: the circle-point curve ------------------------------------------------------
+
+def _concyclic_mp(Z):
+    """Imaginary part of the cross-ratio of four points at 50 digits, over its size (0 if concyclic)."""
+    with mpmath.workdps(50):
+        z = [mpmath.mpc(complex(v).real, complex(v).imag) for v in Z]
+        cr = (z[0] - z[2]) * (z[1] - z[3]) / ((z[0] - z[3]) * (z[1] - z[2]))
+        return float(abs(mpmath.im(cr)) / abs(cr))
+
+
+def test_circle_point_curve_points_are_concyclic():
+    """Every valid circle point's four positions lie on a circle (cross-ratio real, mpmath),
+    about the reported centre point."""
+    theta, d = np.radians(EX_DEG[:4]), EX_P[:4]
+    curve = circle_point_curve(theta, d, samples=120)
+    assert curve.valid.sum() > 100
+    for z, A in zip(curve.circle_point[curve.valid], curve.centre_point[curve.valid]):
+        Z = np.exp(1j * theta) * z + d
+        assert _concyclic_mp(Z) < 1e-9
+        r = np.abs(Z - A)
+        assert np.max(np.abs(r - r[0])) < 1e-9 * r[0]
+    assert np.all(np.isnan(curve.circle_point[~curve.valid]))
+
+
+def test_circle_point_curve_contains_burmester_points():
+    """The Burmester dyads of poses 1-5 lie on the curve of poses 1-4."""
+    theta, d = np.radians(EX_DEG), EX_P
+    pole_z = circle_point_curve(theta[:4], d[:4], samples=1).pole
+    for dyad in burmester(theta, d).dyads:
+        phi = np.angle(dyad.circle_point - pole_z) % np.pi
+        curve = circle_point_curve(theta[:4], d[:4], phi=[phi])
+        err = np.nanmin(np.abs(curve.circle_point[0] - dyad.circle_point))
+        assert err < 1e-9 * max(1.0, abs(dyad.circle_point))
+        k = int(np.nanargmin(np.abs(curve.circle_point[0] - dyad.circle_point)))
+        assert abs(curve.dyad(0, k).centre_point - dyad.centre_point) < 1e-9 * max(1.0, abs(dyad.centre_point))
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e300])
+def test_circle_point_curve_scale_invariance(scale):
+    theta, d = np.radians(EX_DEG[:4]), EX_P[:4]
+    ref = circle_point_curve(theta, d, samples=60)
+    got = circle_point_curve(theta, d * scale, samples=60)
+    assert np.array_equal(ref.valid, got.valid)
+    v = ref.valid
+    assert np.max(np.abs(got.centre_point[v] / scale - ref.centre_point[v]) / np.abs(ref.centre_point[v])) < 1e-10
+
+
+def test_four_pose_fourbar_from_the_curve():
+    """Two points of the curve make four-bars that FourBar moves through the four poses."""
+    theta, d = np.radians(EX_DEG[:4]), EX_P[:4]
+    curve = circle_point_curve(theta, d, samples=24)
+    picks = [(i, k) for i in range(24) for k in range(2) if curve.valid[i, k]]
+    passing = []
+    for m in range(1, len(picks)):
+        result = guidance_fourbars(theta, d, [curve.dyad(*picks[0]), curve.dyad(*picks[m])])
+        passing.extend(result.passing)
+        for cand in result.candidates:       # a candidate that reproduces the poses on one branch passes
+            assert cand.passes == (cand.in_order and cand.pose_error <= 1e-9)
+    assert len(passing) >= 5
+    for cand in passing:
+        t, dd = cand.coupler_poses(cand.theta_input)
+        size = max(cand.linkage.a, cand.linkage.b, cand.linkage.c, cand.linkage.d)
+        assert np.max(np.abs(dd - d)) < 1e-9 * size
+        assert np.max(np.abs(np.angle(np.exp(1j * (t - theta))))) < 1e-9
+
+
+def test_circle_point_curve_bad_input():
+    theta, d = np.radians(EX_DEG[:4]), EX_P[:4]
+    with pytest.raises(ValueError, match="Expected `samples`"):
+        circle_point_curve(theta, d, samples=0)
+    with pytest.raises(ValueError, match="turn relative"):
+        circle_point_curve(np.zeros(4), d)
+    with pytest.raises(ValueError, match="Expected a valid point"):
+        curve = circle_point_curve(theta, d, samples=200)
+        i, k = np.argwhere(~curve.valid)[0]
+        curve.dyad(int(i), int(k))
