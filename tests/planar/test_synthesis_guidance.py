@@ -215,8 +215,6 @@ def test_three_pose_fourbar_reproduces_poses():
     """Two chosen circle points give a four-bar that FourBar moves through the three poses."""
     theta, d = np.array([0.0, 0.35, 0.8]), np.array([0, 0.9 + 0.25j, 1.6 + 0.9j])
     dyads = [dyad_for_circle_point(theta, d, z) for z in (-0.4 - 0.6j, 0.9 - 0.7j)]
-    dyads = [Dyad(*(np.asarray(f)[()] for f in (k.circle_point, k.moving_pivot, k.centre_point, k.length)))
-             for k in dyads]
     result = guidance_fourbars(theta, d, dyads)
     assert result.passing
     for cand in result.passing:
@@ -363,6 +361,7 @@ def test_burmester_dependent_poses_raise():
     (lambda: dyad_for_circle_point([0.0, 1.0], [0, 1], 0j, along=np.nan), "Expected finite `along`"),
     (lambda: guidance_fourbars([0.0, 1.0, 2.0], [0, 1, 1j]), "Expected `dyads`"),
     (lambda: guidance_fourbars([0.0, 1.0, 2.0], [0, 1, 1j], ["crank"]), "Expected `dyads`"),
+    (lambda: guidance_fourbars([0.0, 1.0, 2.0], [0, 1, 1j], [Dyad(0j, 1j, np.nan, 1.0)]), "finite numeric"),
     (lambda: pole(0.0, 0, 1.0, np.nan), "Expected finite `d_i`"),
 ])
 def test_bad_values_raise(call, match):

@@ -128,9 +128,9 @@ def _candidate(theta, d, crank, rocker, rtol):
     A, D = crank.centre_point, rocker.centre_point
     zB, zC = crank.circle_point, rocker.circle_point
     lengths = (crank.length, abs(zC - zB), rocker.length, abs(D - A))
-    unit = max(lengths)
-    if not (np.isfinite(unit) and min(lengths) > 0.0):
+    if not all(np.isfinite(x) and x > 0.0 for x in lengths):
         return None
+    unit = max(lengths)
     angle = float(np.angle(D - A))
     rot = np.exp(-1j * angle)
     # the checks run on a copy scaled to a longest link of 1: angles do not change, and no
@@ -228,6 +228,10 @@ def guidance_fourbars(theta, d, dyads=None, *, rtol=1e-9):
     for k, dyad in enumerate(dyads):
         if not isinstance(dyad, Dyad) or np.ndim(dyad.length) != 0:
             raise ValueError(f"Expected `dyads` of single Dyad records, got {dyad!r} at index {k}")
+        fields = (dyad.circle_point, dyad.moving_pivot, dyad.centre_point, dyad.length)
+        if not all(isinstance(f, (int, float, complex, np.number)) and not isinstance(f, (bool, np.bool_))
+                   and np.isfinite(f) for f in fields):
+            raise ValueError(f"Expected `dyads` with finite numeric fields, got {dyad!r} at index {k}")
     candidates = []
     for i, crank in enumerate(dyads):
         for j, rocker in enumerate(dyads):
