@@ -122,6 +122,18 @@ def test_example_2_15_displacement_matrices():
     text_41 = displacement_matrix(0.0, EX_P[0], np.radians(63.38), EX_P[3])
     assert abs(text_41[1, 2] - 17.129) < 1e-3 and abs(text_41[0, 2] - 207.030) < 1e-3
     assert abs(M[3, 0, 1] - np.sin(np.radians(3.0))) < 1e-15
+    # constant terms (t_x^2 + t_y^2)/2 of the expanded equations: printed 25.105, 41.874, 25.369
+    k0 = 0.5 * (M[:, 0, 2] ** 2 + M[:, 1, 2] ** 2)
+    assert np.allclose(k0[[0, 1, 3]], [1260.47, 3506.87, 1287.15], atol=0.01)
+
+
+def test_example_2_15_text_solution_is_not_a_solution():
+    """The text's A = (-4.53e-4, -1.58e-6), B_1 = (-82.512, 70.711): the crank length would
+    have to vary from 108.34 to 110.35 over the five poses (catalog item 5)."""
+    th = np.radians(EX_DEG)
+    B = np.exp(1j * th) * (-82.512 + 70.711j - EX_P[0]) + EX_P
+    r = np.abs(B - (-4.53e-4 - 1.58e-6j))
+    assert np.allclose(r, [108.666, 108.498, 108.337, 110.353, 108.690], atol=1e-3)
 
 
 def test_pole_is_fixed():
