@@ -245,7 +245,8 @@ def _intersect_conics(Q1, Q2):
     best = None
     for angle in np.linspace(0.0, np.pi, 13)[:-1]:
         R1, R2 = _rotate(Q1, np.cos(angle), np.sin(angle)), _rotate(Q2, np.cos(angle), np.sin(angle))
-        score = min(abs(R1[3]) / np.linalg.norm(R1[3:]), abs(R2[3]) / np.linalg.norm(R2[3:]))
+        n1, n2 = np.linalg.norm(R1[3:]), np.linalg.norm(R2[3:])
+        score = min(abs(R1[3]) / n1 if n1 > 0 else 0.0, abs(R2[3]) / n2 if n2 > 0 else 0.0)
         if best is None or score > best[0]:
             best = (score, angle, R1, R2)
     _, angle, R1, R2 = best
@@ -256,7 +257,11 @@ def _intersect_conics(Q1, Q2):
     e2 = P.polysub(a1 * b2, a2 * b1)
     e3 = P.polysub(P.polymul(b1, c2), P.polymul(b2, c1))
     quartic = P.polysub(P.polymul(e1, e1), P.polymul(e2, e3))
-    quartic = np.trim_zeros(quartic / np.max(np.abs(quartic)), "b")
+    top = np.max(np.abs(quartic))
+    if not top > 0:
+        raise ValueError("Expected five poses with finitely many Burmester dyads, got poses whose "
+                         "two conditions share a whole curve of solutions")
+    quartic = np.trim_zeros(quartic / top, "b")
     points = []
     for m in np.roots(quartic[::-1]) if quartic.size > 1 else []:
         # l from either conic's quadratic in l at this m; keep the candidate that fits both
@@ -265,13 +270,23 @@ def _intersect_conics(Q1, Q2):
             bm, cm = P.polyval(m, b), P.polyval(m, c)
             cands.extend(np.roots([a, bm, cm]) if abs(a) > 0 else ([-cm / bm] if bm != 0 else []))
         l = min(cands, key=lambda v: abs(_conic_eval(R1, v, m)) + abs(_conic_eval(R2, v, m)))
-        for _ in range(6):
-            f = np.array([_conic_eval(R1, l, m), _conic_eval(R2, l, m)])
-            J = np.array([_conic_grad(R1, l, m), _conic_grad(R2, l, m)])
-            if not np.all(np.isfinite(J)) or abs(np.linalg.det(J)) == 0:
-                break
-            step = np.linalg.solve(J, f)
-            l, m = l - step[0], m - step[1]
+        best = (np.inf, l, m)
+        with np.errstate(over="ignore", invalid="ignore"):
+            for _ in range(7):
+                f = np.array([_conic_eval(R1, l, m), _conic_eval(R2, l, m)])
+                size = np.max(np.abs(f))
+                if not np.isfinite(size):
+                    break
+                if size < best[0]:
+                    best = (size, l, m)
+                J = np.array([_conic_grad(R1, l, m), _conic_grad(R2, l, m)])
+                try:
+                    step = np.linalg.solve(J, f)
+                except np.linalg.LinAlgError:
+                    break
+                l, m = l - step[0], m - step[1]
+        # the iterate with the smallest residual, in case a step near a singular point diverged
+        _, l, m = best
         c, s = np.cos(angle), np.sin(angle)
         points.append((c * l - s * m, s * l + c * m))
     return points
@@ -290,8 +305,8 @@ def _polish(rows, X):
             step = np.linalg.solve(J, F)
         except np.linalg.LinAlgError:
             break
-        if not np.all(np.isfinite(step)):
-            break
+        if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > max(1.0, abs(x), abs(y), abs(p), abs(q)):
+            break       # a step larger than the point itself: near a singular point, keep the point
         x, y, p, q = x - step[0], y - step[1], p - step[2], q - step[3]
         if np.max(np.abs(step)) <= 1e-16 * max(1.0, abs(x), abs(y), abs(p), abs(q)):
             break
