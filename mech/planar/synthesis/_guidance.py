@@ -269,6 +269,8 @@ def _intersect_conics(Q1, Q2):
         for a, b, c in ((a1, b1, c1), (a2, b2, c2)):
             bm, cm = P.polyval(m, b), P.polyval(m, c)
             cands.extend(np.roots([a, bm, cm]) if abs(a) > 0 else ([-cm / bm] if bm != 0 else []))
+        if not cands:       # both conics free of l here: a root at infinity, not a crank
+            continue
         l = min(cands, key=lambda v: abs(_conic_eval(R1, v, m)) + abs(_conic_eval(R2, v, m)))
         best = (np.inf, l, m)
         with np.errstate(over="ignore", invalid="ignore"):
