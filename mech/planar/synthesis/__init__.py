@@ -5,4 +5,22 @@ the placement and the input angles that reproduce the task, so a design is check
 analysing it.
 """
 
-__all__ = []
+from mech.planar.synthesis._function_generation import (
+    FunctionGenerator,
+    FunctionMap,
+    chebyshev_spacing,
+    freudenstein_coefficients,
+    least_squares,
+    lengths_from_coefficients,
+    precision_pairs,
+)
+
+__all__ = [
+    "FunctionGenerator",
+    "FunctionMap",
+    "chebyshev_spacing",
+    "freudenstein_coefficients",
+    "least_squares",
+    "lengths_from_coefficients",
+    "precision_pairs",
+]
