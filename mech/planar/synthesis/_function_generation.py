@@ -63,7 +63,7 @@ def freudenstein_coefficients(a, b, c, d):
     --------
     >>> from mech.planar.synthesis import freudenstein_coefficients
     >>> freudenstein_coefficients(10, 40, 30, 35).round(6)
-    array([ 3.5     ,  1.166667, -0.125   ])
+    array([3.5     , 1.166667, 1.041667])
     """
     lengths = [positive_length(n, v) for n, v in zip("abcd", (a, b, c, d))]
     # ratios of the lengths to d: the same numbers at any scale, no overflow in a^2
@@ -101,7 +101,7 @@ def lengths_from_coefficients(k1, k2, k3, d=1.0):
     Examples
     --------
     >>> from mech.planar.synthesis import lengths_from_coefficients
-    >>> lengths_from_coefficients(3.5, 35 / 30, -0.125, d=35).round(9)
+    >>> lengths_from_coefficients(3.5, 35 / 30, 625 / 600, d=35).round(9)
     array([10., 40., 30., 35.])
     """
     k = [real_number(f"k{i + 1}", v) for i, v in enumerate((k1, k2, k3))]
@@ -237,6 +237,9 @@ class FunctionGenerator:
         self.theta0, self.psi0, self.branch = float(theta0), float(psi0), int(branch)
         self.x, self.y = np.array(x, dtype=float), np.array(y, dtype=float)
         self.fourbar = FourBar(a, b, c, d, branch=self.branch)
+        # angles depend on length ratios only: simulate the linkage scaled to d = 1, so
+        # that no length scale can overflow or underflow inside the solver
+        self._unit = FourBar(a / d, b / d, c / d, 1.0, branch=self.branch)
         self.coefficients = freudenstein_coefficients(a, b, c, d)
         self.input_angles = self.theta0 + self.x
         lo, hi = (np.min(self.x), np.max(self.x)) if x_range is None else x_range
@@ -250,8 +253,8 @@ class FunctionGenerator:
         err = self.structural_error(self.x, self.y)
         self.pair_error = float(np.max(np.nan_to_num(np.abs(err), nan=np.inf)))
         dense = np.linspace(*self.x_range, samples)
-        pose = self.fourbar.solve(self.theta0 + dense, order=1)
-        gamma = self.fourbar.transmission_angle(self.theta0 + dense)
+        pose = self._unit.solve(self.theta0 + dense, order=1)
+        gamma = self._unit.transmission_angle(self.theta0 + dense)
         i = int(np.nanargmin(gamma)) if np.any(pose.valid) else 0
         self.min_transmission_angle = (float(gamma[i]), float(dense[i]))
         self.monotone = bool(np.all(pose.valid) and (np.all(pose.omega_output > 0)
@@ -284,10 +287,13 @@ class FunctionGenerator:
         """The FourBar's poses at input rotations `x` (angles theta0 + x)."""
         return self.fourbar.solve(self.theta0 + finite_array("x", x), order=order)
 
+    def _psi(self, x):
+        return self._unit.solve(self.theta0 + finite_array("x", x)).psi
+
     def output(self, x):
         """Generated output rotation psi(theta0 + x) - psi0, wrapped to (-pi, pi]; NaN where the
         linkage does not assemble."""
-        return _wrap(self.solve(x).psi - self.psi0)
+        return _wrap(self._psi(x) - self.psi0)
 
     def structural_error(self, x, y=None):
         """Structural error psi(theta0 + x) - (psi0 + y), wrapped to (-pi, pi], eq. (7); with `y`
@@ -298,7 +304,7 @@ class FunctionGenerator:
                 raise ValueError("Expected `y` (this design has no `target`), got None")
             y = self.target(x)
         y = finite_array("y", y)
-        return _wrap(self.solve(x).psi - self.psi0 - y)
+        return _wrap(self._psi(x) - self.psi0 - y)
 
     def errors(self, samples=721):
         """(max |structural error|, RMS) over `samples` input rotations spanning `x_range`."""
@@ -340,9 +346,9 @@ def _from_signed(signed, theta0, psi0, x, y, **options):
     psi0 = psi0 + np.pi * (c < 0)
     a, c = abs(a), abs(c)
     first = int(np.argmin(x))
-    B = a * np.exp(1j * (theta0 + x[first]))
-    C = d + c * np.exp(1j * (psi0 + y[first]))
-    cross = ((d - B).conjugate() * (C - B)).imag
+    B = a / d * np.exp(1j * (theta0 + x[first]))          # in units of d: no overflow
+    C = 1.0 + c / d * np.exp(1j * (psi0 + y[first]))
+    cross = ((1.0 - B).conjugate() * (C - B)).imag
     branch = 1 if cross >= 0 else -1
     return FunctionGenerator((a, b, c, d), float(_wrap(theta0)), float(_wrap(psi0)), branch, x, y, **options)
 
@@ -472,10 +478,12 @@ def least_squares(x, y, *, theta0, psi0, d=1.0, kind="structural", fit_start=Fal
     --------
     >>> import numpy as np
     >>> from mech.planar.synthesis import least_squares
-    >>> x = np.linspace(0.0, np.radians(90.0), 31); y = 0.5 * np.sin(x)
-    >>> fit = least_squares(x, y, theta0=np.radians(45.0), psi0=np.radians(100.0), d=1.0)
-    >>> fit.pair_error < 1e-2
-    True
+    >>> from mech.planar.synthesis import FunctionMap
+    >>> m = FunctionMap(np.log10, (1.0, 10.0), np.radians(100.0), -np.radians(60.0))
+    >>> X, Y = m.rotations(np.linspace(1.0, 10.0, 31))
+    >>> fit = least_squares(X, Y, theta0=np.radians(40.0), psi0=np.radians(245.0), d=100.0, target=m)
+    >>> fit.covers_range, round(fit.errors()[0] / abs(m.output_scale), 4)     # max error in y
+    (True, 0.01)
     """
     x, y = _pairs(x, y, 3)
     theta0, psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
