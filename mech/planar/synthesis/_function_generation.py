@@ -13,7 +13,7 @@ meets its pairs, on which branch, and whether one branch covers the range.
 import numpy as np
 
 from mech._generated.function_generation import fg_coefficients, fg_lengths, fg_output_terms, fg_row
-from mech._validate import bool_flag, finite_array, positive_length, real_number
+from mech._validate import bool_flag, finite_array, positive_length, real_array, real_number
 from mech.planar._fourbar import FourBar
 from mech.spherical._function_generation import chebyshev_spacing
 
@@ -170,16 +170,20 @@ class FunctionMap:
         return self.psi_range / (self.y_end - self.y_start)
 
     def input_rotation(self, x):
+        """Input rotation X at function arguments `x` (F93)."""
         return self.theta_range * (finite_array("x", x) - self.x_start) / (self.x_end - self.x_start)
 
     def input_value(self, X):
+        """Function argument x at input rotations `X`."""
         return self.x_start + (self.x_end - self.x_start) * finite_array("X", X) / self.theta_range
 
     def output_rotation(self, y):
+        """Output rotation Y at function values `y` (F93)."""
         return self.output_scale * (finite_array("y", y) - self.y_start)
 
     def output_value(self, Y):
-        return self.y_start + finite_array("Y", Y) / self.output_scale
+        """y at output rotations `Y`; NaN passes through (a linkage that did not assemble)."""
+        return self.y_start + real_array("Y", Y, finite=False) / self.output_scale
 
     def rotations(self, x):
         """Rotations (X, Y) of the links at function arguments `x`."""
