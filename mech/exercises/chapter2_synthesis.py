@@ -59,7 +59,8 @@ def design_2_29(p, *, interior=False):
     if interior:
         psi = np.pi - psi
     x, y = phi - phi[0], psi - psi[0]
-    return precision_pairs(x, y, theta0=phi[0], psi0=psi[0], d=d, x_range=(min(0.0, x.min()), max(0.0, x.max())))
+    design, = precision_pairs(x, y, theta0=phi[0], psi0=psi[0], d=d, x_range=(min(0.0, x.min()), max(0.0, x.max())))
+    return design
 
 
 def _flipped(angle, start):

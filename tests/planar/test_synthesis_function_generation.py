@@ -111,7 +111,7 @@ def test_precision_pairs_met_when_resolved_by_fourbar():
     for _ in range(40):
         lengths, branch, theta, psi = _random_task(rng)
         theta0, psi0 = theta[0] - 0.1, psi[0] + 0.2
-        g = precision_pairs(theta - theta0, psi - psi0, theta0=theta0, psi0=psi0, d=lengths[3])
+        g, = precision_pairs(theta - theta0, psi - psi0, theta0=theta0, psi0=psi0, d=lengths[3])
         pose = g.fourbar.solve(g.input_angles)
         assert np.all(pose.valid)
         worst = max(worst, np.max(np.abs(_wrap(pose.psi - (psi0 + psi - psi0)))))
@@ -128,8 +128,8 @@ def test_precision_pairs_met_when_resolved_by_fourbar():
 def test_precision_pairs_scale_invariant(scale):
     x = np.radians([0.0, 30.0, 60.0])
     y = np.radians([0.0, 20.0, 35.0])
-    ref = precision_pairs(x, y, theta0=np.radians(60.0), psi0=np.radians(30.0), d=1.0)
-    g = precision_pairs(x, y, theta0=np.radians(60.0), psi0=np.radians(30.0), d=scale)
+    ref, = precision_pairs(x, y, theta0=np.radians(60.0), psi0=np.radians(30.0), d=1.0)
+    g, = precision_pairs(x, y, theta0=np.radians(60.0), psi0=np.radians(30.0), d=scale)
     assert np.allclose(np.array(g.lengths) / scale, ref.lengths, rtol=1e-13)
     assert g.pair_error < 1e-12 and g.defect == ref.defect
 
@@ -143,7 +143,8 @@ def test_precision_pairs_singular_system():
     "kwargs, match",
     [
         (dict(x=[0, 1], y=[0, 1]), "Expected at least 3 pairs"),
-        (dict(x=[0, 1, 2, 3], y=[0, 1, 2, 3]), "Expected exactly 3"),
+        (dict(x=[0, 1, 2, 3], y=[0, 1, 2, 3]), "Expected 1 of `theta0`, `psi0` given for 4 pairs"),
+        (dict(x=np.arange(6.0), y=np.arange(6.0)), "Expected at most 5"),
         (dict(x=[0, 1, 2], y=[0, 1]), "Expected `x` and `y`"),
         (dict(x=[0, 1, np.nan], y=[0, 1, 2]), "`x`"),
         (dict(d=-1.0), "Expected `d` > 0"),
@@ -167,6 +168,44 @@ def test_bad_types_are_input_type_errors():
         precision_pairs([0.0, 0.5, 1.0], [0.0, 0.3, 0.5], theta0=True, psi0=2.0)
     with pytest.raises(InputTypeError, match="`fit_start`"):
         least_squares([0.0, 0.5, 1.0], [0.0, 0.3, 0.5], theta0=1.0, psi0=2.0, fit_start=1)
+
+
+def _random_five(rng):
+    """Five pairs taken at 30 digits from a random four-bar on one branch."""
+    while True:
+        lengths = rng.uniform(0.3, 2.0, 4)
+        if np.max(lengths) >= np.sum(lengths) - np.max(lengths):
+            continue
+        branch = int(rng.choice([-1, 1]))
+        theta = np.sort(rng.uniform(-np.pi, np.pi, 5))
+        try:
+            with mpmath.workdps(30):
+                psi = np.array([float(_mp_psi(lengths, t, branch)) for t in theta])
+        except ValueError:
+            continue
+        return lengths, theta, psi
+
+
+@pytest.mark.parametrize("unknown", ["theta0", "psi0", "both"])
+def test_precision_pairs_free_start_angles_recover_the_linkage(unknown):
+    """Four pairs with one start angle unknown, five with both (F88): among the designs is
+    the linkage the pairs came from, and every design meets its pairs when re-solved by
+    FourBar (or is flagged as not doing so)."""
+    rng = np.random.default_rng({"theta0": 1, "psi0": 2, "both": 3}[unknown])
+    for _ in range(25):
+        lengths, theta, psi = _random_five(rng)
+        n = 5 if unknown == "both" else 4
+        given = {"theta0": dict(psi0=psi[0]), "psi0": dict(theta0=theta[0]), "both": {}}[unknown]
+        x, y = theta[:n] - theta[0], psi[:n] - psi[0]
+        designs = precision_pairs(x, y, d=lengths[3], **given)
+        assert 1 <= len(designs) <= 3
+        assert any(np.allclose(g.lengths, lengths, rtol=1e-7) for g in designs)
+        for g in designs:
+            pose = FourBar(*g.lengths, branch=g.branch).solve(g.input_angles)
+            met = np.max(np.abs(_wrap(pose.psi - g.psi0 - y)))
+            assert (met < 1e-9) == (g.defect != "branch")
+            if unknown != "theta0":
+                assert np.isclose(np.cos(g.theta0 - theta[0]) ** 2, 1.0) or unknown == "both"
 
 
 # ----------------------------------------------------------------------------- example 2-16
@@ -217,7 +256,7 @@ def test_example_2_16_book_pairs_catalog_values():
     a = -117.194 (B at alpha + 180), b = 102.473, c = 165.724, also by inversion."""
     alpha = np.radians([66.7, 98.89, 142.19])
     phi = np.radians([250.25, 272.66, 286.21])
-    g = precision_pairs(alpha - alpha[0], phi - phi[0], theta0=alpha[0], psi0=phi[0], d=100.0)
+    g, = precision_pairs(alpha - alpha[0], phi - phi[0], theta0=alpha[0], psi0=phi[0], d=100.0)
     s, b, t = _inversion_design(alpha, phi, 100.0, [-117.0, 165.0])
     assert np.allclose(g.lengths, [abs(s), b, abs(t), 100.0], rtol=1e-10)
     assert np.allclose(g.lengths[:3], [117.194, 102.473, 165.724], atol=5e-4)
@@ -233,7 +272,7 @@ def test_example_2_16_corrected_textbook_setup():
     X, Y = m.rotations(chebyshev_spacing(1.0, 10.0, 3))
     assert np.allclose(np.degrees(60 * DEG + X), [66.6987, 110.0, 153.3013], atol=1e-4)
     assert np.allclose(np.degrees(240 * DEG + Y), [252.2942, 284.4218, 298.3797], atol=1e-4)
-    g = precision_pairs(X, Y, theta0=60 * DEG, psi0=240 * DEG, d=100.0, target=m)
+    g, = precision_pairs(X, Y, theta0=60 * DEG, psi0=240 * DEG, d=100.0, target=m)
     s, b, t = _inversion_design(60 * DEG + X, 240 * DEG + Y, 100.0, [-107.0, 142.0])
     assert np.allclose(g.lengths, [abs(s), b, abs(t), 100.0], rtol=1e-10)
     assert np.allclose(g.lengths[:3], [106.7952, 105.8297, 142.4020], atol=1e-4)
@@ -248,7 +287,7 @@ def test_example_2_16_free_start_angles_cover_the_range():
     catalog's developer note), one branch covers 1 <= x <= 10 with max error 0.0066 in y."""
     m = FunctionMap(np.log10, (1.0, 10.0), 100 * DEG, -60 * DEG)
     X, Y = m.rotations(chebyshev_spacing(1.0, 10.0, 3))
-    g = precision_pairs(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0, target=m)
+    g, = precision_pairs(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0, target=m)
     assert g.covers_range and g.monotone and g.defect is None
     assert np.allclose(g.lengths[:3], [89.3158, 118.8922, 67.7154], atol=1e-4)
     # the error in y from FourBar poses, against log10 directly
@@ -262,15 +301,56 @@ def test_example_2_16_free_start_angles_cover_the_range():
     assert np.isclose(np.degrees(gamma), 26.36, atol=0.01)
 
 
+def _inversion_five(x, y, d, guess):
+    """F88 to (2-45) at 30 digits, rotations from pose 1 (x[0] = y[0] = 0): A turned about D
+    by -y_i (F88), the input link turned by x_i - y_i (F89); B1 = (xB, yB) and C1 = (xC, yC) with |P_i1 B1 - C1| = |B1 - C1|,
+    i = 2..5. Returns the lengths a, b, c."""
+    with mpmath.workdps(30):
+        x = [mpmath.mpf(v) for v in x]
+        y = [mpmath.mpf(v) for v in y]
+        d = mpmath.mpf(d)
+
+        def equations(xb, yb, xc, yc):
+            out = []
+            for i in range(1, 5):
+                t = x[i] - y[i]
+                px = mpmath.cos(t) * xb - mpmath.sin(t) * yb + d - d * mpmath.cos(y[i])
+                py = mpmath.sin(t) * xb + mpmath.cos(t) * yb + d * mpmath.sin(y[i])
+                out.append((px - xc) ** 2 + (py - yc) ** 2 - (xb - xc) ** 2 - (yb - yc) ** 2)
+            return out
+
+        xb, yb, xc, yc = mpmath.findroot(equations, guess)
+        return [float(mpmath.hypot(xb, yb)), float(mpmath.hypot(xb - xc, yb - yc)),
+                float(mpmath.hypot(xc - d, yc))]
+
+
+def test_example_2_16_five_chebyshev_points_free_start_angles():
+    """Ex. 2-16's function through five Chebyshev points with both start angles free (the
+    text's analytical route F88): the design agrees with the inversion equations solved at
+    30 digits, covers the range, and has a largest error of about 0.0013 in y."""
+    m = FunctionMap(np.log10, (1.0, 10.0), 100 * DEG, -60 * DEG)
+    X, Y = m.rotations(chebyshev_spacing(1.0, 10.0, 5))
+    designs = precision_pairs(X, Y, d=100.0, target=m)
+    g = designs[0]
+    assert g.covers_range and g.pair_error < 1e-9
+    a, b, c, d = g.lengths
+    B1 = a * np.exp(1j * (g.theta0 + X[0]))          # pose 1 is the reference of the inversion
+    C1 = d + c * np.exp(1j * (g.psi0 + Y[0]))
+    guess = [B1.real + 0.5, B1.imag - 0.5, C1.real + 0.5, C1.imag + 0.5]
+    want = _inversion_five(X - X[0], Y - Y[0], 100.0, guess)
+    assert np.allclose(g.lengths[:3], want, rtol=1e-10)
+    assert 0.0012 < g.errors(2001)[0] / abs(m.output_scale) < 0.0014
+
+
 def test_reversal_and_branch_defects():
     m = FunctionMap(np.log10, (1.0, 10.0), 100 * DEG, -60 * DEG)
     X, Y = m.rotations(chebyshev_spacing(1.0, 10.0, 3))
     # counter-clockwise pairs at the clockwise start angles: met, but not on one branch
     Xc, Yc = FunctionMap(np.log10, (1.0, 10.0), 100 * DEG, 60 * DEG).rotations(chebyshev_spacing(1.0, 10.0, 3))
-    g = precision_pairs(Xc, Yc, theta0=40 * DEG, psi0=245 * DEG, d=100.0)
+    g, = precision_pairs(Xc, Yc, theta0=40 * DEG, psi0=245 * DEG, d=100.0)
     assert g.defect == "branch" and g.pair_error > 1e-3
     # a non-monotone target is allowed to reverse
-    g = precision_pairs(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0, target=lambda x: 0.3 * np.sin(4 * x))
+    g, = precision_pairs(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0, target=lambda x: 0.3 * np.sin(4 * x))
     assert g.defect in (None, "reversal")
 
 
@@ -279,7 +359,7 @@ def test_reversal_and_branch_defects():
 def test_least_squares_three_points_is_exact(kind):
     m = FunctionMap(np.log10, (1.0, 10.0), 100 * DEG, -60 * DEG)
     X, Y = m.rotations(chebyshev_spacing(1.0, 10.0, 3))
-    exact = precision_pairs(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0)
+    exact, = precision_pairs(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0)
     fit = least_squares(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0, kind=kind)
     assert np.allclose(fit.lengths, exact.lengths, rtol=1e-9)
     assert fit.branch == exact.branch and fit.pair_error < 1e-9
@@ -339,7 +419,7 @@ def test_function_map_errors_and_inverse():
 
 
 def test_function_generator_read_only():
-    g = precision_pairs([0.0, 0.5, 1.0], [0.0, 0.3, 0.5], theta0=1.0, psi0=2.0)
+    g, = precision_pairs([0.0, 0.5, 1.0], [0.0, 0.3, 0.5], theta0=1.0, psi0=2.0)
     with pytest.raises(AttributeError):
         g.lengths = (1, 2, 3, 4)
     with pytest.raises(ValueError, match="Expected `y`"):

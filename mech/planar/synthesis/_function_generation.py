@@ -357,19 +357,121 @@ def _from_signed(signed, theta0, psi0, x, y, **options):
     return FunctionGenerator((a, b, c, d), float(_wrap(theta0)), float(_wrap(psi0)), branch, x, y, **options)
 
 
-def precision_pairs(x, y, *, theta0, psi0, d=1.0, target=None, x_range=None, samples=721, tol=1e-9):
-    """The four-bar whose output meets y at x exactly: psi0 + y_i = psi(theta0 + x_i), i = 1..3.
+def _matrix(theta, psi):
+    """[G | h] of Freudenstein's rows, shape (..., n, 4)."""
+    return np.stack(np.broadcast_arrays(*fg_row(theta, psi)), axis=-1)
 
-    Three precision pairs (精确点) with the start angles and the ground d given: the linear
-    3x3 system (5) for Freudenstein's K1, K2, K3, then the lengths by (4). The design is
+
+def _half_turn_roots(f):
+    """Roots u in [0, pi) of f(u) = alpha cos^2 u + beta cos u sin u + gamma sin^2 u, evaluated
+    through `f` (broadcast over leading axes); shape (..., 2), NaN where there are none.
+
+    f = P + Q cos 2u + R sin 2u, so the roots are 2u = atan2(R, Q) +- arccos(-P / hypot(Q, R)).
+    """
+    f0, f1, f2 = f(0.0), f(np.pi / 4), f(np.pi / 2)
+    P, Q, R = 0.5 * (f0 + f2), 0.5 * (f0 - f2), f1 - 0.5 * (f0 + f2)
+    amp = np.hypot(Q, R)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = -P / amp
+    ok = np.abs(ratio) <= 1.0
+    spread = np.arccos(np.where(ok, ratio, 0.0))
+    centre = np.arctan2(R, Q)
+    roots = np.stack([centre + spread, centre - spread], axis=-1) / 2.0
+    return np.where(ok[..., None], np.mod(roots, np.pi), np.nan)
+
+
+def _start_angles(x, y, theta0, psi0):
+    """Every (theta0, psi0) in [0, pi)^2 (or with the given angle) at which the pairs are
+    consistent: det [G | h] = 0 for four pairs (and for pairs 1, 2, 3, 5 with five)."""
+    if theta0 is not None and psi0 is not None:
+        return [(theta0, psi0)]
+    if psi0 is None and theta0 is not None:
+        roots = _half_turn_roots(lambda u: np.linalg.det(_matrix(theta0 + x, u + y)))
+        return [(theta0, float(u)) for u in roots[np.isfinite(roots)]]
+    if theta0 is None and psi0 is not None:
+        roots = _half_turn_roots(lambda u: np.linalg.det(_matrix(u + x, psi0 + y)))
+        return [(float(u), psi0) for u in roots[np.isfinite(roots)]]
+    first, second = np.array([0, 1, 2, 3]), np.array([0, 1, 2, 4])
+
+    def det(idx, t, u):
+        t, u = np.broadcast_arrays(np.asarray(t, dtype=float), np.asarray(u, dtype=float))
+        with np.errstate(invalid="ignore"):            # NaN u: theta0 where the curve has no point
+            return np.linalg.det(_matrix(t[..., None] + x[idx], u[..., None] + y[idx]))
+
+    def branch_roots(t):
+        return _half_turn_roots(lambda u: det(first, t, u))
+
+    # psi0 on the curve det(first) = 0 is a continuous function of theta0 on each of its two
+    # roots (mod pi, and the determinants have period pi in both angles); a sign change of
+    # det(second) along it brackets a start-angle pair
+    grid = np.linspace(0.0, np.pi, 721)
+    traced = branch_roots(grid)
+    found = []
+    for j in (0, 1):
+        u = traced[:, j]
+        g = det(second, grid, u)
+        for i in np.flatnonzero(np.isfinite(g[:-1]) & np.isfinite(g[1:]) & (np.sign(g[:-1]) != np.sign(g[1:]))):
+            lo, hi, glo = grid[i], grid[i + 1], g[i]
+            for _ in range(60):                            # bisection: g changes sign on [lo, hi]
+                mid = 0.5 * (lo + hi)
+                umid = branch_roots(mid)[j]
+                gmid = det(second, mid, umid)
+                if not np.isfinite(gmid):
+                    break
+                if np.sign(gmid) == np.sign(glo):
+                    lo, glo = mid, gmid
+                else:
+                    hi = mid
+            t = 0.5 * (lo + hi)
+            found.append((float(t), float(branch_roots(t)[j])))
+    # a solution on the short arc where the two roots join (a fold of the curve, between
+    # two samples): det(second) has opposite signs on the two roots at the sample next to it
+    exists = np.all(np.isfinite(traced), axis=1)
+    edges = exists & ~(np.r_[False, exists[:-1]] & np.r_[exists[1:], False])
+    for i in np.flatnonzero(edges):
+        g0, g1 = det(second, grid[i], traced[i, 0]), det(second, grid[i], traced[i, 1])
+        if np.sign(g0) != np.sign(g1):
+            u0, u1 = traced[i]
+            middle = u0 + 0.5 * (np.mod(u1 - u0 + np.pi / 2, np.pi) - np.pi / 2)
+            found.append(_newton2(lambda z: np.array([det(first, z[0], z[1]), det(second, z[0], z[1])]),
+                                  (grid[i], middle)))
+    return found
+
+
+def _newton2(F, z, steps=40):
+    """Newton's method on two equations in two unknowns (central-difference Jacobian)."""
+    z = np.array(z, dtype=float)
+    h = 1e-7
+    for _ in range(steps):
+        f = F(z)
+        J = np.column_stack([(F(z + h * e) - F(z - h * e)) / (2 * h) for e in np.eye(2)])
+        try:
+            step = np.linalg.solve(J, -f)
+        except np.linalg.LinAlgError:
+            break
+        z = z + step
+        if np.max(np.abs(step)) <= 4 * np.finfo(float).eps * (1.0 + np.max(np.abs(z))):
+            break
+    return float(z[0]), float(z[1])
+
+
+def precision_pairs(x, y, *, theta0=None, psi0=None, d=1.0, target=None, x_range=None, samples=721,
+                    tol=1e-9):
+    """Four-bars whose output meets y at x exactly: psi0 + y_i = psi(theta0 + x_i).
+
+    Freudenstein's equation (3) at each precision pair (精确点): three pairs with both start
+    angles given (one linear 3x3 solve (5)), four pairs with one start angle unknown (the
+    two roots of a quadratic in its cosine and sine), five pairs with both unknown (the
+    textbook's F88; continuation of one quadratic, bisection on a second). Each linkage is
     then simulated by `FourBar` through the pairs and over the input range.
 
     Parameters
     ----------
-    x, y : array_like, shape (3,)
-        Input and output rotations from the start angles, radians.
-    theta0, psi0 : float
-        Start angles of the input link (A->B) and output link (D->C), radians.
+    x, y : array_like, shape (n,)
+        Input and output rotations from the start angles, radians; 3 <= n <= 5.
+    theta0, psi0 : float or None
+        Start angles of the input link (A->B) and output link (D->C), radians; both for
+        n = 3, one for n = 4, none for n = 5.
     d : float, optional
         Ground length AD, > 0 (the free scale).
     target : callable, optional
@@ -384,48 +486,69 @@ def precision_pairs(x, y, *, theta0, psi0, d=1.0, target=None, x_range=None, sam
 
     Returns
     -------
-    FunctionGenerator
-        Its `defect` and `covers_range` say whether one branch covers the range.
+    designs : tuple of FunctionGenerator
+        Every real linkage found (one for n = 3), those that cover the range first, then
+        by largest error at the pairs; `defect` and `covers_range` tell them apart.
 
     Raises
     ------
     ValueError
-        For bad pairs, a singular system (repeated pairs), or no real linkage (b^2 <= 0 or a
-        link of infinite length).
+        For bad pairs, a wrong number of start angles, or no real linkage (b^2 <= 0, a link
+        of infinite length, a singular system).
 
     Notes
     -----
     Page ``deriv-function-generation``, eqs. (3) to (5); the textbook reaches the same
-    linkage by inversion, (2-43) to (2-45). A negative length from (4) is realised by
-    turning that link by pi, so `theta0` or `psi0` of the result may differ by pi from
-    the arguments. With the start angles fixed only three pairs can be met exactly; more
-    pairs need `least_squares`.
+    linkages by inversion, (2-43) to (2-45). A negative length from (4) is realised by
+    turning that link by pi, so `theta0` or `psi0` of a result may differ by pi from the
+    arguments; for the same reason unknown start angles are searched in [0, pi) only.
 
     Examples
     --------
     >>> import numpy as np
     >>> from mech.planar.synthesis import precision_pairs
     >>> x = np.radians([0.0, 30.0, 60.0]); y = np.radians([0.0, 20.0, 35.0])
-    >>> g = precision_pairs(x, y, theta0=np.radians(60.0), psi0=np.radians(30.0), d=100.0)
+    >>> g, = precision_pairs(x, y, theta0=np.radians(60.0), psi0=np.radians(30.0), d=100.0)
     >>> g.pair_error < 1e-12
     True
     """
     x, y = _pairs(x, y, 3)
-    if x.size != 3:
-        raise ValueError(f"Expected exactly 3 precision pairs with fixed start angles (use least_squares "
-                         f"for more), got {x.size}")
-    theta0, psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
+    n = x.size
+    theta0 = None if theta0 is None else real_number("theta0", theta0)
+    psi0 = None if psi0 is None else real_number("psi0", psi0)
+    given = (theta0 is not None) + (psi0 is not None)
+    if n > 5:
+        raise ValueError(f"Expected at most 5 precision pairs (use least_squares for more), got {n}")
+    if given != {3: 2, 4: 1, 5: 0}[n]:
+        raise ValueError(f"Expected {({3: 2, 4: 1, 5: 0}[n])} of `theta0`, `psi0` given for {n} pairs, got {given}")
     d = positive_length("d", d)
     x_range = _common(target, x_range, samples)
-    G = np.stack(np.broadcast_arrays(*fg_row(theta0 + x, psi0 + y)), axis=-1)
-    with np.errstate(all="ignore"):
-        cond = np.linalg.cond(G[:, :3])
-    if not np.isfinite(cond) or cond * np.finfo(float).eps > 1e-3:
-        raise ValueError(f"Expected three independent precision pairs, got a singular system "
-                         f"(condition number {cond:.3g}) for x = {x}, y = {y}")
-    k = np.linalg.solve(G[:, :3], G[:, 3])
-    signed = lengths_from_coefficients(*k, d=d)
-    return _from_signed(signed, theta0, psi0, x, y, x_range=x_range, target=target, samples=samples, tol=tol)
+    designs, problems = [], []
+    for t0, p0 in _start_angles(x, y, theta0, psi0):
+        M = _matrix(t0 + x, p0 + y)
+        try:
+            k = np.linalg.solve(M[:, :3], M[:, 3]) if n == 3 else np.linalg.lstsq(M[:, :3], M[:, 3], rcond=None)[0]
+        except np.linalg.LinAlgError as err:
+            problems.append(str(err))
+            continue
+        if np.max(np.abs(M[:, :3] @ k - M[:, 3])) > tol * (1.0 + np.max(np.abs(k))):
+            # a root where [G | h] is singular without the pairs being consistent
+            problems.append(f"start angles ({t0!r}, {p0!r}) do not satisfy every pair")
+            continue
+        try:
+            signed = lengths_from_coefficients(*k, d=d)
+            design = _from_signed(signed, t0, p0, x, y, x_range=x_range, target=target, samples=samples, tol=tol)
+        except ValueError as err:
+            problems.append(str(err))
+            continue
+        if any(np.allclose(design.lengths, g.lengths, rtol=tol) and abs(_wrap(design.theta0 - g.theta0)) <= tol
+               for g in designs):
+            continue                                       # found twice (a fold and a crossing)
+        designs.append(design)
+    if not designs:
+        detail = f": {problems[0]}" if problems else ""
+        raise ValueError(f"Expected a real four-bar through the {n} precision pairs, got none{detail}")
+    return tuple(sorted(designs, key=lambda g: (not g.covers_range, g.defect == "branch", g.pair_error)))
 
 
 def _psi_model(p, d, theta, branch):
