@@ -221,11 +221,25 @@ class FunctionGenerator:
     Returned by `precision_pairs` and `least_squares`; read-only. Every number below comes
     from simulating `fourbar` (not from the design equations).
 
+    Parameters
+    ----------
+    lengths : (float, float, float, float)
+        a, b, c, d, > 0.
+    theta0, psi0 : float
+        Start angles (FourBar convention), radians.
+    branch : {1, -1}
+    x, y : array_like, shape (n,)
+        Input and output rotations of the pairs, radians.
+    x_range, target, samples, tol
+        As in `precision_pairs` (``tol=np.inf`` skips the check at the pairs).
+
     Attributes
     ----------
     fourbar : FourBar
-        The linkage, standard frame (A = 0, D = d on +x: the task's frame, so the placement
-        is the identity), on the branch of the first pair.
+        The linkage, standard frame (A = 0, D = d on +x), on the branch of the first pair.
+    placement : (complex, float)
+        Translation and rotation mapping the standard frame onto the task's ground frame:
+        ``(0j, 0.0)``, function generation poses its task in the standard frame.
     lengths : tuple of float
         a, b, c, d (positive).
     theta0, psi0 : float
@@ -249,6 +263,19 @@ class FunctionGenerator:
         Largest |structural error| at the pairs.
     min_transmission_angle : (float, float)
         Smallest transmission angle over the sampled range and the input rotation x there.
+    monotone : bool
+        Whether the output turns one way only over the sampled range.
+    coefficients : ndarray, shape (3,)
+        Freudenstein's K1, K2, K3 of `lengths` (for the FourBar's angles).
+    covers_range : bool
+        ``defect is None``.
+
+    Notes
+    -----
+    Page ``deriv-function-generation``. The range is checked at `samples` input rotations
+    (a limit position between two samples whose excursion is shorter than the spacing
+    could be missed). Angles are simulated on the linkage scaled to its longest link, so
+    any length scale works; `fourbar` itself has the given lengths.
     """
 
     def __init__(self, lengths, theta0, psi0, branch, x, y, *, x_range=None, target=None,
@@ -263,6 +290,7 @@ class FunctionGenerator:
         self.x, self.y = _pairs(x, y, 1)
         x_range = _common(target, x_range, samples, tol)
         self.fourbar = FourBar(a, b, c, d, branch=self.branch)
+        self.placement = (0j, 0.0)
         # angles depend on length ratios only: simulate the linkage scaled to its longest
         # link, so that no length scale can overflow or underflow inside the solver
         m = max(self.lengths)
