@@ -231,6 +231,20 @@ def test_example_2_16_chebyshev_nodes():
     assert np.allclose(x, _chebyshev_reference(1.0, 10.0, 3), rtol=1e-15)
     assert np.allclose(x, [1.60289, 5.5, 9.39711], atol=5e-6)
     assert not np.isclose(x[1], 4.5)
+    assert np.isclose(np.log10(8.397), 0.92412, atol=1e-5)      # the text prints 0.9211
+
+
+def test_example_2_16_printed_design_misses_its_pairs():
+    """The text's final linkage (118.066, 54.23, 168.269, 100), simulated at its own
+    precision inputs, turns its output by 27.30 and 44.60 deg (or 11.13 and 41.99 on the
+    other branch), not by the 22.41 and 35.96 deg asked."""
+    alpha = np.radians([66.7, 98.89, 142.19])
+    want = np.radians([272.66 - 250.25, 286.21 - 250.25])
+    for branch in (1, -1):
+        pose = FourBar(118.066, 54.23, 168.269, 100.0, branch=branch).solve(alpha)
+        assert pose.valid.all()
+        got = _wrap(pose.psi[1:] - pose.psi[0])
+        assert np.max(np.abs(got - want)) > np.radians(5.0)
 
 
 def _inversion_design(alpha, phi, d, guess):
