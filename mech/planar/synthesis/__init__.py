@@ -5,9 +5,16 @@ the placement and the input angles that reproduce the task, so a design is check
 analysing it.
 """
 
-__all__ = []
-
 from mech.planar.synthesis._displacement import displacement_matrix, pole
+from mech.planar.synthesis._function_generation import (
+    FunctionGenerator,
+    FunctionMap,
+    chebyshev_spacing,
+    freudenstein_coefficients,
+    least_squares,
+    lengths_from_coefficients,
+    precision_pairs,
+)
 from mech.planar.synthesis._guidance import (
     BurmesterPoints,
     Dyad,
@@ -18,6 +25,12 @@ from mech.planar.synthesis._guidance import (
 from mech.planar.synthesis._guidance_curve import BurmesterCurve, circle_point_curve
 from mech.planar.synthesis._guidance_fourbar import GuidanceFourBar, GuidanceSynthesis, guidance_fourbars
 
-__all__ += ["GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars",
-            "displacement_matrix", "pole", "Dyad", "BurmesterPoints", "burmester",
-            "dyad_for_circle_point", "dyad_for_centre_point", "BurmesterCurve", "circle_point_curve"]
+__all__ = [
+    # displacements (2-31)-(2-37) and rigid-body guidance
+    "displacement_matrix", "pole", "Dyad", "dyad_for_circle_point", "dyad_for_centre_point",
+    "BurmesterCurve", "circle_point_curve", "BurmesterPoints", "burmester",
+    "GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars",
+    # function generation (2-43)-(2-45)
+    "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
+    "least_squares", "lengths_from_coefficients", "precision_pairs",
+]
