@@ -43,13 +43,11 @@ def fourbar_lengths(a, b, c, d):
 
 
 def _unscale(z, exponent):
-    """Multiply an array (real or complex) by ``2**exponent`` exactly, in place."""
-    if np.iscomplexobj(z):
-        np.ldexp(z.real, exponent, out=z.real)
-        np.ldexp(z.imag, exponent, out=z.imag)
-    else:
-        np.ldexp(z, exponent, out=z)
-    return z
+    """A complex array times ``2**exponent``, rounded once (exact unless subnormal)."""
+    out = np.empty_like(z)
+    np.ldexp(z.real, exponent, out=out.real)
+    np.ldexp(z.imag, exponent, out=out.imag)
+    return out
 
 
 def _store(out, name, x, y):
@@ -82,14 +80,15 @@ class FourBarPose(Pose):
     }
     _DERIVED = ("phi", "psi")
 
-    def __init__(self, d, order, fields):
+    def __init__(self, unit, order, fields):
         super().__init__(order, fields)
-        object.__setattr__(self, "_d", d)
+        # B, C and d in the scaled lengths: the angles read from them keep every bit
+        # even where the points in the user's unit are subnormal
+        object.__setattr__(self, "_unit", unit)
 
     def _derive(self, name):
-        C = self._fields["C"]
-        start = self._fields["B"] if name == "phi" else self._d
-        return np.angle(C - start)[()]
+        B, C, d = self._unit
+        return np.angle(C - (B if name == "phi" else d))[()]
 
 
 class FourBar:
@@ -229,9 +228,12 @@ class FourBar:
         if strict and not np.all(valid):
             bad = float(flat[0][~valid][0])
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
+        unit = (out["B"].reshape(shape), out["C"].reshape(shape), self._unit[3])
+        for name in _COMPLEX.intersection(out):
+            out[name] = _unscale(out[name], self._exponent)
         fields = {name: value.reshape(shape)[()] for name, value in out.items()}
         fields["theta"] = np.broadcast_to(theta, shape)[()]
-        return FourBarPose(self._d, order, fields)
+        return FourBarPose(unit, order, fields)
 
     def _solve_block(self, inputs, order, out):
         """Solve one block of flat inputs, writing into the views in `out`."""
@@ -254,9 +256,6 @@ class FourBar:
                 self._change_point_rates(inputs, order, out, ratios if self._kite else None)
             elif order >= 1:
                 self._rates(inputs, order, out, (Bx, By, Cx, Cy, S))
-        for name in ("B", "C", "P", "vB", "vC", "vP", "aB", "aC", "aP"):
-            if name in out:
-                _unscale(out[name], self._exponent)
 
     def _rates(self, inputs, order, out, position):
         """Rates of a linkage without change points, by the generated velocity loop."""
