@@ -110,17 +110,31 @@ class FourBar:
     ------
     ValueError
         If a length is not positive and finite, if one link is at least as long as the
-        other three together, or if `branch` is not +1 or -1.
+        other three together (the message names it), or if `branch` is not +1 or -1.
 
     Notes
     -----
     Positions come from the loop-closure equation in atan2 form with a factored,
     half-angle area term (derivation page :ref:`deriv-fourbar-position`), so they stay
-    accurate up to the limit positions. At a change point the two branches meet and the
-    solution continues smoothly onto the other sign of the area term (a parallelogram
-    stays a parallelogram); `branch` names the branch by its sign just after
-    theta = 0. Exactly at such a meeting point the loop equations do not fix the rates,
-    so velocities and accelerations are NaN there while positions are valid.
+    accurate up to the limit positions.
+
+    *Branch rule.* At a change point (s + l = p + q) the two branches meet, all four
+    joints in line, and the solution continues smoothly onto the other side of B->D (a
+    parallelogram stays a parallelogram, an anti-parallelogram stays anti). `branch`
+    names the branch by the side of C for input angles just above 0, where the
+    branches differ; as sin(theta/2) has period 4 pi, a linkage whose branch changes
+    sides once per turn comes back to its starting side after two turns. At the meeting
+    point the rates are their limits along the branch, found from factored formulas
+    (module `mech.planar._fourbar_change`), so they are finite and continuous.
+
+    *Degenerate pose.* The kite a = d, b = c (the rhombus included) has its crank pin B
+    on the pivot D at theta = 0. The pose is assembled there: C is the limit along the
+    branch, C = B + branch * b, and the rates are limits too. Only where the triangle
+    BCD cannot close is a pose invalid (NaN); a valid pose never has a NaN field.
+
+    *Scaling.* The lengths are divided internally by a power of two that brings the
+    longest link into [1/2, 1), so any finite positive lengths work (1e-300 to 1e300),
+    angles do not depend on the unit, and points scale exactly with the lengths.
 
     Examples
     --------
