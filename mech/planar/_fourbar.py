@@ -43,10 +43,15 @@ def fourbar_lengths(a, b, c, d):
 
 
 def _unscale(z, exponent):
-    """A complex array times ``2**exponent``, rounded once (exact unless subnormal)."""
+    """A complex array times ``2**exponent``, rounded once (exact unless subnormal).
+
+    A point beyond the float range (links near 1e308) becomes inf, as IEEE arithmetic
+    would give it; the angles, read from the scaled points, stay exact.
+    """
     out = np.empty_like(z)
-    np.ldexp(z.real, exponent, out=out.real)
-    np.ldexp(z.imag, exponent, out=out.imag)
+    with np.errstate(over="ignore"):
+        np.ldexp(z.real, exponent, out=out.real)
+        np.ldexp(z.imag, exponent, out=out.imag)
     return out
 
 
@@ -134,7 +139,8 @@ class FourBar:
 
     *Scaling.* The lengths are divided internally by a power of two that brings the
     longest link into [1/2, 1), so any finite positive lengths work (1e-300 to 1e300),
-    angles do not depend on the unit, and points scale exactly with the lengths.
+    angles do not depend on the unit, and points scale exactly with the lengths (a
+    point beyond the float range, with links near 1e308, is inf).
 
     Examples
     --------
