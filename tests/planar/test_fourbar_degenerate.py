@@ -1,13 +1,16 @@
 """FourBar through its change points and through the kite pose where B meets D.
 
-The oracle is independent of the package: at 100 digits it intersects the circles about B
+The oracle is independent of the package: at 120 digits it intersects the circles about B
 and D, follows one root by continuity from a pose 0.25 rad away from the change point
-(where the branch is named by the side of C), walking in geometric steps down to 1e-40
+(where the branch is named by the side of C), walking in geometric steps down to 1e-30
 rad from the change point and out on the other side, and takes the rates from the loop
-equation as ratios of cross products. Those ratios read 0/0 at the change point itself,
-but 1e-40 rad away they still carry 40 correct digits (the height of C over BD, about
-1e-40, is found from its square at 120 digits), so the oracle evaluates any angle closer
-than 1e-40 rad to the change point 1e-40 rad away: an error of order 1e-40.
+equation as ratios of cross products. Those ratios read 0/0 at the change point itself.
+At a distance t from it the height of C over BD (about t) comes from its square, so it
+keeps 120 digits less twice those of t, and so do the velocity ratios; the acceleration
+ratios, whose numerators cancel down to about t, lose three times the digits of t: at
+t = 1e-30 that leaves about 30 correct digits. So the
+oracle evaluates any angle closer than 1e-30 rad to the change point 1e-30 rad away, an
+error of order 1e-30.
 """
 
 import mpmath
@@ -17,7 +20,7 @@ import pytest
 from mech.planar import FourBar
 
 DPS = 120
-TINY = mpmath.mpf("1e-40")
+TINY = mpmath.mpf("1e-30")
 
 # (a, b, c, d), the change-point angles, and what kind of change point they are
 LINKAGES = {
