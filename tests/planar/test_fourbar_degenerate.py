@@ -127,10 +127,9 @@ WORST = {}
 def test_solve_change_point_against_mpmath(name, branch, centre):
     """Positions and rates at, near and up to 1 rad from each change point against mpmath
     (the rates of a change-point linkage come from the factored formulas everywhere):
-    errors relative
-    to the linkage size L (positions), L omega (velocities), L (omega^2 + |alpha|)
-    (accelerations), and likewise for the angular rates, or to the value itself where
-    that is larger, below 4e-15."""
+    errors relative to the linkage size L (positions), L omega (velocities),
+    L (omega^2 + |alpha|) (accelerations), and likewise for the angular rates, or to the
+    value itself where that is larger, below 4e-15."""
     lengths, _ = LINKAGES[name]
     linkage = FourBar(*lengths, branch=branch, coupler=COUPLER)
     oracle = Oracle(lengths, branch, centre)
