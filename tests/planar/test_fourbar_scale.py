@@ -16,6 +16,8 @@ import warnings
 
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from mech.planar import FourBar
 from mech.planar._atlas import coupler_dashes
@@ -184,3 +186,27 @@ def test_fourbar_extreme_length_ratio():
     assert pose.valid.all()
     assert np.all(np.abs(pose.omega_output) < 1e-299)
     assert math.isclose(float(np.abs(pose.C[0] - 1e300)), 1e300, rel_tol=1e-15)
+
+
+@settings(max_examples=60, deadline=None)
+@given(lengths=st.lists(st.floats(0.05, 1.0), min_size=4, max_size=4),
+       coupler=st.tuples(st.floats(-2, 2), st.floats(-2, 2)),
+       k=st.integers(-1000, 1000), branch=st.sampled_from([1, -1]))
+def test_solve_scale_power_of_two_random(lengths, coupler, k, branch):
+    """Random linkages at a random power-of-two scale: the same bits, scaled."""
+    assume(max(lengths) < sum(lengths) - max(lengths))
+    s = 2.0**k
+    # the scaled inputs themselves must be exact (not subnormal) for the claim to hold
+    assume(all(x == 0 or abs(x * s) >= np.finfo(float).tiny for x in (*lengths, *coupler)))
+    theta = np.linspace(-4, 4, 41)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        base = FourBar(*lengths, branch=branch, coupler=coupler).solve(theta, order=2)
+        pose = FourBar(*(x * s for x in lengths), branch=branch,
+                       coupler=tuple(x * s for x in coupler)).solve(theta, order=2)
+    ok = base.valid
+    assert np.array_equal(pose.valid, ok)
+    for name in POINTS:
+        assert np.array_equal(getattr(pose, name)[ok], getattr(base, name)[ok] * s), name
+    for name in ANGLES:
+        assert np.array_equal(getattr(pose, name)[ok], getattr(base, name)[ok]), name
