@@ -16,10 +16,13 @@ error of order 1e-30.
 import mpmath
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from mech.planar import FourBar
 
 DPS = 120
+EPS = np.finfo(float).eps
 TINY = mpmath.mpf("1e-30")
 
 # (a, b, c, d), the change-point angles, and what kind of change point they are
@@ -209,3 +212,45 @@ def test_solve_rhombus_branches():
     folded = FourBar(1, 1, 1, 1, branch=-1).solve(theta, order=2)
     np.testing.assert_allclose(folded.C, 0.0, atol=1e-15)
     np.testing.assert_allclose(folded.omega_coupler, 1.0, atol=1e-15)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.integers(1, 64), min_size=3, max_size=3),
+       st.permutations(range(4)), st.sampled_from([1, -1]))
+def test_solve_random_change_point_linkage_continuous(shorts, order, branch):
+    """Random change-point linkages (s + l = p + q exactly, lengths in 1/64 steps, links
+    in any order): valid at every change point, and across each one psi and omega_output
+    agree with the trapezoidal integrals of omega_output and alpha_output (no jump), and
+    alpha_output with the central difference of omega_output."""
+    s, p, q = sorted(x / 64 for x in shorts)
+    sides = (s, p, q, p + q - s)
+    a, b, c, d = (sides[i] for i in order)
+    assume(max(a, b, c, d) < a + b + c + d - max(a, b, c, d))
+    linkage = FourBar(a, b, c, d, branch=branch)
+    centres = ([0.0] if abs(d - a) == abs(c - b) else []) + ([np.pi] if b + c == a + d else [])
+    assert centres
+    for centre in centres:
+        grid = centre + np.linspace(-1e-3, 1e-3, 20001)
+        theta = np.unique(np.concatenate([grid, centre + np.array([0.0, 1e-300, -1e-300, 1e-16])]))
+        pose = linkage.solve(theta, order=2)
+        assert pose.valid.all()
+        step = np.diff(theta)
+        dpsi = np.angle(np.exp(1j * np.diff(pose.psi)))
+        w, al = pose.omega_output, pose.alpha_output
+        assert np.all(np.isfinite(w)) and np.all(np.isfinite(al))
+        # Rounding: a few eps times the size of the values, or, for the ill-conditioned
+        # linkages that random lengths give (B passing near D, a flat kite), the
+        # rounding noise read off the data: over a step of 1e-7 the second difference
+        # of a smooth function is about 1e-14 times its second derivative, so its median
+        # is the noise. A jump between branches is of order 1 and is not in the median.
+        uniform = linkage.solve(grid, order=2)
+        wiggle = max(np.median(np.abs(np.diff(uniform.psi, 2))),
+                     np.median(np.abs(np.diff(uniform.omega_output, 2))))
+        noise = 20 * wiggle + 16 * EPS * (1 + np.max(np.abs(w)) + np.max(np.abs(al)))
+        assert np.max(np.abs(dpsi - step * (w[1:] + w[:-1]) / 2)) < noise
+        assert np.max(np.abs(np.diff(w) - step * (al[1:] + al[:-1]) / 2)) < noise
+        h = grid[1] - grid[0]
+        central = (uniform.omega_output[2:] - uniform.omega_output[:-2]) / (2 * h)
+        # rounding of the difference (noise / h) plus its truncation (h^2 |w'''| / 6)
+        bound = noise / h + 1e-6 * (1 + np.max(np.abs(al)))
+        assert np.max(np.abs(central - uniform.alpha_output[1:-1])) < bound
