@@ -1,5 +1,6 @@
 """Fixed and moving centrodes of the four-bar coupler (instant centre P24, example 2-4)."""
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -135,14 +136,20 @@ def coupler_centrodes(fourbar, theta):
     theta = finite_array("theta", theta)
     pose = fourbar.solve(theta)
     B, C = pose.B, pose.C
+    # the pole's homogeneous coordinates are cubic in the lengths: work on lengths scaled
+    # by the power of two that FourBar uses, so that nothing overflows or underflows
+    e = fourbar._exponent
+    Bs, Cs = np.ldexp(B.real, -e) + 1j * np.ldexp(B.imag, -e), np.ldexp(C.real, -e) + 1j * np.ldexp(C.imag, -e)
+    ds, bs = math.ldexp(fourbar.d, -e), math.ldexp(fourbar.b, -e)
     with np.errstate(invalid="ignore"):
-        X, Y, W, U, V = _gen.fourbar_coupler_pole(B.real, B.imag, C.real, C.imag, fourbar.d, fourbar.b)
+        X, Y, W, U, V = _gen.fourbar_coupler_pole(Bs.real, Bs.imag, Cs.real, Cs.imag, ds, bs)
         xy, uv = X + 1j * Y, U + 1j * V
-        at_inf = pose.valid & (np.abs(W) <= _INFINITE_RTOL * np.abs(xy) / fourbar.d)
+        at_inf = pose.valid & (np.abs(W) <= _INFINITE_RTOL * np.abs(xy) / ds)
         finite = pose.valid & ~at_inf
         safe = np.where(finite, W, 1.0)
         fixed = np.where(finite, xy / safe, np.nan + 0j)
         moving = np.where(finite, uv / safe, np.nan + 0j)
-    homogeneous = np.stack([X, Y, W], axis=-1)
+    fixed, moving = (np.ldexp(z.real, e) + 1j * np.ldexp(z.imag, e) for z in (fixed, moving))
+    homogeneous = np.stack([np.ldexp(X, e), np.ldexp(Y, e), W], axis=-1)
     return CouplerCentrodes(theta, fixed[()], moving[()], homogeneous, at_inf[()],
                             np.asarray(pose.valid)[()], B, np.asarray(pose.phi)[()])

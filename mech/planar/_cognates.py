@@ -1,5 +1,6 @@
 """The Roberts-Chebyshev cognates: three four-bars that trace one coupler curve (Fig. 2-32)."""
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -162,8 +163,14 @@ class Cognates:
         beta = original.branch
         positive_length("|MB|", np.hypot(p, q))
         positive_length("|MC|", np.hypot(b - p, q))
+        # the generated formulas multiply lengths: feed them the lengths scaled by the
+        # power of two FourBar uses, and scale the resulting lengths back (exactly)
+        e = original._exponent
         (Kx, Ky, a1, b1, c1, d1, p1, q1, cos1, sin1,
-         a2, b2, c2, d2, p2, q2, cos2, sin2) = (float(x) for x in _gen.cognate_dimensions(a, b, c, d, p, q))
+         a2, b2, c2, d2, p2, q2, cos2, sin2) = (float(x) for x in _gen.cognate_dimensions(
+            *(math.ldexp(v, -e) for v in (a, b, c, d, p, q))))
+        Kx, Ky, a1, b1, c1, d1, p1, q1, a2, b2, c2, d2, p2, q2 = (
+            math.ldexp(v, e) for v in (Kx, Ky, a1, b1, c1, d1, p1, q1, a2, b2, c2, d2, p2, q2))
         # Drivers: each cognate solved through the link that turns with AB (derivation page).
         # AEGK driven by its coupler: the loop with crank and coupler swapped, same branch.
         # DFHK driven by its rocker: the linkage turned by pi about the midpoint of DK.
@@ -259,9 +266,14 @@ class Cognates:
         Shape ``(3,) + theta.shape``.
         """
         j = self.joints(theta)
+        e = self._drivers[0]._exponent
+
+        def unit(z):
+            # the product of two lengths could overflow; only its sign is wanted
+            return np.ldexp(z.real, -e) + 1j * np.ldexp(z.imag, -e)
 
         def sign(pivot, pin, far):
-            s = np.sign(((pivot - pin).conjugate() * (far - pin)).imag)
+            s = np.sign((unit(pivot - pin).conjugate() * unit(far - pin)).imag)
             return np.where(j.valid, s, 0).astype(int)
 
         return np.stack([sign(j.D, j.B, j.C), sign(j.K, j.E, j.G), sign(j.K, j.F, j.H)])[()]

@@ -270,7 +270,7 @@ def fourbar_dead_points(a, b, c, d, *, branch=1):
     Raises
     ------
     ValueError
-        For a bad length or branch.
+        For a bad length or branch, or a link not shorter than the other three together.
 
     Notes
     -----
@@ -284,7 +284,10 @@ def fourbar_dead_points(a, b, c, d, *, branch=1):
     >>> [round(float(np.degrees(p)), 4) for p in dp.inputs], dp.collinear
     ([79.7134, 125.6853], ('extended', 'folded'))
     """
-    a, b, c, d = (positive_length(n, v) for n, v in zip("abcd", (a, b, c, d)))
+    from mech.planar._fourbar import fourbar_lengths
+
+    # angles only: lengths scaled by a power of two, so no product of two overflows
+    a, b, c, d = fourbar_lengths(a, b, c, d)[0]
     branch = branch_sign(branch)
     found = []
     for name, k in (("extended", b + a), ("folded", abs(b - a))):

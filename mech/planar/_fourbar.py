@@ -1,13 +1,16 @@
 """The planar revolute four-bar: positions, velocities and accelerations."""
 
+import math
+
 import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
 from mech._validate import branch_sign, motion_inputs, positive_length
 from mech._pose import Pose
+from mech.planar._fourbar_change import change_point_rates, kite_pose
 
-__all__ = ["FourBar", "FourBarPose"]
+__all__ = ["FourBar", "FourBarPose", "fourbar_lengths"]
 
 
 _BLOCK = 1 << 14
@@ -15,6 +18,41 @@ _FIELDS = ("B", "C", "P", "omega_coupler", "omega_output", "vB", "vC", "vP",
            "alpha_coupler", "alpha_output", "aB", "aC", "aP")
 _FIELD_COUNT = {0: 3, 1: 8, 2: 13}
 _COMPLEX = {"B", "C", "P", "vB", "vC", "vP", "aB", "aC", "aP"}
+
+
+def fourbar_lengths(a, b, c, d):
+    """Check four link lengths and scale them so that the longest lies in [1/2, 1).
+
+    Returns ``(lengths, exponent)``: the lengths divided by ``2**exponent``, a power of two,
+    so the scaling is exact, no product of lengths overflows or underflows, and angles do
+    not depend on the unit of length. Raises ValueError naming a length that is not
+    positive and finite, or one that is not shorter than the other three together.
+    """
+    raw = [positive_length(name, value) for name, value in zip("abcd", (a, b, c, d))]
+    exponent = math.frexp(max(raw))[1]
+    scaled = [math.ldexp(x, -exponent) for x in raw]
+    total = math.fsum(scaled)
+    for name, value, x in zip("abcd", raw, scaled):
+        if x >= total - x:
+            rest = math.ldexp(total - x, exponent) if total - x > 0.0 else 0.0
+            raise ValueError(
+                f"Expected `{name}` shorter than the other three links together "
+                f"({rest!r}), got {value!r}"
+            )
+    return tuple(scaled), exponent
+
+
+def _unscale(z, exponent):
+    """A complex array times ``2**exponent``, rounded once (exact unless subnormal).
+
+    A point beyond the float range (links near 1e308) becomes inf, as IEEE arithmetic
+    would give it; the angles, read from the scaled points, stay exact.
+    """
+    out = np.empty_like(z)
+    with np.errstate(over="ignore"):
+        np.ldexp(z.real, exponent, out=out.real)
+        np.ldexp(z.imag, exponent, out=out.imag)
+    return out
 
 
 def _store(out, name, x, y):
@@ -47,14 +85,15 @@ class FourBarPose(Pose):
     }
     _DERIVED = ("phi", "psi")
 
-    def __init__(self, d, order, fields):
+    def __init__(self, unit, order, fields):
         super().__init__(order, fields)
-        object.__setattr__(self, "_d", d)
+        # B, C and d in the scaled lengths: the angles read from them keep every bit
+        # even where the points in the user's unit are subnormal
+        object.__setattr__(self, "_unit", unit)
 
     def _derive(self, name):
-        C = self._fields["C"]
-        start = self._fields["B"] if name == "phi" else self._d
-        return np.angle(C - start)[()]
+        B, C, d = self._unit
+        return np.angle(C - (B if name == "phi" else d))[()]
 
 
 class FourBar:
@@ -76,17 +115,32 @@ class FourBar:
     ------
     ValueError
         If a length is not positive and finite, if one link is at least as long as the
-        other three together, or if `branch` is not +1 or -1.
+        other three together (the message names it), or if `branch` is not +1 or -1.
 
     Notes
     -----
     Positions come from the loop-closure equation in atan2 form with a factored,
     half-angle area term (derivation page :ref:`deriv-fourbar-position`), so they stay
-    accurate up to the limit positions. At a change point the two branches meet and the
-    solution continues smoothly onto the other sign of the area term (a parallelogram
-    stays a parallelogram); `branch` names the branch by its sign just after
-    theta = 0. Exactly at such a meeting point the loop equations do not fix the rates,
-    so velocities and accelerations are NaN there while positions are valid.
+    accurate up to the limit positions.
+
+    *Branch rule.* At a change point (s + l = p + q) the two branches meet, all four
+    joints in line, and the solution continues smoothly onto the other side of B->D (a
+    parallelogram stays a parallelogram, an anti-parallelogram stays anti). `branch`
+    names the branch by the side of C for input angles just above 0, where the
+    branches differ; as sin(theta/2) has period 4 pi, a linkage whose branch changes
+    sides once per turn comes back to its starting side after two turns. At the meeting
+    point the rates are their limits along the branch, found from factored formulas
+    (module `mech.planar._fourbar_change`), so they are finite and continuous.
+
+    *Degenerate pose.* The kite a = d, b = c (the rhombus included) has its crank pin B
+    on the pivot D at theta = 0. The pose is assembled there: C is the limit along the
+    branch, C = B + branch * b, and the rates are limits too. Only where the triangle
+    BCD cannot close is a pose invalid (NaN); a valid pose never has a NaN field.
+
+    *Scaling.* The lengths are divided internally by a power of two that brings the
+    longest link into [1/2, 1), so any finite positive lengths work (1e-300 to 1e300),
+    angles do not depend on the unit, and points scale exactly with the lengths (a
+    point beyond the float range, with links near 1e308, is inf).
 
     Examples
     --------
@@ -101,15 +155,8 @@ class FourBar:
     """
 
     def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), rtol=1e-12):
-        lengths = {name: positive_length(name, value) for name, value in zip("abcd", (a, b, c, d))}
-        total = sum(lengths.values())
-        for name, value in lengths.items():
-            if value >= total - value:
-                raise ValueError(
-                    f"Expected `{name}` shorter than the other three links together "
-                    f"({total - value!r}), got {value!r}"
-                )
-        self._a, self._b, self._c, self._d = (lengths[n] for n in "abcd")
+        (a_, b_, c_, d_), self._exponent = fourbar_lengths(a, b, c, d)
+        self._a, self._b, self._c, self._d = (float(v) for v in (a, b, c, d))
         self._branch = branch_sign(branch)
         try:
             p, q = (float(v) for v in coupler)
@@ -118,12 +165,16 @@ class FourBar:
         if not (np.isfinite(p) and np.isfinite(q)):
             raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
         self._coupler = (p, q)
-        gaps = [float(g) for g in _gen.fourbar_assembly_gaps(*(lengths[n] for n in "abcd"))]
+        self._unit = (a_, b_, c_, d_, math.ldexp(p, -self._exponent), math.ldexp(q, -self._exponent))
+        total = a_ + b_ + c_ + d_
+        gaps = [float(g) for g in _gen.fourbar_assembly_gaps(a_, b_, c_, d_)]
         zero = [abs(g) <= rtol * total for g in gaps]
         self._gaps = tuple(0.0 if z else g for g, z in zip(gaps, zero))
         # one sign flip even when both are zero: then the diagonal B->D itself reverses
         self._m23 = int(zero[0] or zero[1])
         self._m4 = int(zero[2])
+        # the kite a = d, b = c: the crank pin passes through D
+        self._kite = zero[0] and zero[1]
 
     a = property(lambda self: self._a, doc="Crank length AB.")
     b = property(lambda self: self._b, doc="Coupler length BC.")
@@ -197,49 +248,85 @@ class FourBar:
         if strict and not np.all(valid):
             bad = float(flat[0][~valid][0])
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
+        unit = (out["B"].reshape(shape), out["C"].reshape(shape), self._unit[3])
+        for name in _COMPLEX.intersection(out):
+            out[name] = _unscale(out[name], self._exponent)
         fields = {name: value.reshape(shape)[()] for name, value in out.items()}
         fields["theta"] = np.broadcast_to(theta, shape)[()]
-        return FourBarPose(self._d, order, fields)
+        return FourBarPose(unit, order, fields)
 
     def _solve_block(self, inputs, order, out):
         """Solve one block of flat inputs, writing into the views in `out`."""
-        a, b, c, d, (p, q), branch = self._a, self._b, self._c, self._d, self._coupler, self._branch
-        theta = inputs[0]
+        a, b, c, d, p, q = self._unit
+        branch, theta = self._branch, inputs[0]
         with np.errstate(invalid="ignore", divide="ignore"):
-            if self._m23 + self._m4:
-                Bx, By, Cx, Cy, Px, Py, S = _gen.fourbar_position_signed(
-                    a, b, c, d, p, q, theta, branch, *self._gaps, self._m23, self._m4
-                )
+            if self._kite:
+                B, C, P, S, ratios = kite_pose(a, b, self._gaps[2], self._m4, p, q, theta, branch)
+                out["B"][...], out["C"][...], out["P"][...] = B, C, P
             else:
-                Bx, By, Cx, Cy, Px, Py, S = _gen.fourbar_position(
-                    a, b, c, d, p, q, theta, branch, *self._gaps
-                )
+                solver = _gen.fourbar_position_signed if self.change_point else _gen.fourbar_position
+                flags = (self._m23, self._m4) if self.change_point else ()
+                Bx, By, Cx, Cy, Px, Py, S = solver(a, b, c, d, p, q, theta, branch, *self._gaps, *flags)
+                _store(out, "B", Bx, By)
+                _store(out, "C", Cx, Cy)
+                _store(out, "P", Px, Py)
             np.isnan(S, out=out["valid"])
             np.logical_not(out["valid"], out=out["valid"])
-            _store(out, "B", Bx, By)
-            _store(out, "C", Cx, Cy)
-            _store(out, "P", Px, Py)
-            if order < 1:
-                return
-            omega = inputs[1]
-            w2, w3, vBx, vBy, vCx, vCy, vPx, vPy = _gen.fourbar_velocity(
-                b, d, p, q, Bx, By, Cx, Cy, S, branch, omega
-            )
-            out["omega_coupler"][...] = w2
-            out["omega_output"][...] = w3
-            _store(out, "vB", vBx, vBy)
-            _store(out, "vC", vCx, vCy)
-            _store(out, "vP", vPx, vPy)
-            if order < 2:
-                return
-            a2, a3, aBx, aBy, aCx, aCy, aPx, aPy = _gen.fourbar_acceleration(
-                b, d, p, q, Bx, By, Cx, Cy, S, branch, omega, inputs[2], w2, w3
-            )
-            out["alpha_coupler"][...] = a2
-            out["alpha_output"][...] = a3
-            _store(out, "aB", aBx, aBy)
-            _store(out, "aC", aCx, aCy)
-            _store(out, "aP", aPx, aPy)
+            if order >= 1 and (self._kite or self.change_point):
+                self._change_point_rates(inputs, order, out, ratios if self._kite else None)
+            elif order >= 1:
+                self._rates(inputs, order, out, (Bx, By, Cx, Cy, S))
+
+    def _rates(self, inputs, order, out, position):
+        """Rates of a linkage without change points, by the generated velocity loop."""
+        a, b, c, d, p, q = self._unit
+        Bx, By, Cx, Cy, S = position
+        omega = inputs[1]
+        w2, w3, vBx, vBy, vCx, vCy, vPx, vPy = _gen.fourbar_velocity(
+            b, d, p, q, Bx, By, Cx, Cy, S, self._branch, omega
+        )
+        out["omega_coupler"][...] = w2
+        out["omega_output"][...] = w3
+        _store(out, "vB", vBx, vBy)
+        _store(out, "vC", vCx, vCy)
+        _store(out, "vP", vPx, vPy)
+        if order < 2:
+            return
+        a2, a3, aBx, aBy, aCx, aCy, aPx, aPy = _gen.fourbar_acceleration(
+            b, d, p, q, Bx, By, Cx, Cy, S, self._branch, omega, inputs[2], w2, w3
+        )
+        out["alpha_coupler"][...] = a2
+        out["alpha_output"][...] = a3
+        _store(out, "aB", aBx, aBy)
+        _store(out, "aC", aCx, aCy)
+        _store(out, "aP", aPx, aPy)
+
+    def _change_point_rates(self, inputs, order, out, ratios):
+        """Rates of a change-point linkage as limits along the branch (`_fourbar_change`)."""
+        a, b, c, d, p, q = self._unit
+        if ratios is None:
+            ratios = change_point_rates(a, b, c, d, inputs[0], self._branch, self._gaps,
+                                        self._m23, self._m4)
+        (g2, dg2), (g3, dg3) = ratios
+        omega = inputs[1]
+        B, C, P = out["B"], out["C"], out["P"]
+        w2, w3 = g2 * omega, g3 * omega
+        out["omega_coupler"][...] = w2
+        out["omega_output"][...] = w3
+        out["vB"][...] = 1j * omega * B
+        out["vC"][...] = 1j * w3 * (C - d)
+        out["vP"][...] = 1j * omega * B + 1j * w2 * (P - B)
+        if order < 2:
+            return
+        alpha = inputs[2]
+        omega2 = omega * omega
+        a2, a3 = g2 * alpha + dg2 * omega2, g3 * alpha + dg3 * omega2
+        out["alpha_coupler"][...] = a2
+        out["alpha_output"][...] = a3
+        aB = (1j * alpha - omega2) * B
+        out["aB"][...] = aB
+        out["aC"][...] = (1j * a3 - w3 * w3) * (C - d)
+        out["aP"][...] = aB + (1j * a2 - w2 * w2) * (P - B)
 
     def limit_positions(self):
         """Limit positions of a crank-rocker: see `mech.planar.LimitPositions`.

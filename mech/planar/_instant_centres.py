@@ -231,7 +231,7 @@ def _labels(links):
     return labels
 
 
-def instant_centres(links, direct):
+def instant_centres(links, direct, *, undefined="raise"):
     """All instant centres of a planar linkage by the three-centre theorem (F32, F33).
 
     Centres of directly connected links are given; every other P_ij is placed by Kennedy's
@@ -247,6 +247,11 @@ def instant_centres(links, direct):
         ``{(i, j): spec}`` with `spec` a complex point (revolute pair or rolling contact,
         or `revolute`), `prismatic` (sliding direction) or `higher_pair` (contact and
         common normal). Arrays broadcast: one centre per pose.
+    undefined : {"raise", "nan"}, optional
+        What to do where the lines that should place a centre coincide (a degenerate
+        pose, e.g. all joints of a four-bar on one line): raise a ValueError naming the
+        centre, the pose and the centres that fall on one line (default), or return NaN
+        there with the mask ``defined`` False.
 
     Returns
     -------
@@ -257,12 +262,15 @@ def instant_centres(links, direct):
     ------
     ValueError
         For unknown labels, repeated pairs, non-finite points or zero directions, and
-        when Kennedy's theorem cannot place every centre, naming those left over.
+        when Kennedy's theorem cannot place every centre, naming those left over; with
+        ``undefined="raise"``, where a centre's lines coincide at some pose.
 
     Notes
     -----
     Homogeneous coordinates make centres at infinity ordinary points (derivation
     :ref:`deriv-instant-centres`). A centre is `defined` where its lines are distinct.
+    Where they coincide the positions alone do not fix the centre (it depends on the
+    velocities, which this construction does not see), so it is reported, not guessed.
 
     Examples
     --------
@@ -275,6 +283,8 @@ def instant_centres(links, direct):
     >>> complex(np.round(ic[2, 4].point, 9))  # where the lines AB and DC meet
     (14.4+19.2j)
     """
+    if not (isinstance(undefined, str) and undefined in ("raise", "nan")):
+        raise ValueError(f"Expected `undefined` to be 'raise' or 'nan', got {undefined!r}")
     labels = _labels(links)
     index = {label: k for k, label in enumerate(labels)}
     known, lines, steps, sources = {}, {}, [], {}
@@ -347,8 +357,38 @@ def instant_centres(links, direct):
             "class III linkage that needs more than Kennedy's theorem (solve the velocity "
             "equations instead)."
         )
+    if undefined == "raise":
+        _raise_undefined(steps, defined, shape, index)
     return InstantCentres(labels, {p: _centre(p, hom[p], defined[p], scale, sources[p]) for p in all_pairs},
                           tuple(steps))
+
+
+def _name(i, j):
+    return f"P_{i}{j}" if len(f"{i}{j}") == 2 else f"P_({i},{j})"
+
+
+def _raise_undefined(steps, defined, shape, index):
+    """Raise a ValueError for the first centre, in construction order, left undefined."""
+    for step in steps:
+        bad = ~np.asarray(defined[step.pair])
+        if not np.any(bad):
+            continue
+        pose = tuple(int(k) for k in np.argwhere(np.broadcast_to(bad, shape))[0])
+        where = f"pose {pose}" if pose else "this pose"
+        i, j = step.pair
+
+        def pair(x, y):
+            return _name(x, y) if index[x] < index[y] else _name(y, x)
+
+        lines = [f"the line through {pair(i, k)} and {pair(j, k)}" for k in step.via]
+        if step.line:
+            lines.append(f"the common normal of the higher pair {_name(i, j)}")
+        raise ValueError(
+            f"Expected the three-centre theorem to place {_name(i, j)}, but at {where} "
+            f"{' and '.join(lines)} coincide or are undefined (centres that coincide, or "
+            "all on one line, e.g. all joints of a four-bar in line): the positions alone "
+            "do not fix it. Pass undefined='nan' for NaN there with the mask `defined`."
+        )
 
 
 def _centre(pair, h, defined, scale, source):

@@ -3,7 +3,8 @@
 from dataclasses import dataclass
 
 from mech._generated.fourbar_limit_positions import fourbar_limit_positions
-from mech._validate import branch_sign, positive_length
+from mech._validate import branch_sign
+from mech.planar._fourbar import fourbar_lengths
 from mech.planar._grashof import grashof
 from mech.planar._quick_return import time_ratio
 
@@ -78,7 +79,8 @@ def limit_positions(a, b, c, d, *, branch=1):
     triangle ACD; it is acute except near the change point a + c = b + d. At a change
     point (s + l = p + q, Fig. 2-38) the two branches share one limit position and the
     linkage has a single assembly mode; the values returned are still the limits of the
-    branch asked for.
+    branch asked for. The lengths are scaled internally by a power of two, so any finite
+    positive lengths work and the angles do not depend on the unit of length.
 
     Examples
     --------
@@ -97,12 +99,13 @@ def limit_positions(a, b, c, d, *, branch=1):
     >>> bool(np.isclose(mirror.psi_extended, -lp.psi_extended))
     True
     """
-    a, b, c, d = (positive_length(n, v) for n, v in zip("abcd", (a, b, c, d)))
+    raw = (a, b, c, d)
+    a, b, c, d = fourbar_lengths(a, b, c, d)[0]       # angles only: scale-free lengths
     sign = branch_sign(branch)
     kind = grashof(a, b, c, d).kind
     if kind != "crank-rocker":
         raise ValueError(
-            f"Expected a crank-rocker, got a {kind}: (a, b, c, d) = ({a!r}, {b!r}, {c!r}, {d!r})"
+            f"Expected a crank-rocker, got a {kind}: (a, b, c, d) = {raw!r}"
         )
     th_e, th_f, ps_e, ps_f, swing, th_s = (float(v) for v in fourbar_limit_positions(a, b, c, d))
     theta = abs(th_s)

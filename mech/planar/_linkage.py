@@ -793,7 +793,9 @@ class LinkageSolution:
         Returns
         -------
         InstantCentres
-            Indexed by pairs of link names, the ground being ``"ground"``.
+            Indexed by pairs of link names, the ground being ``"ground"``. A centre that
+            the positions do not fix (its Kennedy lines coincide at a pose) is NaN there,
+            with its mask ``defined`` False.
 
         Raises
         ------
@@ -815,7 +817,7 @@ class LinkageSolution:
                 direct[key] = revolute(self.points[where])
             else:
                 direct[key] = prismatic(self.slides[where].direction)
-        return instant_centres(self.linkage.links, direct)
+        return instant_centres(self.linkage.links, direct, undefined="nan")
 
     def direction(self, link):
         """Unit complex direction of ``link``'s frame x axis (no trigonometry)."""

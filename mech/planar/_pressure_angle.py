@@ -16,6 +16,7 @@ from mech._generated.transmission_angle import fourbar_transmission
 from mech._scaling import length_scale
 from mech._validate import finite_array, positive_length, real_number
 from mech.planar._grashof import grashof
+from mech.planar._transmission import _lengths as _fourbar_lengths, check_assembled
 
 __all__ = [
     "pressure_angle",
@@ -169,7 +170,7 @@ def joint_transmission_angle(solution, joint, force, *, follower=None, pivot=Non
     return _float(_acute(u, solution.points[joint] - solution.points[pivot]))
 
 
-def fourbar_pressure_angle(a, b, c, d, theta):
+def fourbar_pressure_angle(a, b, c, d, theta, *, strict=False):
     """Pressure angle at the rocker pin C of the four-bar, alpha = pi/2 - gamma (F50).
 
     Parameters
@@ -178,6 +179,9 @@ def fourbar_pressure_angle(a, b, c, d, theta):
         Crank AB, coupler BC, rocker CD and ground AD, > 0.
     theta : array_like
         Crank angle, radians.
+    strict : bool, optional
+        Raise `AssemblyError` instead of returning NaN where the linkage cannot be
+        assembled, as `FourBar.solve` does.
 
     Returns
     -------
@@ -187,22 +191,28 @@ def fourbar_pressure_angle(a, b, c, d, theta):
     Raises
     ------
     ValueError
-        If a length is not > 0 or `theta` is not finite.
+        If a length is not positive and finite, if one link is not shorter than the other
+        three together (as for `FourBar`), or if `theta` is not finite.
+    AssemblyError
+        With ``strict=True``, naming the first input angle that cannot be assembled.
 
     Notes
     -----
     gamma from eq. (2-30) as in `mech.planar.transmission_angle`; both branches have the
-    same angle. Derivation :ref:`deriv-pressure-angle`.
+    same angle. Derivation :ref:`deriv-pressure-angle`. The lengths are scaled internally
+    by a power of two, so the angle does not depend on the unit of length.
 
     Examples
     --------
     >>> round(float(np.degrees(fourbar_pressure_angle(30, 70, 60, 80, 0.0))), 4)
     45.5847
     """
-    a, b, c, d = (positive_length(n, v) for n, v in zip("abcd", (a, b, c, d)))
+    lengths = (a, b, c, d)
+    a, b, c, d = _fourbar_lengths(a, b, c, d)
     theta = finite_array("theta", theta)
     with np.errstate(invalid="ignore"):
         _, gamma = fourbar_transmission(a, b, c, d, theta)
+    check_assembled(gamma, theta, lengths, strict)
     return _float(np.pi / 2 - gamma)
 
 
@@ -256,11 +266,12 @@ def transmission_extremes(a, b, c, d):
     >>> x.theta_at, x.rule
     (0.0, 'min(delta_min, pi - delta_max)')
     """
-    a, b, c, d = (positive_length(n, v) for n, v in zip("abcd", (a, b, c, d)))
+    raw = (a, b, c, d)
+    a, b, c, d = _fourbar_lengths(a, b, c, d)
     kind = grashof(a, b, c, d).kind
     if kind not in ("crank-rocker", "double-crank"):
         raise ValueError(f"Expected a crank that turns fully (crank-rocker or double-crank), got a {kind} "
-                         f"for (a, b, c, d) = ({a!r}, {b!r}, {c!r}, {d!r})")
+                         f"for (a, b, c, d) = {raw!r}")
     (d0, dpi), _ = fourbar_transmission(a, b, c, d, np.array([0.0, np.pi]))
     d0, dpi = float(d0), float(dpi)
     if dpi <= np.pi / 2:

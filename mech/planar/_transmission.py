@@ -6,7 +6,9 @@ from mech._generated.transmission_angle import (
     fourbar_crank_angle_at_diagonal,
     fourbar_transmission,
 )
-from mech._validate import finite_array, positive_length
+from mech._errors import AssemblyError
+from mech._validate import bool_flag, finite_array
+from mech.planar._fourbar import fourbar_lengths
 from mech.planar._grashof import grashof
 
 __all__ = ["transmission_angle", "min_transmission_angle"]
@@ -15,10 +17,19 @@ _CRANK_TURNS = ("crank-rocker", "double-crank")
 
 
 def _lengths(a, b, c, d):
-    return tuple(positive_length(n, v) for n, v in zip("abcd", (a, b, c, d)))
+    # angles only: the lengths scaled by a power of two give the same values at any scale
+    return fourbar_lengths(a, b, c, d)[0]
 
 
-def transmission_angle(a, b, c, d, theta):
+def check_assembled(angle, theta, lengths, strict):
+    """Raise AssemblyError at the first `theta` where `angle` is NaN, if `strict`."""
+    if bool_flag("strict", strict) and np.any(np.isnan(angle)):
+        bad = float(np.broadcast_to(theta, np.shape(angle))[np.isnan(angle)].ravel()[0])
+        raise AssemblyError(f"Cannot assemble the four-bar (a, b, c, d) = {lengths!r} "
+                            f"at theta = {bad!r}")
+
+
+def transmission_angle(a, b, c, d, theta, *, strict=False):
     """Transmission angle of the four-bar at crank angle theta.
 
     The angle delta = BCD between coupler and output follows from eq. (2-30),
@@ -31,6 +42,9 @@ def transmission_angle(a, b, c, d, theta):
         Crank AB, coupler BC, output CD and ground AD, > 0.
     theta : array_like, shape (...)
         Crank angle, radians (the textbook's phi_1).
+    strict : bool, optional
+        Raise `AssemblyError` instead of returning NaN where the linkage cannot be
+        assembled, as `FourBar.solve` does.
 
     Returns
     -------
@@ -41,7 +55,10 @@ def transmission_angle(a, b, c, d, theta):
     Raises
     ------
     ValueError
-        If a length is not > 0 or `theta` is not finite.
+        If a length is not positive and finite, if one link is not shorter than the other
+        three together (as for `FourBar`), or if `theta` is not finite.
+    AssemblyError
+        With ``strict=True``, naming the first input angle that cannot be assembled.
 
     Notes
     -----
@@ -49,7 +66,9 @@ def transmission_angle(a, b, c, d, theta):
     P = k^2 - (b - c)^2 and Q = (b + c)^2 - k^2 written through sin^2(theta/2) and
     cos^2(theta/2), so no digits are lost near theta = 0 or pi. The value does not depend
     on the assembly branch (the mirror image has the same angle BCD). Where P < 0 or Q < 0
-    the triangle BCD does not close; NaN is returned there without a NumPy warning.
+    the triangle BCD does not close; NaN is returned there without a NumPy warning. The
+    lengths are scaled internally by a power of two, so any finite positive lengths work
+    and the angle does not depend on the unit of length.
 
     Examples
     --------
@@ -62,10 +81,12 @@ def transmission_angle(a, b, c, d, theta):
     >>> transmission_angle(40, 20, 30, 35, 0.0)   # cannot be assembled at theta = 0
     nan
     """
+    lengths = (a, b, c, d)
     a, b, c, d = _lengths(a, b, c, d)
     theta = finite_array("theta", theta)
     with np.errstate(invalid="ignore"):
         _, gamma = fourbar_transmission(a, b, c, d, theta)
+    check_assembled(gamma, theta, lengths, strict)
     return float(gamma) if np.ndim(gamma) == 0 else gamma
 
 
@@ -91,7 +112,8 @@ def min_transmission_angle(a, b, c, d):
     Raises
     ------
     ValueError
-        If a length is not > 0 or the four lengths cannot form a linkage.
+        If a length is not positive and finite, or one link is not shorter than the other
+        three together.
 
     Notes
     -----

@@ -260,7 +260,7 @@ def test_fourbar_bad_options():
 def test_solve_change_point_kite_turns_twice():
     """The kite a = d < b = c (Fig. 2-5b, short link as ground): C stays on the bisector of
     angle BAD, so the long crank CD turns once while the short crank AB turns twice. At
-    theta = 0 the crank pin sits on D and C is not fixed by the loop: reported invalid."""
+    theta = 0 the crank pin sits on D; C there is the limit along the branch, C = a + b."""
     a, b = 1.0, 2.0
     theta = np.linspace(-4 * np.pi, 4 * np.pi, 2001)
     theta = theta[np.abs(np.sin(theta / 2)) > 1e-9]
@@ -270,4 +270,5 @@ def test_solve_change_point_kite_turns_twice():
     np.testing.assert_allclose(pose.C, expected, atol=1e-12)
     turns = np.ptp(np.unwrap(pose.psi[theta > 0])) / (2 * np.pi)
     assert abs(turns - 1.0) < 0.01  # crank angle spans 4 pi (less the sample at 0)
-    assert not FourBar(a, b, b, a).solve(0.0).valid
+    at_zero = FourBar(a, b, b, a).solve(0.0)
+    assert at_zero.valid and abs(at_zero.C - (a + b)) <= 1e-15 * (a + b)

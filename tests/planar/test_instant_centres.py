@@ -288,7 +288,24 @@ def test_instant_centres_input_errors():
 
 
 def test_instant_centres_coincident_lines_undefined():
-    """A folded four-bar (all joints on one line): the Kennedy lines coincide."""
-    centres = instant_centres(4, {(1, 4): 0j, (1, 2): 1 + 0j, (2, 3): 3 + 0j, (3, 4): 5 + 0j})
+    """A folded four-bar (all joints on one line): the Kennedy lines coincide. With
+    undefined='nan' the centres are NaN and flagged; by default that is an error."""
+    direct = {(1, 4): 0j, (1, 2): 1 + 0j, (2, 3): 3 + 0j, (3, 4): 5 + 0j}
+    centres = instant_centres(4, direct, undefined="nan")
     assert not centres[1, 3].defined and not centres[2, 4].defined
     assert np.isnan(centres[1, 3].point)
+    assert np.isfinite(centres[1, 2].point)
+
+
+def test_instant_centres_degenerate_pose_raises():
+    """Never a silent NaN: the error names the centre, the pose and the lines."""
+    direct = {(1, 4): 0j, (1, 2): 1 + 0j, (2, 3): 3 + 0j, (3, 4): 5 + 0j}
+    with pytest.raises(ValueError, match=r"place P_13, but at this pose the line through "
+                                         r"P_12 and P_23 and the line through P_14 and P_34"):
+        instant_centres(4, direct)
+    # the kite a = d, b = c at theta = 0: the crank pin B on the pivot D, all in line
+    pose = FourBar(1, 2, 2, 1).solve(np.array([0.5, 0.0]))
+    with pytest.raises(ValueError, match=r"P_13, but at pose \(1,\)"):
+        instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): 1.0})
+    with pytest.raises(ValueError, match="Expected `undefined` to be 'raise' or 'nan', got 'x'"):
+        instant_centres(4, direct, undefined="x")

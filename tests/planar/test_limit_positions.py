@@ -202,5 +202,5 @@ def test_limit_positions_rejects_bad_input():
         limit_positions(10, -1, 30, 35)
     with pytest.raises(ValueError, match="Expected `branch` to be \\+1 or -1"):
         limit_positions(10, 40, 30, 35, branch=0)
-    with pytest.raises(ValueError, match="Expected `d` < "):
+    with pytest.raises(ValueError, match="Expected `d` shorter than the other three links together \\(80.0\\), got 90.0"):
         limit_positions(10, 40, 30, 90)

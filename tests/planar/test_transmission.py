@@ -148,5 +148,5 @@ def test_transmission_angle_rejects_bad_input():
         transmission_angle(10, 40, 30, 35, [0.0, np.nan])
     with pytest.raises(ValueError, match="Expected `a` > 0, got 0.0"):
         min_transmission_angle(0, 40, 30, 35)
-    with pytest.raises(ValueError, match="Expected `d` < "):
+    with pytest.raises(ValueError, match="Expected `d` shorter than the other three links together \\(80.0\\), got 90.0"):
         min_transmission_angle(10, 40, 30, 90)
