@@ -8,7 +8,7 @@ The formulas come from ``derivations/planar/assur_groups.md`` through
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 
 import numpy as np
@@ -377,19 +377,63 @@ class Linkage:
         q, w, al = (self._per_driver(x, name) for x, name in
                     ((inputs, "inputs"), (omega, "omega"), (alpha, "alpha")))
         shape = np.broadcast_shapes(*(np.shape(x) for x in (*q.values(), *w.values(), *al.values())))
+        unit, steps = self._unit_steps()
+        # distance inputs (sliders, actuators) are measured in the same unit as the lengths
+        sq, sw, sal = ({d: x[d] / unit if d in self._distance_drivers() else x[d] for d in x}
+                       for x in (q, w, al))
+        state, failures = self._run(steps, order, shape, sq, sw, sal)
+        state.rescale(unit)
+        if strict and not np.all(state.valid):
+            self._raise(failures, q, shape)
+        return LinkageSolution(self, order, state, failures)
+
+    def _run(self, steps, order, shape, q, w, al):
+        """Solve every step in the unit of `_unit_steps`; return the state and the failures."""
         state = _State(order, shape)
         failures = {}
-        with np.errstate(invalid="ignore", divide="ignore"):
-            for step in self._steps:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            for step in steps:
                 ok = getattr(self, "_do_" + step.kind)(step, state, q, w, al)
                 if ok is not None:
                     ok = np.broadcast_to(ok, shape)
                     first = ~ok & state.valid
                     failures[step.label] = first
                     state.valid = state.valid & ok
-        if strict and not np.all(state.valid):
-            self._raise(failures, q, shape)
-        return LinkageSolution(self, order, state, failures)
+        return state, failures
+
+    def _distance_drivers(self):
+        """Names of the drivers whose input is a distance (sliders and actuators)."""
+        out = set()
+        for step in self._steps:
+            if step.kind == "slider":
+                out.add(step.get("driver"))
+            elif step.kind == "rrr":
+                out.update(x for x in step.get("lengths") if isinstance(x, str))
+        return out
+
+    def _unit_steps(self):
+        """A power of two ``unit`` near the largest length, and the steps measured in it.
+
+        Solving in this unit makes every intermediate quantity of order one whatever the
+        user's unit of length, so lengths anywhere from 1e-300 to 1e300 neither overflow nor
+        underflow, and angles do not depend on the unit. A power of two keeps the division
+        and the final multiplication exact.
+        """
+        cached = self.__dict__.get("_unit_cache")
+        if cached is not None:
+            return cached
+        sizes = [0.0]
+        for step in self._steps:
+            for key, value in step.data:
+                if key in _LENGTH_KEYS:
+                    sizes.extend(_magnitudes(value))
+        largest = max(sizes)
+        unit = math.ldexp(1.0, math.frexp(largest)[1]) if largest > 0 else 1.0
+        steps = tuple(_Step(s.kind, s.label, s.links,
+                            tuple((k, _in_unit(v, unit) if k in _LENGTH_KEYS else v) for k, v in s.data))
+                      for s in self._steps)
+        self._unit_cache = (unit, steps)
+        return self._unit_cache
 
     def _per_driver(self, value, what):
         if isinstance(value, dict) or hasattr(value, "keys"):
@@ -704,6 +748,36 @@ def _cx(x, y):
     return x + 1j * y
 
 
+# step data that hold lengths (or guides through fixed points); the rest are angles, signs, names
+_LENGTH_KEYS = frozenset({"at", "length", "lengths", "offset", "guide", "guides"})
+
+
+def _magnitudes(value):
+    """The length magnitudes held by one item of step data (a Guide, a number, a tuple)."""
+    if isinstance(value, Guide):
+        return [] if isinstance(value.through, str) else _magnitudes(complex(value.through))
+    if isinstance(value, tuple):
+        return [m for v in value for m in _magnitudes(v)]
+    if isinstance(value, complex):
+        return [abs(value.real), abs(value.imag)]
+    if isinstance(value, float):
+        return [abs(value)]
+    return []           # a driver's name in place of a length
+
+
+def _in_unit(value, unit):
+    """Divide the lengths in one item of step data by `unit` (angles and names unchanged)."""
+    if isinstance(value, Guide):
+        if isinstance(value.through, str):
+            return value
+        return replace(value, through=complex(value.through) / unit)
+    if isinstance(value, tuple):
+        return tuple(_in_unit(v, unit) for v in value)
+    if isinstance(value, (complex, float)) and not isinstance(value, bool):
+        return value / unit
+    return value
+
+
 class _State:
     """Mutable arrays filled step by step during one solve."""
 
@@ -713,6 +787,18 @@ class _State:
         self.dir, self.origin, self.W, self.AL = {"ground": 1.0 + 0j}, {"ground": None}, {}, {}
         self.slides = {}
         self.valid = np.ones(shape, dtype=bool)
+
+    def rescale(self, unit):
+        """Multiply every length, linear rate and slide back from the solving unit."""
+        if unit == 1.0:
+            return
+        with np.errstate(over="ignore"):
+            for table in (self.P, self.V, self.A):
+                for k in table:
+                    table[k] = table[k] * unit
+            for key, sl in self.slides.items():
+                self.slides[key] = Slide(*(x if x is None or i == 1 else x * unit
+                                           for i, x in enumerate((sl.s, sl.direction, sl.v, sl.a, sl.coriolis))))
 
     def put_point(self, name, z, v, a):
         self.P[name] = z
