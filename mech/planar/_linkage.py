@@ -15,6 +15,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import assur_groups as _g
+from mech.planar import _linkage_modes
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
 
 __all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
@@ -107,7 +108,8 @@ class Linkage:
     [30.0, 30.0]
     """
 
-    def __init__(self, ground=None):
+    def __init__(self, ground=None, *, rtol=1e-12):
+        self._rtol = positive_length("rtol", rtol)
         self._steps = ()
         self._points = {}        # name -> link that first carries it
         self._links = {GROUND: None}
@@ -125,6 +127,7 @@ class Linkage:
         new._links = dict(self._links)
         new._guides = dict(self._guides)
         new._drivers = self._drivers
+        new._rtol = self._rtol
         return new
 
     def _add_point(self, name, link):
@@ -381,15 +384,29 @@ class Linkage:
         # distance inputs (sliders, actuators) are measured in the same unit as the lengths
         sq, sw, sal = ({d: x[d] / unit if d in self._distance_drivers() else x[d] for d in x}
                        for x in (q, w, al))
-        state, failures = self._run(steps, order, shape, sq, sw, sal)
+        crank = self._crank_driver()
+        theta = None if crank is None else np.broadcast_to(sq[crank], shape)
+        state, failures = self._run(steps, order, shape, sq, sw, sal,
+                                    _linkage_modes.modes(self._schedules(), steps, theta))
+        if theta is not None:
+            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+                _linkage_modes.bridge(self, steps, self._schedules(), crank, state, theta,
+                                      sw[crank], sal[crank])
+        state.drop_unfinished()
+        failures = {k: v & ~state.valid for k, v in failures.items()}
         state.rescale(unit)
         if strict and not np.all(state.valid):
             self._raise(failures, q, shape)
         return LinkageSolution(self, order, state, failures)
 
-    def _run(self, steps, order, shape, q, w, al):
-        """Solve every step in the unit of `_unit_steps`; return the state and the failures."""
+    def _run(self, steps, order, shape, q, w, al, modes):
+        """Solve `steps` (in the unit of `_unit_steps`); return the state and the failures.
+
+        ``modes`` maps each two-mode group to its mode and where its radicand may count as
+        zero (`mech.planar._linkage_modes.modes`).
+        """
         state = _State(order, shape)
+        state.modes = modes
         failures = {}
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             for step in steps:
@@ -400,6 +417,23 @@ class Linkage:
                     failures[step.label] = first
                     state.valid = state.valid & ok
         return state, failures
+
+    def _crank_driver(self):
+        """The driver's name when the linkage is driven by one crank, else None."""
+        cranks = [s.get("driver") for s in self._steps if s.kind == "crank"]
+        if len(self._drivers) == 1 and cranks == list(self._drivers):
+            return cranks[0]
+        return None
+
+    def _schedules(self):
+        """The change points of every two-mode group (one-crank linkages only), cached."""
+        cached = self.__dict__.get("_schedule_cache")
+        if cached is None:
+            crank = self._crank_driver()
+            cached = {} if crank is None else _linkage_modes.find_schedule(
+                self, self._unit_steps()[1], crank, self._rtol)
+            self._schedule_cache = cached
+        return cached
 
     def _distance_drivers(self):
         """Names of the drivers whose input is a distance (sliders and actuators)."""
@@ -539,7 +573,9 @@ class Linkage:
         (l1, l2), (p1, p2), joint = step.links, step.get("pins"), step.get("joint")
         (r1, dr1, ddr1), (r2, dr2, ddr2) = (self._length(x, q, w, al, st) for x in step.get("lengths"))
         P1, P2 = st.P[p1], st.P[p2]
-        ux, uy, D = _g.rrr_position(*_re_im(P2 - P1), r1, r2, step.get("branch"))
+        gx, gy = _re_im(P2 - P1)
+        rho, ok = _signed_root(st, step, _g.rrr_position(gx, gy, r1, r2, 1.0)[2])
+        ux, uy = _g.rrr_position_root(gx, gy, r1, r2, rho)
         u1 = ux + 1j * uy
         P3 = P1 + u1
         u2 = P3 - P2
@@ -555,13 +591,15 @@ class Linkage:
         st.put_link(l1, p1, u1 / r1, W1, A1)
         st.put_link(l2, p2, u2 / r2, W2, A2)
         st.put_point(joint, P3, v3, a3)
-        return D >= 0
+        return ok & np.isfinite(ux) & np.isfinite(uy)
 
     def _do_rrp(self, step, st, q, w, al):
         (rod, block), p1, guide, joint, r1 = step.links, step.get("pin"), step.get("guide"), step.get("joint"), step.get("length")
         Q, e, vQ, aQ, wK, aK = self._guide_state(st, guide)
         P1 = st.P[p1]
-        s, ux, uy, disc = _g.rrp_position(*_re_im(Q - P1), *_re_im(e), r1, step.get("branch"))
+        (gx, gy), (ex, ey) = _re_im(Q - P1), _re_im(e)
+        rho, ok = _signed_root(st, step, _g.rrp_position(gx, gy, ex, ey, r1, 1.0)[3])
+        s, ux, uy = _g.rrp_position_root(gx, gy, ex, ey, rho)
         u1 = ux + 1j * uy
         P3 = P1 + u1
         W1 = A1 = v3 = a3 = None
@@ -580,12 +618,14 @@ class Linkage:
         st.put_link(block, joint, e, wK if st.order >= 1 else None, aK if st.order >= 2 else None)
         st.put_point(joint, P3, v3, a3)
         st.put_slide(block, guide.link, slide)
-        return disc >= 0
+        return ok
 
     def _do_rpr(self, step, st, q, w, al):
         (gl, block), (p1, p2), e0 = step.links, step.get("pins"), step.get("offset")
         P1, P2 = st.P[p1], st.P[p2]
-        s, wx, wy, disc = _g.rpr_position(*_re_im(P2 - P1), e0, step.get("branch"))
+        gx, gy = _re_im(P2 - P1)
+        s, ok = _signed_root(st, step, _g.rpr_position(gx, gy, e0, 1.0)[3])
+        wx, wy = _g.rpr_position_root(gx, gy, e0, s)
         d = wx + 1j * wy
         W = A = None
         slide = Slide(s=s, direction=d)
@@ -598,7 +638,7 @@ class Linkage:
         st.put_link(gl, p1, d, W, A)
         st.put_link(block, p2, d, W, A)
         st.put_slide(block, gl, slide)
-        return disc >= 0
+        return ok & np.isfinite(wx) & np.isfinite(wy)
 
     def _do_prp(self, step, st, q, w, al):
         (b1, b2), (g1, g2), joint = step.links, step.get("guides"), step.get("joint")
@@ -748,6 +788,18 @@ def _cx(x, y):
     return x + 1j * y
 
 
+def _signed_root(st, step, disc):
+    """The root of a group's radicand with the sign of its mode, and where it assembles.
+
+    The mode comes from `mech.planar._linkage_modes.modes`; next to a change point a
+    radicand that rounding made slightly negative counts as zero.
+    """
+    sign, near = st.modes.get(step.label, (step.get("branch"), None))
+    if near is not None:
+        disc = np.where(near & (disc < 0), 0.0, disc)
+    return sign * np.sqrt(disc), disc >= 0
+
+
 # step data that hold lengths (or guides through fixed points); the rest are angles, signs, names
 _LENGTH_KEYS = frozenset({"at", "length", "lengths", "offset", "guide", "guides"})
 
@@ -787,6 +839,17 @@ class _State:
         self.dir, self.origin, self.W, self.AL = {"ground": 1.0 + 0j}, {"ground": None}, {}, {}
         self.slides = {}
         self.valid = np.ones(shape, dtype=bool)
+
+    def drop_unfinished(self):
+        """Count a pose as failed where any result is not finite (never NaN with valid True)."""
+        for table in (self.P, self.V, self.A, self.W, self.AL):
+            for v in table.values():
+                if v is not None:
+                    self.valid = self.valid & np.isfinite(v)
+        for sl in self.slides.values():
+            for v in (sl.s, sl.v, sl.a, sl.coriolis):
+                if v is not None:
+                    self.valid = self.valid & np.isfinite(v)
 
     def rescale(self, unit):
         """Multiply every length, linear rate and slide back from the solving unit."""
