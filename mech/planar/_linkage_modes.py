@@ -196,7 +196,7 @@ def _merge(points, period, spacing):
 # motion the interpolation error falls like (reach / radius of convergence)**_NODES; the
 # Lebesgue constant of these nodes over the gap is about 5. Where a node does not assemble
 # (a limit position close to the change point) the bridge is halved, up to _TRIES times.
-_HALF = 8.0
+_HALF = 4.0
 _REACH = 4.0
 _NODES = 16
 _TRIES = 4
