@@ -395,6 +395,7 @@ class Linkage:
         state.drop_unfinished()
         failures = {k: v & ~state.valid for k, v in failures.items()}
         state.rescale(unit)
+        state.drop_unfinished()         # a rate beyond the float range at this unit of length
         if strict and not np.all(state.valid):
             self._raise(failures, q, shape)
         return LinkageSolution(self, order, state, failures)
@@ -855,7 +856,7 @@ class _State:
         """Multiply every length, linear rate and slide back from the solving unit."""
         if unit == 1.0:
             return
-        with np.errstate(over="ignore"):
+        with np.errstate(over="ignore", invalid="ignore"):      # NaN and inf where not assembled
             for table in (self.P, self.V, self.A):
                 for k in table:
                     table[k] = table[k] * unit
