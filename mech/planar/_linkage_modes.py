@@ -194,12 +194,15 @@ def _merge(points, period, spacing):
 # _NODES // 2 on each side, at Chebyshev points between _HALF and _REACH * _HALF spacings
 # away, where the loop equations are well conditioned. For positions analytic along the
 # motion the interpolation error falls like (reach / radius of convergence)**_NODES; the
-# Lebesgue constant of these nodes over the gap is about 5. Where a node does not assemble
-# (a limit position close to the change point) the bridge is halved, up to _TRIES times.
+# Lebesgue constant of these nodes over the gap is about 5. The bridge of a change point is
+# accepted where its nodes assemble and it reproduces the direct solutions halfway to the
+# change point to _AGREE (in the solving unit, about the longest length); otherwise (a limit
+# position or a fast turn close to the change point) it is halved, up to _TRIES times.
 _HALF = 4.0
 _REACH = 4.0
 _NODES = 16
-_TRIES = 4
+_TRIES = 8
+_AGREE = 1e-10
 
 
 def _bridge_nodes(width):
@@ -254,11 +257,21 @@ def bridge(linkage, steps, schedules, driver, state, theta, omega, alpha):
             continue
         bases, which = np.unique(turns[idx], return_inverse=True)
         x, w = _bridge_nodes(width)
-        at = ((t0 + bases * P)[:, None] + x[None, :]).reshape(-1)
+        probe = np.array([-0.5, 0.5]) * width
+        at = ((t0 + bases * P)[:, None] + np.concatenate((x, probe))[None, :]).reshape(-1)
         ns = linkage._run(steps, order, at.shape, {driver: at}, {driver: np.ones_like(at)},
                           {driver: np.zeros_like(at)}, modes(schedules, steps, at))[0]
         nvalid = ns.valid.reshape(len(bases), -1).all(axis=1)
-        nf = _fields(ns)
+        nf = {k: np.broadcast_to(v, at.shape).reshape(len(bases), -1) for k, v in _fields(ns).items()}
+        # accept the bridge of a base where it reproduces the direct solutions halfway to
+        # the change point; a solution that turns faster than the nodes resolve fails this
+        cp = w[None, :] / (probe[:, None] - x[None, :])
+        cp /= cp.sum(axis=1, keepdims=True)
+        for key, vals in nf.items():
+            if key[0] == "P":
+                miss = np.abs(vals[:, : x.size] @ cp.T - vals[:, x.size:])
+                nvalid &= np.max(miss, axis=1) <= _AGREE
+        nf = {k: v[:, : x.size] for k, v in nf.items()}
         c = w[None, :] / (off[idx][:, None] - x[None, :])
         c /= c.sum(axis=1, keepdims=True)
         good = nvalid[which] & ~done[idx]
@@ -268,8 +281,7 @@ def bridge(linkage, steps, schedules, driver, state, theta, omega, alpha):
         bg = which[good]
 
         def interp(key):
-            vals = np.broadcast_to(nf[key], at.shape).reshape(len(bases), -1)
-            return np.sum(cg * vals[bg], axis=1)
+            return np.sum(cg * nf[key][bg], axis=1)
 
         for key in out:
             kind = key[0]
