@@ -114,7 +114,8 @@ class Linkage:
     mode further away, so the meeting pose itself is solved, rates included; there
     positions keep about 13 digits, velocities 10 and accelerations 7 or more. Linkages
     with several drivers, or driven by a slider or an actuator, keep each group in the mode
-    ``branch`` throughout.
+    ``branch`` throughout; where their modes meet, the rates are 0/0 and the pose counts as
+    not assembled.
 
     *Scale.* Each solve works in a power-of-two unit near the longest length (ground
     points, link lengths, guide points, offsets), so any finite lengths from 1e-300 to
@@ -421,7 +422,7 @@ class Linkage:
         if theta is not None:
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
                 _linkage_modes.bridge(self, steps, self._schedules(), crank, state, theta,
-                                      sw[crank], sal[crank])
+                                      sw[crank], sal[crank], failures)
         state.drop_unfinished()
         failures = {k: v & ~state.valid for k, v in failures.items()}
         state.rescale(unit)

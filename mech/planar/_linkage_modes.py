@@ -216,12 +216,14 @@ def _bridge_nodes(width):
     return x, w
 
 
-def bridge(linkage, steps, schedules, driver, state, theta, omega, alpha):
+def bridge(linkage, steps, schedules, driver, state, theta, omega, alpha, failures):
     """Replace the state next to every change point by interpolation across it (in place).
 
     At a change point the rates of a group are 0/0 and its position is fixed only to the
     square root of the rounding error; the interpolation gives the smooth continuation
-    to rounding instead, and the limit at the change point itself.
+    to rounding instead, and the limit at the change point itself. A pose that the direct
+    solution left unassembled becomes assembled only where the group of the change point
+    was the one that failed (its pins met, or rounding pushed its radicand below zero).
     """
     shape, order = state.shape, state.order
     flat = np.broadcast_to(theta, shape).reshape(-1)
@@ -239,11 +241,11 @@ def bridge(linkage, steps, schedules, driver, state, theta, omega, alpha):
             if not np.any(inside):
                 continue
             todo |= inside
-            tasks.append((t0, P, width, turns, off, inside))
+            tasks.append((label, t0, P, width, turns, off, inside))
     if not tasks:
         return
-    tasks = [(t0, P, width / 2**k, turns, off, inside & (np.abs(off) < width / 2**k))
-             for t0, P, width, turns, off, inside in tasks for k in range(_TRIES)]
+    tasks = [(label, t0, P, width / 2**k, turns, off, inside & (np.abs(off) < width / 2**k))
+             for label, t0, P, width, turns, off, inside in tasks for k in range(_TRIES)]
     om = np.broadcast_to(omega, shape).reshape(-1)
     al = np.broadcast_to(alpha, shape).reshape(-1)
     fields = _fields(state)
@@ -251,7 +253,8 @@ def bridge(linkage, steps, schedules, driver, state, theta, omega, alpha):
            for key, val in fields.items()}
     valid = state.valid.reshape(-1).copy()
     done = np.zeros(flat.shape, dtype=bool)
-    for t0, P, width, turns, off, inside in tasks:
+    for label, t0, P, width, turns, off, inside in tasks:
+        mended = np.broadcast_to(failures.get(label, False), shape).reshape(-1)
         idx = np.flatnonzero(inside & ~done)
         if idx.size == 0:
             continue
@@ -297,7 +300,7 @@ def bridge(linkage, steps, schedules, driver, state, theta, omega, alpha):
             else:                                   # Coriolis terms: products of two rates
                 v = om[sel] ** 2 * interp(key)
             out[key][sel] = v
-        valid[sel] = True
+        valid[sel] |= mended[sel]
     _store_fields(state, {k: v.reshape(shape) for k, v in out.items()})
     state.valid = valid.reshape(shape)
 
