@@ -245,8 +245,8 @@ class Linkage:
     def rrr(self, links, *, pins, joint, lengths, branch=1):
         """RRR group (eqs. 2-11, 2-12): two links pinned at known ``pins`` and at ``joint``.
 
-        ``branch=+1`` puts ``joint`` to the left of the directed line pins[0] -> pins[1].
-        Frames: link 0 from pins[0] with x towards ``joint``; link 1 from pins[1], likewise.
+        ``branch=+1`` puts ``joint`` to the left of the directed line pins[0] -> pins[1]
+        (past change points the mode follows the motion: see `Linkage`). Frames: link 0 from pins[0] with x towards ``joint``; link 1 from pins[1], likewise.
         A length given as a str is a driver: an actuator whose length is an input.
         """
         new = self._copy()
@@ -270,8 +270,8 @@ class Linkage:
     def rrp(self, links, *, pin, guide, joint, length, branch=1):
         """RRP group (eqs. 2-13 to 2-16): a rod from ``pin`` to a block on ``guide``.
 
-        ``branch=+1`` when ``pin -> joint`` makes an acute angle with the guide direction.
-        Frames: the rod from ``pin`` with x towards ``joint``; the block from ``joint`` with
+        ``branch=+1`` when ``pin -> joint`` makes an acute angle with the guide direction
+        (past change points the mode follows the motion: see `Linkage`). Frames: the rod from ``pin`` with x towards ``joint``; the block from ``joint`` with
         x along the guide. The block's sliding pair is ``(links[1], guide.link)``.
         """
         new = self._copy()
@@ -290,7 +290,8 @@ class Linkage:
 
         The guide line lies at the signed ``offset`` from pins[0] (positive: to the left,
         looking along the guide). ``branch=+1`` when the block is ahead of the foot of
-        pins[0] on the guide. Frames: the guide link from pins[0], x along the guide; the
+        pins[0] on the guide (past change points the mode follows the motion: see
+        `Linkage`). Frames: the guide link from pins[0], x along the guide; the
         block from pins[1], x along the guide. The sliding pair is ``(links[1], links[0])``.
         """
         new = self._copy()
