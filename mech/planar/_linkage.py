@@ -246,8 +246,9 @@ class Linkage:
         """RRR group (eqs. 2-11, 2-12): two links pinned at known ``pins`` and at ``joint``.
 
         ``branch=+1`` puts ``joint`` to the left of the directed line pins[0] -> pins[1]
-        (past change points the mode follows the motion: see `Linkage`). Frames: link 0 from pins[0] with x towards ``joint``; link 1 from pins[1], likewise.
-        A length given as a str is a driver: an actuator whose length is an input.
+        (past change points the mode follows the motion: see `Linkage`). Frames: link 0
+        from pins[0] with x towards ``joint``; link 1 from pins[1], likewise. A length
+        given as a str is a driver: an actuator whose length is an input.
         """
         new = self._copy()
         l1, l2 = links
@@ -271,8 +272,9 @@ class Linkage:
         """RRP group (eqs. 2-13 to 2-16): a rod from ``pin`` to a block on ``guide``.
 
         ``branch=+1`` when ``pin -> joint`` makes an acute angle with the guide direction
-        (past change points the mode follows the motion: see `Linkage`). Frames: the rod from ``pin`` with x towards ``joint``; the block from ``joint`` with
-        x along the guide. The block's sliding pair is ``(links[1], guide.link)``.
+        (past change points the mode follows the motion: see `Linkage`). Frames: the rod
+        from ``pin`` with x towards ``joint``; the block from ``joint`` with x along the
+        guide. The block's sliding pair is ``(links[1], guide.link)``.
         """
         new = self._copy()
         rod, block = links
@@ -414,8 +416,8 @@ class Linkage:
         shape = np.broadcast_shapes(*(np.shape(x) for x in (*q.values(), *w.values(), *al.values())))
         unit, steps = self._unit_steps()
         # distance inputs (sliders, actuators) are measured in the same unit as the lengths
-        sq, sw, sal = ({d: x[d] / unit if d in self._distance_drivers() else x[d] for d in x}
-                       for x in (q, w, al))
+        far = self._distance_drivers()
+        sq, sw, sal = ({d: x[d] / unit if d in far else x[d] for d in x} for x in (q, w, al))
         crank = self._crank_driver()
         theta = None if crank is None else np.broadcast_to(sq[crank], shape)
         state, failures = self._run(steps, order, shape, sq, sw, sal,
@@ -495,7 +497,8 @@ class Linkage:
                 if key in _LENGTH_KEYS:
                     sizes.extend(_magnitudes(value))
         largest = max(sizes)
-        unit = math.ldexp(1.0, math.frexp(largest)[1]) if largest > 0 else 1.0
+        # 2**(e - 1) <= largest < 2**e; 2**e itself may lie beyond the float range
+        unit = math.ldexp(1.0, math.frexp(largest)[1] - 1) if largest > 0 else 1.0
         steps = tuple(_Step(s.kind, s.label, s.links,
                             tuple((k, _in_unit(v, unit) if k in _LENGTH_KEYS else v) for k, v in s.data))
                       for s in self._steps)
