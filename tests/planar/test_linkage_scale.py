@@ -158,3 +158,20 @@ def test_solve_scale_change_point_exact(s):
     exact = 3 * s + 2 * s * np.exp(1j * np.array([0.0, math.pi, -math.pi, 1e-300]))
     assert np.max(np.abs(sol.points["C"] - exact)) < 1e-13 * s
     assert np.max(np.abs(sol.omegas["rocker"] - 1.0)) < 1e-10
+
+
+@pytest.mark.parametrize("s", [2.0**-1074, 1e306, 4e306])
+def test_solve_scale_float_limits(s):
+    """Lengths at the ends of the float range: the unit itself must not overflow."""
+    th = np.linspace(-4.0, 4.0, 81)
+    ref = fourbar(1.0).solve(th)
+    got = (Linkage({"A": 0, "D": 35 * s}).crank("crank", pivot="A", tip="B", length=10 * s)
+           .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(40 * s, 30 * s))).solve(th)
+    assert np.array_equal(got.valid, ref.valid)
+    assert np.max(np.abs(got.angles["rocker"] - ref.angles["rocker"])) < 1e-12
+
+
+@pytest.mark.parametrize("rtol", [0.0, -1e-12, float("nan"), "1e-12", True])
+def test_linkage_rtol_checked(rtol):
+    with pytest.raises(ValueError, match="`rtol`"):
+        Linkage({"A": 0}, rtol=rtol)
