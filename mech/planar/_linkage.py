@@ -90,8 +90,10 @@ class Linkage:
     ground : mapping of str to complex, optional
         Named fixed points.
     rtol : float, optional
-        Where a group's distance comes within ``rtol`` times the linkage's longest length
-        of the value at which its two modes meet, it counts as meeting them (a change point).
+        Where a group's distance comes within ``rtol`` times the linkage's size (the sum of
+        its lengths, offsets and the distances of its ground and guide points from the
+        origin; a + b + c + d for a four-bar) of the value at which its two modes meet, the
+        modes count as meeting there (a change point), as in `FourBar`.
 
     Notes
     -----
@@ -466,7 +468,7 @@ class Linkage:
         if cached is None:
             crank = self._crank_driver()
             cached = {} if crank is None else _linkage_modes.find_schedule(
-                self, self._unit_steps()[1], crank, self._rtol)
+                self, self._unit_steps()[1], crank, self._rtol * self._size())
             self._schedule_cache = cached
         return cached
 
@@ -504,6 +506,20 @@ class Linkage:
                       for s in self._steps)
         self._unit_cache = (unit, steps)
         return self._unit_cache
+
+    def _size(self):
+        """Sum of every length that defines the linkage, in the solving unit.
+
+        Link lengths, offsets, and the distances of ground and guide points from the
+        origin: for a four-bar with A = 0 this is a + b + c + d, the size `FourBar` measures
+        its change-point tolerance against.
+        """
+        total = 0.0
+        for step in self._unit_steps()[1]:
+            for key, value in step.data:
+                if key in _LENGTH_KEYS:
+                    total += sum(_magnitudes(value, planar=True))
+        return total
 
     def _per_driver(self, value, what):
         if isinstance(value, dict) or hasattr(value, "keys"):
@@ -840,14 +856,17 @@ def _signed_root(st, step, disc):
 _LENGTH_KEYS = frozenset({"at", "length", "lengths", "offset", "guide", "guides"})
 
 
-def _magnitudes(value):
-    """The length magnitudes held by one item of step data (a Guide, a number, a tuple)."""
+def _magnitudes(value, planar=False):
+    """The length magnitudes held by one item of step data (a Guide, a number, a tuple).
+
+    A point gives its two coordinates, or with ``planar=True`` its distance from the origin.
+    """
     if isinstance(value, Guide):
-        return [] if isinstance(value.through, str) else _magnitudes(complex(value.through))
+        return [] if isinstance(value.through, str) else _magnitudes(complex(value.through), planar)
     if isinstance(value, tuple):
-        return [m for v in value for m in _magnitudes(v)]
+        return [m for v in value for m in _magnitudes(v, planar)]
     if isinstance(value, complex):
-        return [abs(value.real), abs(value.imag)]
+        return [math.hypot(value.real, value.imag)] if planar else [abs(value.real), abs(value.imag)]
     if isinstance(value, float):
         return [abs(value)]
     return []           # a driver's name in place of a length
