@@ -5,9 +5,9 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:9461fb99e0ed7761fe94423a35690accc41907cca69bc9ea5e41c91eb2ab8d68"
+INPUT_HASH = "sha256:49c9e411df43f430f54d9d884574fc5dd87d9f48ee85cdd4ac524b8f3e377297"
 
-__all__ = ['rigid_body_position', 'rigid_body_velocity', 'rigid_body_acceleration', 'slide_velocity', 'slide_acceleration', 'rrr_position', 'rrr_velocity', 'rrr_acceleration', 'rrp_position', 'rrp_velocity', 'rrp_acceleration', 'rpr_position', 'rpr_velocity', 'rpr_acceleration', 'prp_position', 'prp_velocity', 'prp_acceleration', 'rpp_position', 'rpp_velocity', 'rpp_acceleration']
+__all__ = ['rigid_body_position', 'rigid_body_velocity', 'rigid_body_acceleration', 'slide_velocity', 'slide_acceleration', 'rrr_position', 'rrr_velocity', 'rrr_acceleration', 'rrp_position', 'rrp_velocity', 'rrp_acceleration', 'rpr_position', 'rpr_velocity', 'rpr_acceleration', 'prp_position', 'prp_velocity', 'prp_acceleration', 'rpp_position', 'rpp_velocity', 'rpp_acceleration', 'rrr_position_root', 'rrp_position_root', 'rpr_position_root']
 
 
 def rigid_body_position(ox, oy, c, s, lx, ly):
@@ -1052,4 +1052,110 @@ def rpp_acceleration(ex, ey, wx, wy, s2, t_, e0, a1x, a1y, aqx, aqy, omegaK, alp
         ex*x18,
         -wy*x19,
         wx*x19,
+    )
+
+
+def rrr_position_root(gx, gy, r1, r2, rho):
+    """RRR group: P3 - P1 from the signed root rho = +-sqrt(D) of Heron's product.
+
+    Generated from ``derivations/planar/assur_groups.md``, equations (2-11) to (2-18), Figs. 2-53 to 2-56.
+
+    Parameters
+    ----------
+    gx : array_like
+        x of P2 - P1
+    gy : array_like
+        y of P2 - P1
+    r1 : array_like
+        length P1P3
+    r2 : array_like
+        length P2P3
+    rho : array_like
+        signed root of D; positive puts P3 left of P1->P2
+
+    Returns
+    -------
+    u1x : ndarray
+        x of P3 - P1
+    u1y : ndarray
+        y of P3 - P1
+
+    Arguments broadcast against each other like a NumPy ufunc.
+    """
+    x0 = gx**2
+    x1 = gy**2
+    x2 = (2*x0 + 2*x1)**(-1.0)
+    x3 = r1**2 - r2**2 + x0 + x1
+    return (
+        x2*(gx*x3 - gy*rho),
+        x2*(gx*rho + gy*x3),
+    )
+
+
+def rrp_position_root(gx, gy, ex, ey, rho):
+    """RRP group: slider position s and P3 - P1 from the signed root rho = +-sqrt(disc).
+
+    Generated from ``derivations/planar/assur_groups.md``, equations (2-11) to (2-18), Figs. 2-53 to 2-56.
+
+    Parameters
+    ----------
+    gx : array_like
+        x of Q - P1
+    gy : array_like
+        y of Q - P1
+    ex : array_like
+        guide direction x
+    ey : array_like
+        guide direction y
+    rho : array_like
+        signed root of disc; positive: P1->P3 acute to the guide
+
+    Returns
+    -------
+    s : ndarray
+        slider position along the guide from Q
+    u1x : ndarray
+        x of P3 - P1
+    u1y : ndarray
+        y of P3 - P1
+
+    Arguments broadcast against each other like a NumPy ufunc.
+    """
+    x0 = -ex*gx - ey*gy + rho
+    return (
+        x0,
+        ex*x0 + gx,
+        ey*x0 + gy,
+    )
+
+
+def rpr_position_root(gx, gy, e, rho):
+    """RPR group: guide direction w from the signed root rho = s = +-sqrt(d^2 - e^2).
+
+    Generated from ``derivations/planar/assur_groups.md``, equations (2-11) to (2-18), Figs. 2-53 to 2-56.
+
+    Parameters
+    ----------
+    gx : array_like
+        x of P2 - P1
+    gy : array_like
+        y of P2 - P1
+    e : array_like
+        signed offset of the guide from P1
+    rho : array_like
+        signed root, the block position s along the guide
+
+    Returns
+    -------
+    wx : ndarray
+        guide direction x
+    wy : ndarray
+        guide direction y
+
+    Arguments broadcast against each other like a NumPy ufunc.
+    """
+    x0 = (gx**2 + gy**2)**(-1.0)
+    return (
+        x0*(e*gy + gx*rho),
+        x0*(-e*gx + gy*rho),
     )

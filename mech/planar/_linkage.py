@@ -8,13 +8,14 @@ The formulas come from ``derivations/planar/assur_groups.md`` through
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 
 import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import assur_groups as _g
+from mech.planar import _linkage_modes
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
 
 __all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
@@ -88,12 +89,41 @@ class Linkage:
     ----------
     ground : mapping of str to complex, optional
         Named fixed points.
+    rtol : float, optional
+        Where a group's distance comes within ``rtol`` times the linkage's size (the sum of
+        its lengths, offsets and the distances of its ground and guide points from the
+        origin; a + b + c + d for a four-bar) of the value at which its two modes meet, the
+        modes count as meeting there (a change point), as in `FourBar`.
 
     Notes
     -----
-    Derivation: ``derivations/planar/assur_groups.md`` (eqs. 2-11 to 2-18). Each group has
-    an explicit assembly mode ``branch`` (the textbook's M), with a geometric meaning that
-    never changes along a motion, so a solution never jumps from one mode to the other.
+    Derivation: ``derivations/planar/assur_groups.md`` (eqs. 2-11 to 2-18). Each group with
+    two assembly modes (RRR, RRP, RPR) has a ``branch`` (the textbook's M) with a geometric
+    meaning, and a solution never jumps from one mode to the other.
+
+    *Change points.* Where the two modes of a group meet and part again (its radicand
+    touches zero: a parallelogram four-bar at theta = 0 and pi, a slider-crank with
+    a + |e| = b, pins that pass through each other), the motion continues smoothly onto the
+    other mode, as `FourBar` does: a parallelogram stays a parallelogram. For a linkage
+    driven by one crank the rule is local: the mode at input angle theta is ``branch``
+    times -1 for each change point in (0, theta] (for theta < 0, in (theta, 0]), so
+    ``branch`` names the mode just after theta = 0 and every input is solved on its own,
+    whatever the order of the array. The change points are found once per linkage by
+    sampling the crank over the period of each group's pins (2048 samples per turn; two
+    change points closer than a sample are missed) and bisecting to rounding. Within four
+    samples of a change point, where the loop equations lose digits (rates are 0/0 at the
+    point itself), every result is interpolated across it from 16 solutions of the same
+    mode further away, so the meeting pose itself is solved, rates included; there
+    positions keep about 13 digits, velocities 10 and accelerations 7 or more. Linkages
+    with several drivers, or driven by a slider or an actuator, keep each group in the mode
+    ``branch`` throughout; where their modes meet, the rates are 0/0 and the pose counts as
+    not assembled.
+
+    *Scale.* Each solve works in a power-of-two unit near the longest length (ground
+    points, link lengths, guide points, offsets), so any finite lengths from 1e-300 to
+    1e300 give the same angles and `valid`, with positions and linear rates in proportion.
+    A pose counts as not assembled where a result is not finite (for instance a rate beyond
+    the floating-point range).
 
     Examples
     --------
@@ -107,7 +137,8 @@ class Linkage:
     [30.0, 30.0]
     """
 
-    def __init__(self, ground=None):
+    def __init__(self, ground=None, *, rtol=1e-12):
+        self._rtol = positive_length("rtol", rtol)
         self._steps = ()
         self._points = {}        # name -> link that first carries it
         self._links = {GROUND: None}
@@ -125,6 +156,7 @@ class Linkage:
         new._links = dict(self._links)
         new._guides = dict(self._guides)
         new._drivers = self._drivers
+        new._rtol = self._rtol
         return new
 
     def _add_point(self, name, link):
@@ -215,9 +247,10 @@ class Linkage:
     def rrr(self, links, *, pins, joint, lengths, branch=1):
         """RRR group (eqs. 2-11, 2-12): two links pinned at known ``pins`` and at ``joint``.
 
-        ``branch=+1`` puts ``joint`` to the left of the directed line pins[0] -> pins[1].
-        Frames: link 0 from pins[0] with x towards ``joint``; link 1 from pins[1], likewise.
-        A length given as a str is a driver: an actuator whose length is an input.
+        ``branch=+1`` puts ``joint`` to the left of the directed line pins[0] -> pins[1]
+        (past change points the mode follows the motion: see `Linkage`). Frames: link 0
+        from pins[0] with x towards ``joint``; link 1 from pins[1], likewise. A length
+        given as a str is a driver: an actuator whose length is an input.
         """
         new = self._copy()
         l1, l2 = links
@@ -240,9 +273,10 @@ class Linkage:
     def rrp(self, links, *, pin, guide, joint, length, branch=1):
         """RRP group (eqs. 2-13 to 2-16): a rod from ``pin`` to a block on ``guide``.
 
-        ``branch=+1`` when ``pin -> joint`` makes an acute angle with the guide direction.
-        Frames: the rod from ``pin`` with x towards ``joint``; the block from ``joint`` with
-        x along the guide. The block's sliding pair is ``(links[1], guide.link)``.
+        ``branch=+1`` when ``pin -> joint`` makes an acute angle with the guide direction
+        (past change points the mode follows the motion: see `Linkage`). Frames: the rod
+        from ``pin`` with x towards ``joint``; the block from ``joint`` with x along the
+        guide. The block's sliding pair is ``(links[1], guide.link)``.
         """
         new = self._copy()
         rod, block = links
@@ -260,7 +294,8 @@ class Linkage:
 
         The guide line lies at the signed ``offset`` from pins[0] (positive: to the left,
         looking along the guide). ``branch=+1`` when the block is ahead of the foot of
-        pins[0] on the guide. Frames: the guide link from pins[0], x along the guide; the
+        pins[0] on the guide (past change points the mode follows the motion: see
+        `Linkage`). Frames: the guide link from pins[0], x along the guide; the
         block from pins[1], x along the guide. The sliding pair is ``(links[1], links[0])``.
         """
         new = self._copy()
@@ -366,6 +401,10 @@ class Linkage:
             With ``strict=True``, naming the first failing group, the input value and,
             for a one-crank linkage, the crank range where it does assemble.
 
+        Notes
+        -----
+        The modes through change points and the unit of length: see `Linkage`.
+
         Examples
         --------
         >>> lk = (Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
@@ -377,19 +416,110 @@ class Linkage:
         q, w, al = (self._per_driver(x, name) for x, name in
                     ((inputs, "inputs"), (omega, "omega"), (alpha, "alpha")))
         shape = np.broadcast_shapes(*(np.shape(x) for x in (*q.values(), *w.values(), *al.values())))
+        unit, steps = self._unit_steps()
+        # distance inputs (sliders, actuators) are measured in the same unit as the lengths
+        far = self._distance_drivers()
+        sq, sw, sal = ({d: x[d] / unit if d in far else x[d] for d in x} for x in (q, w, al))
+        crank = self._crank_driver()
+        theta = None if crank is None else np.broadcast_to(sq[crank], shape)
+        state, failures = self._run(steps, order, shape, sq, sw, sal,
+                                    _linkage_modes.modes(self._schedules(), steps, theta))
+        if theta is not None:
+            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+                _linkage_modes.bridge(self, steps, self._schedules(), crank, state, theta,
+                                      sw[crank], sal[crank], failures)
+        state.drop_unfinished()
+        failures = {k: v & ~state.valid for k, v in failures.items()}
+        state.rescale(unit)
+        state.drop_unfinished()         # a rate beyond the float range at this unit of length
+        if strict and not np.all(state.valid):
+            self._raise(failures, q, shape)
+        return LinkageSolution(self, order, state, failures)
+
+    def _run(self, steps, order, shape, q, w, al, modes):
+        """Solve `steps` (in the unit of `_unit_steps`); return the state and the failures.
+
+        ``modes`` maps each two-mode group to its mode and where its radicand may count as
+        zero (`mech.planar._linkage_modes.modes`).
+        """
         state = _State(order, shape)
+        state.modes = modes
         failures = {}
-        with np.errstate(invalid="ignore", divide="ignore"):
-            for step in self._steps:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            for step in steps:
                 ok = getattr(self, "_do_" + step.kind)(step, state, q, w, al)
                 if ok is not None:
                     ok = np.broadcast_to(ok, shape)
                     first = ~ok & state.valid
                     failures[step.label] = first
                     state.valid = state.valid & ok
-        if strict and not np.all(state.valid):
-            self._raise(failures, q, shape)
-        return LinkageSolution(self, order, state, failures)
+        return state, failures
+
+    def _crank_driver(self):
+        """The driver's name when the linkage is driven by one crank, else None."""
+        cranks = [s.get("driver") for s in self._steps if s.kind == "crank"]
+        if len(self._drivers) == 1 and cranks == list(self._drivers):
+            return cranks[0]
+        return None
+
+    def _schedules(self):
+        """The change points of every two-mode group (one-crank linkages only), cached."""
+        cached = self.__dict__.get("_schedule_cache")
+        if cached is None:
+            crank = self._crank_driver()
+            cached = {} if crank is None else _linkage_modes.find_schedule(
+                self, self._unit_steps()[1], crank, self._rtol * self._size())
+            self._schedule_cache = cached
+        return cached
+
+    def _distance_drivers(self):
+        """Names of the drivers whose input is a distance (sliders and actuators)."""
+        out = set()
+        for step in self._steps:
+            if step.kind == "slider":
+                out.add(step.get("driver"))
+            elif step.kind == "rrr":
+                out.update(x for x in step.get("lengths") if isinstance(x, str))
+        return out
+
+    def _unit_steps(self):
+        """A power of two ``unit`` near the largest length, and the steps measured in it.
+
+        Solving in this unit makes every intermediate quantity of order one whatever the
+        user's unit of length, so lengths anywhere from 1e-300 to 1e300 neither overflow nor
+        underflow, and angles do not depend on the unit. A power of two keeps the division
+        and the final multiplication exact.
+        """
+        cached = self.__dict__.get("_unit_cache")
+        if cached is not None:
+            return cached
+        sizes = [0.0]
+        for step in self._steps:
+            for key, value in step.data:
+                if key in _LENGTH_KEYS:
+                    sizes.extend(_magnitudes(value))
+        largest = max(sizes)
+        # 2**(e - 1) <= largest < 2**e; 2**e itself may lie beyond the float range
+        unit = math.ldexp(1.0, math.frexp(largest)[1] - 1) if largest > 0 else 1.0
+        steps = tuple(_Step(s.kind, s.label, s.links,
+                            tuple((k, _in_unit(v, unit) if k in _LENGTH_KEYS else v) for k, v in s.data))
+                      for s in self._steps)
+        self._unit_cache = (unit, steps)
+        return self._unit_cache
+
+    def _size(self):
+        """Sum of every length that defines the linkage, in the solving unit.
+
+        Link lengths, offsets, and the distances of ground and guide points from the
+        origin: for a four-bar with A = 0 this is a + b + c + d, the size `FourBar` measures
+        its change-point tolerance against.
+        """
+        total = 0.0
+        for step in self._unit_steps()[1]:
+            for key, value in step.data:
+                if key in _LENGTH_KEYS:
+                    total += sum(_magnitudes(value, planar=True))
+        return total
 
     def _per_driver(self, value, what):
         if isinstance(value, dict) or hasattr(value, "keys"):
@@ -495,7 +625,9 @@ class Linkage:
         (l1, l2), (p1, p2), joint = step.links, step.get("pins"), step.get("joint")
         (r1, dr1, ddr1), (r2, dr2, ddr2) = (self._length(x, q, w, al, st) for x in step.get("lengths"))
         P1, P2 = st.P[p1], st.P[p2]
-        ux, uy, D = _g.rrr_position(*_re_im(P2 - P1), r1, r2, step.get("branch"))
+        gx, gy = _re_im(P2 - P1)
+        rho, ok = _signed_root(st, step, _g.rrr_position(gx, gy, r1, r2, 1.0)[2])
+        ux, uy = _g.rrr_position_root(gx, gy, r1, r2, rho)
         u1 = ux + 1j * uy
         P3 = P1 + u1
         u2 = P3 - P2
@@ -511,13 +643,15 @@ class Linkage:
         st.put_link(l1, p1, u1 / r1, W1, A1)
         st.put_link(l2, p2, u2 / r2, W2, A2)
         st.put_point(joint, P3, v3, a3)
-        return D >= 0
+        return ok & np.isfinite(ux) & np.isfinite(uy)
 
     def _do_rrp(self, step, st, q, w, al):
         (rod, block), p1, guide, joint, r1 = step.links, step.get("pin"), step.get("guide"), step.get("joint"), step.get("length")
         Q, e, vQ, aQ, wK, aK = self._guide_state(st, guide)
         P1 = st.P[p1]
-        s, ux, uy, disc = _g.rrp_position(*_re_im(Q - P1), *_re_im(e), r1, step.get("branch"))
+        (gx, gy), (ex, ey) = _re_im(Q - P1), _re_im(e)
+        rho, ok = _signed_root(st, step, _g.rrp_position(gx, gy, ex, ey, r1, 1.0)[3])
+        s, ux, uy = _g.rrp_position_root(gx, gy, ex, ey, rho)
         u1 = ux + 1j * uy
         P3 = P1 + u1
         W1 = A1 = v3 = a3 = None
@@ -536,12 +670,14 @@ class Linkage:
         st.put_link(block, joint, e, wK if st.order >= 1 else None, aK if st.order >= 2 else None)
         st.put_point(joint, P3, v3, a3)
         st.put_slide(block, guide.link, slide)
-        return disc >= 0
+        return ok
 
     def _do_rpr(self, step, st, q, w, al):
         (gl, block), (p1, p2), e0 = step.links, step.get("pins"), step.get("offset")
         P1, P2 = st.P[p1], st.P[p2]
-        s, wx, wy, disc = _g.rpr_position(*_re_im(P2 - P1), e0, step.get("branch"))
+        gx, gy = _re_im(P2 - P1)
+        s, ok = _signed_root(st, step, _g.rpr_position(gx, gy, e0, 1.0)[3])
+        wx, wy = _g.rpr_position_root(gx, gy, e0, s)
         d = wx + 1j * wy
         W = A = None
         slide = Slide(s=s, direction=d)
@@ -554,7 +690,7 @@ class Linkage:
         st.put_link(gl, p1, d, W, A)
         st.put_link(block, p2, d, W, A)
         st.put_slide(block, gl, slide)
-        return disc >= 0
+        return ok & np.isfinite(wx) & np.isfinite(wy)
 
     def _do_prp(self, step, st, q, w, al):
         (b1, b2), (g1, g2), joint = step.links, step.get("guides"), step.get("joint")
@@ -704,6 +840,51 @@ def _cx(x, y):
     return x + 1j * y
 
 
+def _signed_root(st, step, disc):
+    """The root of a group's radicand with the sign of its mode, and where it assembles.
+
+    The mode comes from `mech.planar._linkage_modes.modes`; next to a change point a
+    radicand that rounding made slightly negative counts as zero.
+    """
+    sign, near = st.modes.get(step.label, (step.get("branch"), None))
+    if near is not None:
+        disc = np.where(near & (disc < 0), 0.0, disc)
+    return sign * np.sqrt(disc), disc >= 0
+
+
+# step data that hold lengths (or guides through fixed points); the rest are angles, signs, names
+_LENGTH_KEYS = frozenset({"at", "length", "lengths", "offset", "guide", "guides"})
+
+
+def _magnitudes(value, planar=False):
+    """The length magnitudes held by one item of step data (a Guide, a number, a tuple).
+
+    A point gives its two coordinates, or with ``planar=True`` its distance from the origin.
+    """
+    if isinstance(value, Guide):
+        return [] if isinstance(value.through, str) else _magnitudes(complex(value.through), planar)
+    if isinstance(value, tuple):
+        return [m for v in value for m in _magnitudes(v, planar)]
+    if isinstance(value, complex):
+        return [math.hypot(value.real, value.imag)] if planar else [abs(value.real), abs(value.imag)]
+    if isinstance(value, float):
+        return [abs(value)]
+    return []           # a driver's name in place of a length
+
+
+def _in_unit(value, unit):
+    """Divide the lengths in one item of step data by `unit` (angles and names unchanged)."""
+    if isinstance(value, Guide):
+        if isinstance(value.through, str):
+            return value
+        return replace(value, through=complex(value.through) / unit)
+    if isinstance(value, tuple):
+        return tuple(_in_unit(v, unit) for v in value)
+    if isinstance(value, (complex, float)) and not isinstance(value, bool):
+        return value / unit
+    return value
+
+
 class _State:
     """Mutable arrays filled step by step during one solve."""
 
@@ -713,6 +894,29 @@ class _State:
         self.dir, self.origin, self.W, self.AL = {"ground": 1.0 + 0j}, {"ground": None}, {}, {}
         self.slides = {}
         self.valid = np.ones(shape, dtype=bool)
+
+    def drop_unfinished(self):
+        """Count a pose as failed where any result is not finite (never NaN with valid True)."""
+        for table in (self.P, self.V, self.A, self.W, self.AL):
+            for v in table.values():
+                if v is not None:
+                    self.valid = self.valid & np.isfinite(v)
+        for sl in self.slides.values():
+            for v in (sl.s, sl.v, sl.a, sl.coriolis):
+                if v is not None:
+                    self.valid = self.valid & np.isfinite(v)
+
+    def rescale(self, unit):
+        """Multiply every length, linear rate and slide back from the solving unit."""
+        if unit == 1.0:
+            return
+        with np.errstate(over="ignore", invalid="ignore"):      # NaN and inf where not assembled
+            for table in (self.P, self.V, self.A):
+                for k in table:
+                    table[k] = table[k] * unit
+            for key, sl in self.slides.items():
+                self.slides[key] = Slide(*(x if x is None or i == 1 else x * unit
+                                           for i, x in enumerate((sl.s, sl.direction, sl.v, sl.a, sl.coriolis))))
 
     def put_point(self, name, z, v, a):
         self.P[name] = z
