@@ -12,12 +12,16 @@ class Pose:
     solved raises an `AttributeError` naming the order needed) and the fields computed on
     first read in ``_DERIVED`` (``_derive(name)`` computes them; the result is kept).
 
-    The masks: ``valid`` concerns the positions (order 0): False exactly where the linkage
-    cannot be assembled, and every position field is NaN there. A pose solved with
-    ``order >= 1`` may also carry ``rates_valid`` (see `mask_singular_rates`): False where
-    the pose assembles but its velocity equations are singular (a dead point, where the
-    rates are infinite or undetermined); the rates that depend on those equations are NaN
-    there. So no field is ever NaN where its own mask is True.
+    The masks (the package's promise, page "What the package promises"):
+
+    - ``valid``: True exactly where every field that was solved holds a number. It is
+      False where the linkage cannot be assembled (every field is NaN there) and, for a
+      pose solved with ``order >= 1``, also at a dead point, where the pose assembles but
+      its velocity equations are singular, so the rates are infinite or undetermined
+      (those rates are NaN there; see `mask_singular_rates`). No field is ever NaN where
+      ``valid`` is True.
+    - ``assembled``: True where the position exists, whatever the order. It differs from
+      ``valid`` only at dead points, where the positions are solved and finite.
     """
 
     _ORDER_OF = {}
@@ -31,6 +35,8 @@ class Pose:
         fields = self.__dict__.get("_fields", {})
         if name in fields:
             return fields[name]
+        if name == "assembled" and "valid" in fields:
+            return fields["valid"]
         if name in self._DERIVED:
             fields[name] = value = self._derive(name)
             return value
@@ -57,13 +63,14 @@ class Pose:
 
 
 def mask_singular_rates(fields, names):
-    """Add the mask ``rates_valid`` to solved `fields` and NaN the rates where it is False.
+    """Mark dead points in solved `fields`: ``valid`` False there, ``assembled`` kept.
 
-    ``rates_valid`` is True where ``valid`` is True and every field in `names` is finite;
-    those fields (the rates found by solving the singular velocity equations, not those
-    fixed by the input link alone) are set to NaN where it is False, so that an infinite
-    rate of a dead point reads as NaN under a False mask. Fields must already have the
-    shape of ``valid``, optionally with trailing axes (vectors), which are reduced.
+    ``assembled`` takes the incoming ``valid`` (the positions exist). The new ``valid`` is
+    True where ``assembled`` is True and every field in `names` is finite; those fields
+    (the rates found by solving the singular velocity equations, not those fixed by the
+    input link alone) are set to NaN where it is False, so that an infinite rate of a dead
+    point reads as NaN under a False mask. Fields must already have the shape of
+    ``valid``, optionally with trailing axes (vectors), which are reduced.
     """
     valid = np.asarray(fields["valid"])
     ok = valid.copy()
@@ -75,5 +82,6 @@ def mask_singular_rates(fields, names):
         keep = ok.reshape(ok.shape + (1,) * (value.ndim - ok.ndim))
         nan = np.nan + 1j * np.nan if np.iscomplexobj(value) else np.nan
         fields[name] = np.where(keep, value, nan)[()]
-    fields["rates_valid"] = ok[()]
+    fields["assembled"] = valid[()]
+    fields["valid"] = ok[()]
     return fields

@@ -21,7 +21,7 @@ __all__ = [
 
 
 def _rates_mask(order, fields, pose_class):
-    """Add ``rates_valid`` (the rule of `mech._pose.Pose`) over every rate of the pose."""
+    """Mark dead points over every rate of the pose (the rule of `mech._pose.Pose`)."""
     if order >= 1:
         mask_singular_rates(fields, [k for k in pose_class._ORDER_OF if k in fields])
     return fields
@@ -43,11 +43,13 @@ class TrammelPose(Pose):
         With ``order >= 1``; ``omega_coupler = -omega``.
     aB, aC, aP, alpha_coupler : ndarray
         With ``order >= 2``.
-    rates_valid : ndarray of bool
-        With ``order >= 1``: all True (the rule of `mech._pose.Pose`).
+    assembled : ndarray of bool
+        True where the position exists. With ``order >= 1``, ``valid`` is False also where
+        a solved rate is infinite or undetermined (a dead point; those rates are NaN
+        there), while ``assembled`` stays True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"vB": 1, "vC": 1, "vP": 1, "omega_coupler": 1, "rates_valid": 1,
+    _ORDER_OF = {"vB": 1, "vC": 1, "vP": 1, "omega_coupler": 1,
                  "aB": 2, "aC": 2, "aP": 2, "alpha_coupler": 2}
 
 
@@ -176,9 +178,9 @@ class EllipticTrammel:
 
 class ScotchYokePose(Pose):
     """Poses of a sine mechanism (from `ScotchYoke.solve`): ``theta, valid, x, B``;
-    ``v`` and ``rates_valid`` (all True) with ``order >= 1``; ``acc`` with ``order >= 2``."""
+    ``v`` with ``order >= 1``; ``acc`` with ``order >= 2``."""
 
-    _ORDER_OF = {"v": 1, "rates_valid": 1, "acc": 2}
+    _ORDER_OF = {"v": 1, "acc": 2}
 
 
 class ScotchYoke:
@@ -242,10 +244,10 @@ class ScotchYoke:
 
 class TangentPose(Pose):
     """Poses of a tangent mechanism (from `TangentMechanism.solve`): ``theta, valid, h, S``;
-    ``v`` and ``rates_valid`` with ``order >= 1`` (False where `valid` is, or where a rate
-    overflows; the rates are NaN exactly there); ``acc`` with ``order >= 2``."""
+    ``v`` with ``order >= 1`` (where a rate overflows, ``valid`` is False, ``assembled``
+    True and the rates NaN); ``acc`` with ``order >= 2``."""
 
-    _ORDER_OF = {"v": 1, "rates_valid": 1, "acc": 2}
+    _ORDER_OF = {"v": 1, "acc": 2}
 
 
 class TangentMechanism:
@@ -335,11 +337,13 @@ class OldhamPose(Pose):
         With ``order >= 1``: ``omega_orbit = 2 omega``, the others ``omega``.
     aS, alpha_orbit, alpha_slider, alpha_output : ndarray
         With ``order >= 2``.
-    rates_valid : ndarray of bool
-        With ``order >= 1``: all True (the rule of `mech._pose.Pose`).
+    assembled : ndarray of bool
+        True where the position exists. With ``order >= 1``, ``valid`` is False also where
+        a solved rate is infinite or undetermined (a dead point; those rates are NaN
+        there), while ``assembled`` stays True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"vS": 1, "omega_orbit": 1, "omega_slider": 1, "omega_output": 1, "rates_valid": 1,
+    _ORDER_OF = {"vS": 1, "omega_orbit": 1, "omega_slider": 1, "omega_output": 1,
                  "aS": 2, "alpha_orbit": 2, "alpha_slider": 2, "alpha_output": 2}
 
 

@@ -30,12 +30,13 @@ class SliderCrankPose(Pose):
     acc, alpha_coupler, aB : ndarray
         With ``order >= 2``: slider acceleration, rod angular acceleration, acceleration
         of B.
-    rates_valid : ndarray of bool
-        With ``order >= 1``: False where the pose does not assemble or is a dead point;
-        ``v, omega_coupler, acc, alpha_coupler`` are NaN exactly there.
+    assembled : ndarray of bool
+        True where the position exists. With ``order >= 1``, ``valid`` is False also where
+        a solved rate is infinite or undetermined (a dead point; those rates are NaN
+        there), while ``assembled`` stays True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"v": 1, "omega_coupler": 1, "vB": 1, "rates_valid": 1,
+    _ORDER_OF = {"v": 1, "omega_coupler": 1, "vB": 1,
                  "acc": 2, "alpha_coupler": 2, "aB": 2}
 
 
@@ -170,7 +171,7 @@ class SliderCrank:
         -------
         SliderCrankPose
             Fields ``B, C, x, phi, valid`` of the broadcast shape; with ``order >= 1``
-            also ``v, omega_coupler, vB, rates_valid``; with ``order >= 2`` also
+            also ``v, omega_coupler, vB``; with ``order >= 2`` also
             ``acc, alpha_coupler, aB``. Nothing above `order` is computed.
 
         Raises
@@ -184,12 +185,12 @@ class SliderCrank:
         Notes
         -----
         At a dead point of a rocking crank (``|a sin(theta) - e| = b``) the position
-        exists and is exact, so ``valid`` is True (and ``strict`` does not raise), but the
-        velocity equations are singular: the rates are infinite (undetermined when
-        ``omega = 0``). There ``rates_valid`` is False and ``v, omega_coupler, acc,
-        alpha_coupler`` are NaN; ``vB`` and ``aB``, set by the crank alone, stay finite.
-        Near a dead point the rates are finite and grow like the inverse square root of
-        the distance to it. ``valid`` concerns positions, ``rates_valid`` rates.
+        exists and is exact, so ``assembled`` is True (and ``strict`` does not raise), but
+        the velocity equations are singular: the rates are infinite (undetermined when
+        ``omega = 0``). With ``order >= 1``, ``valid`` is False there and ``v,
+        omega_coupler, acc, alpha_coupler`` are NaN; ``vB`` and ``aB``, set by the crank
+        alone, stay finite. Near a dead point the rates are finite and grow like the
+        inverse square root of the distance to it.
 
         Examples
         --------

@@ -51,12 +51,13 @@ class RotatingGuideBarPose(Pose):
         With ``order >= 1``: d psi/dt, d rho/dt and the velocity of B.
     alpha_guide, a_slide, aB : ndarray
         With ``order >= 2``: the second derivatives and the acceleration of B.
-    rates_valid : ndarray of bool
-        With ``order >= 1``: all True (no dead point for a driving crank); present for
-        the common rule of `mech._pose.Pose`.
+    assembled : ndarray of bool
+        True where the position exists. With ``order >= 1``, ``valid`` is False also where
+        a solved rate is infinite or undetermined (a dead point; those rates are NaN
+        there), while ``assembled`` stays True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1, "rates_valid": 1,
+    _ORDER_OF = {"omega_guide": 1, "v_slide": 1, "vB": 1,
                  "alpha_guide": 2, "a_slide": 2, "aB": 2}
 
 

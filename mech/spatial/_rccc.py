@@ -24,12 +24,13 @@ class RCCCPose(Pose):
         Angles and slides of the middle cylinders at B and C (H-D).
     omega_output, v_output : ndarray
         d phi41/dt and d S4/dt; present when solved with ``order >= 1``.
-    rates_valid : ndarray of bool
-        With ``order >= 1``: False where the pose does not assemble or is a limit position
-        of the spherical image (infinite rates); the two rates are NaN exactly there.
+    assembled : ndarray of bool
+        True where the position exists. With ``order >= 1``, ``valid`` is False also where
+        a solved rate is infinite or undetermined (a dead point; those rates are NaN
+        there), while ``assembled`` stays True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"omega_output": 1, "v_output": 1, "rates_valid": 1}
+    _ORDER_OF = {"omega_output": 1, "v_output": 1}
 
 
 class RCCC:

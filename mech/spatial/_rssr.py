@@ -40,14 +40,13 @@ class RSSRPose(Pose):
         d phi03/dt and the pin velocities; present when solved with ``order >= 1``.
     alpha_output, aB, aC : ndarray
         d2 phi03/dt2 and the pin accelerations; present when solved with ``order >= 2``.
-    rates_valid : ndarray of bool
-        With ``order >= 1``: False where the pose does not assemble or where
-        A^2 + B^2 = C^2 (a limit position, or a pose where the two branches touch): the
-        rocker's rates are infinite or undetermined there, and ``omega_output, vC,
-        alpha_output, aC`` are NaN exactly where this mask is False.
+    assembled : ndarray of bool
+        True where the position exists. With ``order >= 1``, ``valid`` is False also where
+        a solved rate is infinite or undetermined (a dead point; those rates are NaN
+        there), while ``assembled`` stays True (the rule of `mech._pose.Pose`).
     """
 
-    _ORDER_OF = {"omega_output": 1, "vB": 1, "vC": 1, "rates_valid": 1,
+    _ORDER_OF = {"omega_output": 1, "vB": 1, "vC": 1,
                  "alpha_output": 2, "aB": 2, "aC": 2}
 
 
@@ -251,7 +250,7 @@ class RSSR:
         -------
         RSSRPose
             ``phi01, phi03, B, C, P, valid``; with ``order >= 1`` also
-            ``omega_output, vB, vC, rates_valid``; with ``order >= 2`` also ``alpha_output, aB, aC``.
+            ``omega_output, vB, vC``; with ``order >= 2`` also ``alpha_output, aB, aC``.
 
         Raises
         ------
@@ -263,9 +262,9 @@ class RSSR:
         Notes
         -----
         See :ref:`deriv-rssr`. Rates are unbounded at the limit positions
-        (A^2 + B^2 = C^2): the pose is valid there (``strict`` does not raise), but
-        ``rates_valid`` is False and the rates of the rocker and its pin are NaN (the
-        crank pin's stay finite); ``valid`` concerns positions, ``rates_valid`` rates. The
+        (A^2 + B^2 = C^2): the pose is assembled there (``assembled`` is True and
+        ``strict`` does not raise), but with ``order >= 1`` ``valid`` is False and the
+        rates of the rocker and its pin are NaN (the crank pin's stay finite). The
         formulas run on the lengths and offsets divided by a power of two near the
         largest (`mech._scaling`): angles do not depend on the unit of length, and points
         and linear rates scale exactly with it.

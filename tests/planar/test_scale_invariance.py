@@ -65,7 +65,7 @@ def _quiet(function, *args, **kwargs):
         return function(*args, **kwargs)
 
 
-def _compare(got, want, s, linear, masks=("valid", "rates_valid")):
+def _compare(got, want, s, linear, masks=("valid", "assembled")):
     """Worst error of the fields of pose `got` (scale s) against `want` (scale 1).
 
     Angles and angular rates are compared as they are, lengths and linear rates after
@@ -78,8 +78,8 @@ def _compare(got, want, s, linear, masks=("valid", "rates_valid")):
         if name in masks:
             assert np.array_equal(value, ref), name
             continue
-        mask = np.broadcast_to(want._fields.get("rates_valid", want.valid) if name in want._ORDER_OF
-                               else want.valid, np.shape(ref)[: np.ndim(want.valid)])
+        mask = np.broadcast_to(want.valid if name in want._ORDER_OF
+                               else want.assembled, np.shape(ref)[: np.ndim(want.valid)])
         value, ref = np.asarray(value), np.asarray(ref)
         # never NaN where the mask of the field is True, at any scale
         assert not np.isnan(value).reshape(mask.shape + (-1,)).any(-1)[mask].any(), name
@@ -112,9 +112,9 @@ def test_tangent_mechanism_scale_invariance(scale):
 
 def test_tangent_mechanism_overflow_is_quiet():
     pose = _quiet(TangentMechanism(1e300).solve, [np.pi / 2, np.pi / 2 - 1e-9, 0.0], order=1)
-    assert pose.valid.tolist() == [True, True, True] and np.isinf(pose.h[:2]).all()
+    assert pose.assembled.tolist() == [True, True, True] and np.isinf(pose.h[:2]).all()
     # a rate beyond the float range is masked like a dead point's: NaN under a False mask
-    assert pose.rates_valid.tolist() == [False, False, True] and np.isnan(pose.v[:2]).all()
+    assert pose.valid.tolist() == [False, False, True] and np.isnan(pose.v[:2]).all()
 
 
 @pytest.mark.parametrize("scale", SCALES)
@@ -268,7 +268,8 @@ def test_mask_singular_rates_rule():
               "w": np.array([1.0, np.inf, np.nan, 2.0]),
               "v": np.array([[1.0, 2.0, 3.0], [1.0, 2.0, 3.0], [np.nan] * 3, [1.0, np.nan, 3.0]])}
     mask_singular_rates(fields, ("w", "v"))
-    assert fields["rates_valid"].tolist() == [True, False, False, False]
+    assert fields["valid"].tolist() == [True, False, False, False]
+    assert fields["assembled"].tolist() == [True, True, False, True]
     assert np.isnan(fields["w"][1:3]).all() and np.isnan(fields["v"][1:]).all()
     assert fields["w"][0] == 1.0 and fields["v"][0].tolist() == [1.0, 2.0, 3.0]
 
@@ -278,8 +279,8 @@ def test_slider_crank_dead_points_at_every_scale(scale):
     """Exact dead points (sin(+-pi/2) = +-1 exactly): positions valid, rates masked."""
     for (a, b, e), theta in [((1, 2, -1), np.pi / 2), ((1, 1.5, 0.5), -np.pi / 2)]:
         pose = _quiet(SliderCrank(a * scale, b * scale, e * scale).solve, [theta, 0.0], order=2)
-        assert pose.valid.tolist() == [True, True]
-        assert pose.rates_valid.tolist() == [False, True]
+        assert pose.assembled.tolist() == [True, True]
+        assert pose.valid.tolist() == [False, True]
         assert pose.x[0] / scale == pytest.approx(0.0, abs=1e-16)
         assert pose.phi[0] == pytest.approx(-np.sign(theta) * np.pi / 2, abs=1e-15)
         for name in ("v", "omega_coupler", "acc", "alpha_coupler"):

@@ -123,22 +123,22 @@ def test_solve_dead_point_position_exact():
     """At a dead point (|e - a sin(theta)| = b) the position is exact and finite."""
     mech = SliderCrank(1.0, 1.5, 0.5)
     pose = mech.solve(-np.pi / 2, order=1)
-    assert pose.valid and pose.x == pytest.approx(0.0, abs=1e-15)
+    assert pose.assembled and pose.x == pytest.approx(0.0, abs=1e-15)
     assert abs(pose.phi) == pytest.approx(np.pi / 2)
-    assert not pose.rates_valid and np.isnan(pose.v) and np.isnan(pose.omega_coupler)
+    assert not pose.valid and np.isnan(pose.v) and np.isnan(pose.omega_coupler)
 
 
 def test_solve_dead_point_rates_masked():
     """SliderCrank(1, 2, -1) at theta = pi/2: |e - a sin(theta)| = 2 = b, a dead point.
 
-    The position exists (valid, strict does not raise), the rates are infinite: they are
-    NaN under rates_valid False, never NaN or inf under a True mask. Just beside the dead
+    The position exists (assembled, strict does not raise), the rates are infinite: they are
+    NaN under `valid` False (with `assembled` True), never NaN or inf under a True mask. Just beside the dead
     point the rates are finite, large, and agree with the closed form of the loop.
     """
     mech = SliderCrank(1.0, 2.0, -1.0)
     pose = mech.solve([np.pi / 2, np.pi / 2 - 1e-6], order=2, strict=True)
-    assert pose.valid.tolist() == [True, True]
-    assert pose.rates_valid.tolist() == [False, True]
+    assert pose.assembled.tolist() == [True, True]
+    assert pose.valid.tolist() == [False, True]
     assert pose.x[0] == pytest.approx(0.0, abs=1e-15) and pose.phi[0] == pytest.approx(-np.pi / 2)
     for name in ("v", "omega_coupler", "acc", "alpha_coupler"):
         value = getattr(pose, name)
@@ -150,7 +150,7 @@ def test_solve_dead_point_rates_masked():
     assert pose.omega_coupler[1] == pytest.approx(-np.cos(t) / rod.real, rel=1e-6)
     assert pose.v[1] == pytest.approx(-np.sin(t) - rod.imag * pose.omega_coupler[1], rel=1e-6)
     still = mech.solve(np.pi / 2, order=1, omega=0.0)          # undetermined: also masked
-    assert still.valid and not still.rates_valid and np.isnan(still.v)
+    assert still.assembled and not still.valid and np.isnan(still.v)
 
 
 @pytest.mark.parametrize("shape", [(), (7,), (3, 4)])

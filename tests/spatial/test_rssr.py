@@ -213,7 +213,9 @@ def test_solve_coupler_point_is_rigid():
 def test_solve_invalid_is_nan_and_strict_raises():
     rssr = RSSR(2.0, 1.0, 1.0, 0.0, 0.0, 2.0, 0.5)
     pose = rssr.solve([0.0, np.pi], order=2)
-    assert pose.valid.tolist() == [True, False]
+    # phi01 = 0 is a limit position: it assembles, but its rocker rates are infinite
+    assert pose.assembled.tolist() == [True, False] and pose.valid.tolist() == [False, False]
+    assert rssr.solve([0.0, np.pi]).valid.tolist() == [True, False]
     assert np.isnan(pose.phi03[1]) and np.all(np.isnan(pose.C[1])) and np.isnan(pose.alpha_output[1])
     with pytest.raises(AssemblyError, match=r"phi01 = 3\.14159"):
         rssr.solve([0.0, np.pi], strict=True)
@@ -273,8 +275,8 @@ def test_solve_scale_invariance(dims, branch, scale):
         rssr = RSSR(*_scaled(dims, scale), branch=branch, coupler=(0.7 * scale, -0.3 * scale, 0.2 * scale))
         got = rssr.solve(phi, order=2, omega=1.5, alpha=-0.5)
         assert np.max(np.abs(rssr.discriminant(phi) - unit.discriminant(phi))) <= RTOL
-    assert np.array_equal(got.valid, want.valid) and np.array_equal(got.rates_valid, want.rates_valid)
-    assert np.array_equal(got.rates_valid, want.valid)
+    assert np.array_equal(got.assembled, want.assembled) and np.array_equal(got.valid, want.valid)
+    assert np.array_equal(got.valid, want.assembled)
     ok = want.valid
     assert not np.isnan(got.phi03[ok]).any() and np.isnan(got.phi03[~ok]).all()
     assert np.max(np.abs(_wrap(got.phi03[ok] - want.phi03[ok])), initial=0.0) <= RTOL
@@ -310,11 +312,11 @@ def test_solve_agrees_with_mpmath_at_scale(scale):
 
 def test_solve_limit_position_rates_masked():
     """RSSR(1, 2, 1, 0, 0, 4, 0) reaches D only at phi01 = 0 (|BD| = 3 = l2 + l3): the pose
-    there is exact and valid, the rocker's rates singular (NaN, rates_valid False)."""
+    there is exact and valid, the rocker's rates singular (NaN, `valid` False, `assembled` True)."""
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         pose = RSSR(1.0, 2.0, 1.0, 0.0, 0.0, 4.0, 0.0).solve([0.0, 0.1], order=2, strict=False)
-    assert pose.valid.tolist() == [True, False] and pose.rates_valid.tolist() == [False, False]
+    assert pose.assembled.tolist() == [True, False] and pose.valid.tolist() == [False, False]
     np.testing.assert_allclose(pose.C[0], [3.0, 0.0, 0.0], atol=1e-15)
     for name in ("omega_output", "vC", "alpha_output", "aC"):
         assert np.isnan(getattr(pose, name)[0]).all(), name
@@ -336,10 +338,10 @@ def test_rssr_crank_and_rocker_too_small_for_the_coefficients():
             pose = rssr.solve(np.linspace(-np.pi, np.pi, 61), order=2, omega=1.5, alpha=0.5)
             rssr.assembly_range()
             assert not np.isnan(pose.C[pose.valid]).any()
-            assert not np.isnan(pose.aC[pose.rates_valid]).any()
+            assert not np.isnan(pose.aC[pose.valid]).any()
     # a crank of 2**-498: C barely moves, and the crank turns fully
     pose = RSSR(2.0**-498, 2.0, 1.0, 0.3, 0.2, 2.0, 0.5).solve(np.linspace(-np.pi, np.pi, 61), order=2)
-    assert pose.valid.all() and pose.rates_valid.all()
+    assert pose.assembled.all() and pose.valid.all()
 
 
 def test_assembly_range_nowhere_assembled():
