@@ -46,11 +46,12 @@ from mech.planar.synthesis._quick_return_design import (  # noqa: E402
     quick_return_crank_rocker,
     quick_return_guide_bar,
     quick_return_slider_crank,
+    simulate_quick_return,
     slider_crank_family,
 )
 
 __all__ += [
     "QuickReturnCheck", "QuickReturnCrankRocker", "QuickReturnFamily", "QuickReturnGuideBar",
     "QuickReturnSliderCrank", "crank_rocker_family", "quick_return_crank_rocker", "quick_return_guide_bar",
-    "quick_return_slider_crank", "slider_crank_family",
+    "quick_return_slider_crank", "simulate_quick_return", "slider_crank_family",
 ]

@@ -30,7 +30,7 @@ from mech._generated.quick_return_design import (
     qr_crank_rocker_cos_gamma,
     qr_slider_crank,
 )
-from mech._validate import branch_sign, nonnegative_int, positive_length, real_number
+from mech._validate import InputTypeError, branch_sign, nonnegative_int, positive_length, real_number
 from mech.planar._fourbar import FourBar
 from mech.planar._guide_bar import GuideBar
 from mech.planar._quick_return import extreme_angle as _extreme_angle
@@ -47,6 +47,7 @@ __all__ = [
     "quick_return_guide_bar",
     "crank_rocker_family",
     "slider_crank_family",
+    "simulate_quick_return",
 ]
 
 _TWO_PI = 2.0 * math.pi
@@ -91,6 +92,8 @@ class QuickReturnCheck:
         The smallest transmission angle over the turn (rad), from the simulated positions.
     theta_limits : tuple of float
         The crank angles in [0, 2 pi) where the output stops (first: its smallest value).
+    output_limits : tuple of float
+        The output's smallest and largest values (rocker or guide angle, slider x).
     samples : int
         The number of crank angles sampled before the limit positions and the minimum
         were refined.
@@ -101,6 +104,7 @@ class QuickReturnCheck:
     output_range: float
     min_transmission_angle: float
     theta_limits: tuple
+    output_limits: tuple
     samples: int
 
 
@@ -145,8 +149,72 @@ def _simulate(position, rate, gamma, samples, xtol):
         output_range=float(abs(out[high] - out[low])),
         min_transmission_angle=float(min(refined.fun, g[k])),
         theta_limits=(float(stops[low]), float(stops[high])),
+        output_limits=(float(out[low]), float(out[high])),
         samples=samples,
     )
+
+
+def simulate_quick_return(linkage, *, samples=2048, xtol=1e-13):
+    """Simulate one crank turn of a `FourBar`, `SliderCrank` or `GuideBar`; measure its quick return.
+
+    The output (rocker angle psi, slider position x, guide angle psi) stops where its rate
+    from ``linkage.solve(t, order=1)`` changes sign: those crank angles are found by
+    Brent's method from `samples` equally spaced crank angles, and K, the extreme angle
+    and the swing or stroke follow from them. The transmission angle is computed from the
+    simulated pin positions (angle BCD of a four-bar; rod against the guide's normal of a
+    slider-crank; pi/2 for the guide-bar, whose block pushes the guide along its normal)
+    and its smallest value refined by a bounded scalar minimisation.
+
+    Parameters
+    ----------
+    linkage : FourBar, SliderCrank or GuideBar
+        A linkage whose input crank turns fully.
+    samples : int, optional
+        Crank angles sampled over the turn (>= 16).
+    xtol : float, optional
+        Absolute tolerance (rad) of the refinements.
+
+    Returns
+    -------
+    QuickReturnCheck
+
+    Raises
+    ------
+    ValueError
+        If the output does not stop exactly twice per turn.
+
+    Examples
+    --------
+    >>> from mech.planar import FourBar
+    >>> from mech.planar.synthesis import simulate_quick_return
+    >>> round(simulate_quick_return(FourBar(10, 40, 30, 35)).time_ratio, 5)     # example 2-1
+    1.22404
+    """
+    if isinstance(linkage, FourBar):
+        d = linkage.d
+
+        def gamma(t):
+            p = linkage.solve(t)
+            # angle BCD from the simulated pins, not from the cosine law (2-48)
+            cos_bcd = np.real((p.B - p.C) * np.conj(d - p.C)) / (np.abs(p.B - p.C) * np.abs(d - p.C))
+            return _acute(cos_bcd)
+
+        return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_output,
+                         gamma, samples, xtol)
+    if isinstance(linkage, SliderCrank):
+        b = linkage.b
+
+        def gamma(t):
+            p = linkage.solve(t)
+            # acute angle between the rod and the normal of the guide, from the pins
+            return _acute(np.imag(p.C - p.B) / b)
+
+        return _simulate(lambda t: linkage.solve(t).x, lambda t: linkage.solve(t, order=1).v, gamma,
+                         samples, xtol)
+    if isinstance(linkage, GuideBar):
+        return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_guide,
+                         lambda t: np.full(np.shape(t), np.pi / 2), samples, xtol)
+    raise InputTypeError(f"Expected `linkage` to be a FourBar, SliderCrank or GuideBar, got {linkage!r}")
 
 
 def _acute(cos_angle):
@@ -216,17 +284,7 @@ class QuickReturnCrankRocker:
         -------
         QuickReturnCheck
         """
-        fb = self.fourbar
-        d = self.lengths[3]
-
-        def gamma(t):
-            p = fb.solve(t)
-            # angle BCD from the simulated pins, not from the cosine law (2-48)
-            cos_bcd = np.real((p.B - p.C) * np.conj(d - p.C)) / (np.abs(p.B - p.C) * np.abs(d - p.C))
-            return _acute(cos_bcd)
-
-        return _simulate(lambda t: fb.solve(t).psi, lambda t: fb.solve(t, order=1).omega_output, gamma,
-                         samples, xtol)
+        return simulate_quick_return(self.fourbar, samples=samples, xtol=xtol)
 
 
 def _crank_rocker_unit(theta, swing, alpha, side):
@@ -370,15 +428,7 @@ class QuickReturnSliderCrank:
 
         Same keywords as `QuickReturnCrankRocker.check`.
         """
-        sc = self.slider_crank
-        b = self.lengths[1]
-
-        def gamma(t):
-            p = sc.solve(t)
-            # acute angle between the rod and the normal of the guide, from the pins
-            return _acute(np.imag(p.C - p.B) / b)
-
-        return _simulate(lambda t: sc.solve(t).x, lambda t: sc.solve(t, order=1).v, gamma, samples, xtol)
+        return simulate_quick_return(self.slider_crank, samples=samples, xtol=xtol)
 
 
 def _slider_unit(theta, alpha):
@@ -463,19 +513,9 @@ class QuickReturnGuideBar:
     def check(self, *, samples=2048, xtol=1e-13):
         """Simulate one crank turn with `GuideBar`: measure K and the swing of the guide.
 
-        The transmission angle of the guide-bar is pi/2 at every crank angle (the block
-        pushes the guide along its normal); the check reports the angle between the guide
-        and the block's velocity relative to the guide's rotation, measured, for the record.
+        Same keywords as `QuickReturnCrankRocker.check`; see `simulate_quick_return`.
         """
-        gb = self.guide_bar
-
-        def gamma(t):
-            p = gb.solve(t)
-            # the crank pin drives the guide at right angles: the slide direction is D->B
-            return np.full(np.shape(t), np.pi / 2) + 0.0 * p.psi
-
-        return _simulate(lambda t: gb.solve(t).psi, lambda t: gb.solve(t, order=1).omega_guide, gamma,
-                         samples, xtol)
+        return simulate_quick_return(self.guide_bar, samples=samples, xtol=xtol)
 
 
 def quick_return_guide_bar(time_ratio, frame):
