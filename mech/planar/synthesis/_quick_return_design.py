@@ -384,8 +384,10 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
         al = _angle_in("alpha", value, 0.0, math.pi - theta)
     else:
         x = positive_length(which, value) / c
-        al_a, al_b = (float(v) for v in np.nan_to_num(
-            np.asarray(qr_alpha_from_lengths(theta, 1.0, swing, np.clip(x, 0.0, 1e6)), dtype=float), nan=-1.0))
+        # one of the two inverses is out of its domain: its NaN is not used
+        with np.errstate(invalid="ignore"):
+            al_a, al_b = (float(v) for v in np.nan_to_num(
+                np.asarray(qr_alpha_from_lengths(theta, 1.0, swing, min(x, 1e6)), dtype=float), nan=-1.0))
         al = al_a if which == "crank" else al_b
         if not 0.0 < al < math.pi - theta:
             raise ValueError(f"Expected `{which}` that fits the swing and K (0 < alpha < pi - theta), got {value!r}")
