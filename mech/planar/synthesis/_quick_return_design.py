@@ -17,7 +17,7 @@ the formulas that built it.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
 
 import numpy as np
@@ -30,6 +30,7 @@ from mech._generated.quick_return_design import (
     qr_crank_rocker_cos_gamma,
     qr_slider_crank,
 )
+from mech._scaling import length_scale
 from mech._validate import InputTypeError, branch_sign, nonnegative_int, positive_length, real_number
 from mech.planar._fourbar import FourBar
 from mech.planar._guide_bar import GuideBar
@@ -190,7 +191,12 @@ def simulate_quick_return(linkage, *, samples=2048, xtol=1e-13):
     >>> round(simulate_quick_return(FourBar(10, 40, 30, 35)).time_ratio, 5)     # example 2-1
     1.22404
     """
+    # FourBar on this branch loses its angles for lengths near 1e-300 (NaN with valid True):
+    # simulate a copy scaled by a power of two, which changes no angle and no rounding
     if isinstance(linkage, FourBar):
+        scale = length_scale(linkage.a, linkage.b, linkage.c, linkage.d)
+        linkage = FourBar(linkage.a / scale, linkage.b / scale, linkage.c / scale, linkage.d / scale,
+                          branch=linkage.branch)
         d = linkage.d
 
         def gamma(t):
@@ -202,6 +208,8 @@ def simulate_quick_return(linkage, *, samples=2048, xtol=1e-13):
         return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_output,
                          gamma, samples, xtol)
     if isinstance(linkage, SliderCrank):
+        scale = length_scale(linkage.a, linkage.b, linkage.e)
+        linkage = SliderCrank(linkage.a / scale, linkage.b / scale, linkage.e / scale, branch=linkage.branch)
         b = linkage.b
 
         def gamma(t):
@@ -209,8 +217,10 @@ def simulate_quick_return(linkage, *, samples=2048, xtol=1e-13):
             # acute angle between the rod and the normal of the guide, from the pins
             return _acute(np.imag(p.C - p.B) / b)
 
-        return _simulate(lambda t: linkage.solve(t).x, lambda t: linkage.solve(t, order=1).v, gamma,
-                         samples, xtol)
+        check = _simulate(lambda t: linkage.solve(t).x, lambda t: linkage.solve(t, order=1).v, gamma,
+                          samples, xtol)
+        return replace(check, output_range=check.output_range * scale,
+                       output_limits=tuple(x * scale for x in check.output_limits))
     if isinstance(linkage, GuideBar):
         return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_guide,
                          lambda t: np.full(np.shape(t), np.pi / 2), samples, xtol)
