@@ -62,6 +62,13 @@ def _theta(time_ratio):
     return K, float(_extreme_angle(K))
 
 
+def _slider_theta(time_ratio):
+    K, theta = _theta(time_ratio)
+    if not theta < math.pi / 2:
+        raise ValueError(f"Expected `time_ratio` < 3 for an offset slider-crank (extreme angle < pi/2), got {K!r}")
+    return K, theta
+
+
 def _angle_in(name, value, low, high):
     x = real_number(name, value)
     if not low < x < high:
@@ -121,7 +128,7 @@ def _stops(rate, t, xtol):
     return roots
 
 
-def _simulate(position, rate, gamma, samples, xtol):
+def _simulate(position, rate, gamma, samples, xtol, angular=True):
     """Measure K, the extreme angle, the output range and gamma_min over one crank turn.
 
     ``position(t)``, ``rate(t)`` and ``gamma(t)`` are the output coordinate, its rate and
@@ -136,7 +143,11 @@ def _simulate(position, rate, gamma, samples, xtol):
     if len(stops) != 2:
         raise ValueError(f"Expected an output with two limit positions per turn, got {len(stops)}")
     out = position(np.array(stops))
-    low, high = (0, 1) if out[0] < out[1] else (1, 0)
+    span = out[1] - out[0]
+    if angular:
+        # a rocker or guide angle may cross the cut at +-pi between its stops
+        span = float(np.angle(np.exp(1j * span)))
+    low, high = (0, 1) if span > 0 else (1, 0)
     forward = (stops[high] - stops[low]) % _TWO_PI       # crank turn from the low to the high stop
     strokes = sorted((forward, _TWO_PI - forward))
     g = gamma(t)
@@ -147,7 +158,7 @@ def _simulate(position, rate, gamma, samples, xtol):
     return QuickReturnCheck(
         time_ratio=strokes[1] / strokes[0],
         extreme_angle=abs(forward - math.pi),
-        output_range=float(abs(out[high] - out[low])),
+        output_range=abs(float(span)),
         min_transmission_angle=float(min(refined.fun, g[k])),
         theta_limits=(float(stops[low]), float(stops[high])),
         output_limits=(float(out[low]), float(out[high])),
@@ -218,7 +229,7 @@ def simulate_quick_return(linkage, *, samples=2048, xtol=1e-13):
             return _acute(np.imag(p.C - p.B) / b)
 
         check = _simulate(lambda t: linkage.solve(t).x, lambda t: linkage.solve(t, order=1).v, gamma,
-                          samples, xtol)
+                          samples, xtol, angular=False)
         return replace(check, output_range=check.output_range * scale,
                        output_limits=tuple(x * scale for x in check.output_limits))
     if isinstance(linkage, GuideBar):
@@ -304,6 +315,18 @@ def _crank_rocker_unit(theta, swing, alpha, side):
         k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
     # the crank revolves when it passes both positions along the frame line
     revolves = (np.abs(k0) <= 1.0) & (np.abs(kpi) <= 1.0) & (a > 0.0) & (b > a)
+    # and C1, C2 must be positions of one assembly branch (C on one side of B->D at both);
+    # (2-46) alone does not ensure it, e.g. for a small swing with a large K
+    A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
+    D = -1j * H
+    C1 = R * (-np.sin(theta) + 1j * np.cos(theta))
+    C2 = R * (np.sin(theta) + 1j * np.cos(theta))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        B2 = A + a * (C2 - A) / np.abs(C2 - A)
+        B1 = A - a * (C1 - A) / np.abs(C1 - A)
+    side2 = np.imag(np.conj(D - B2) * (C2 - B2))
+    side1 = np.imag(np.conj(D - B1) * (C1 - B1))
+    revolves = revolves & (side1 * side2 > 0.0)
     gamma = np.where(revolves, np.minimum(_acute(k0), _acute(kpi)), -1.0)
     return R, H, a, b, d, gamma, revolves
 
@@ -313,7 +336,7 @@ def _build_crank_rocker(K, theta, c, swing, alpha, side):
     if not revolves:
         raise ValueError(
             f"Expected `alpha` for which the design is a crank-rocker (the crank passes both positions "
-            f"along the frame), got {alpha!r}"
+            f"along the frame, both limit positions on one branch), got {alpha!r}"
         )
     # design frame of the derivation, in units of c: O = 0, chord C1C2 at height R cos(theta)
     A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
@@ -445,12 +468,20 @@ class QuickReturnSliderCrank:
 
 def _slider_unit(theta, alpha):
     R, a, b, e = qr_slider_crank(theta, 1.0, alpha)
-    gamma = np.where(b > a + np.abs(e), _acute((a + e) / b), -1.0)
+    # C1 must lie beyond the foot of A on the guide, or the folded position is on the other
+    # branch: sin(theta + alpha) > sin(theta), that is alpha < pi - 2 theta
+    valid = (b > a + np.abs(e)) & (np.sin(theta + alpha) > np.sin(theta))
+    gamma = np.where(valid, _acute((a + e) / b), -1.0)
     return R, a, b, e, gamma
 
 
 def _build_slider(K, theta, H, alpha):
     R, a, b, e, gamma = (float(v) for v in _slider_unit(theta, alpha))
+    if gamma < 0.0:
+        raise ValueError(
+            f"Expected `alpha` < pi - 2 theta = {math.pi - 2 * theta!r} so that both limit positions lie on "
+            f"one branch, got {alpha!r}"
+        )
     sc = SliderCrank(a * H, b * H, e * H)
     return QuickReturnSliderCrank(
         slider_crank=sc, lengths=(a * H, b * H, e * H), time_ratio=K, extreme_angle=theta, stroke=H,
@@ -462,8 +493,8 @@ def _build_slider(K, theta, H, alpha):
 def quick_return_slider_crank(time_ratio, stroke, *, alpha=None, offset=None):
     """The offset slider-crank with time ratio K and stroke H, (2-51).
 
-    Give exactly one of `alpha` (angle AOC1 in (0, pi - theta)) or `offset` (example
-    2-19: e in (0, H / (2 tan(theta/2))), one design).
+    Give exactly one of `alpha` (angle AOC1 in (0, pi - 2 theta)) or `offset` (example
+    2-19: e in (0, H / tan(theta)), one design).
 
     Returns
     -------
@@ -471,8 +502,11 @@ def quick_return_slider_crank(time_ratio, stroke, *, alpha=None, offset=None):
 
     Notes
     -----
-    Derived in :ref:`deriv-quick-return-design`. Computed with H = 1 and scaled. The crank
-    always revolves (b > a + e on the whole range of alpha).
+    Derived in :ref:`deriv-quick-return-design`. Computed with H = 1 and scaled. The
+    textbook lets alpha run over (0, pi - theta), but for alpha >= pi - 2 theta the near
+    limit position C1 lies behind the foot of A on the guide and the slider would have to
+    change branch between its two limit positions: such an alpha raises ValueError. On
+    (0, pi - 2 theta) the crank revolves (b > a + e).
 
     Examples
     --------
@@ -484,16 +518,16 @@ def quick_return_slider_crank(time_ratio, stroke, *, alpha=None, offset=None):
     >>> round(q.check().output_range, 9)
     100.0
     """
-    K, theta = _theta(time_ratio)
+    K, theta = _slider_theta(time_ratio)
     H = positive_length("stroke", stroke)
     which, value = _one_of(alpha=alpha, offset=offset)
     if which == "alpha":
-        al = _angle_in("alpha", value, 0.0, math.pi - theta)
+        al = _angle_in("alpha", value, 0.0, math.pi - 2.0 * theta)
     else:
         e = positive_length("offset", value) / H
-        top = 1.0 / (2.0 * math.tan(theta / 2.0))
+        top = 1.0 / math.tan(theta)
         if not e < top:
-            raise ValueError(f"Expected `offset` < H / (2 tan(theta/2)) = {top * H!r}, got {value!r}")
+            raise ValueError(f"Expected `offset` < H / tan(theta) = {top * H!r}, got {value!r}")
         al = float(qr_alpha_from_offset(theta, 1.0, e))
     return _build_slider(K, theta, H, al)
 
@@ -667,7 +701,7 @@ def slider_crank_family(time_ratio, stroke, *, min_transmission=0.0, samples=200
     >>> round(float(np.degrees(f.best.alpha)), 3), round(float(np.degrees(f.best.min_transmission_angle)), 4)
     (27.035, 42.8078)
     """
-    K, theta = _theta(time_ratio)
+    K, theta = _slider_theta(time_ratio)
     H = positive_length("stroke", stroke)
     gmin = real_number("min_transmission", min_transmission)
     if not 0.0 <= gmin < math.pi / 2:
@@ -678,6 +712,6 @@ def slider_crank_family(time_ratio, stroke, *, min_transmission=0.0, samples=200
     def gamma_of(al):
         return _slider_unit(theta, al)[4]
 
-    best, intervals = _search(gamma_of, math.pi - theta, gmin, samples, xtol)
+    best, intervals = _search(gamma_of, math.pi - 2.0 * theta, gmin, samples, xtol)
     return QuickReturnFamily(intervals, _build_slider(K, theta, H, best), gmin,
                              lambda al: quick_return_slider_crank(K, H, alpha=al))
