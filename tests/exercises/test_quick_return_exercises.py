@@ -79,7 +79,7 @@ def test_2_30_solution_values():
     assert "Solution of exercise 2-30" in s.as_markdown()
 
 
-def _count_2_31_by_scan(p, n=200001):
+def _other_limits_by_scan(p, n=200001):
     """Rocker angles of the other limit position found by scanning the other limit position around the rocker circle."""
     c, d, K = p["l_CD"], p["l_AD"], p["K"]
     theta = math.pi * (K - 1) / (K + 1)
@@ -97,7 +97,7 @@ def test_2_31_every_design_has_the_given_limit_position_and_K():
     found = designs_2_31(p)
     assert [limit for limit, _, _ in found] == ["extended", "folded"]
     # the other limit position: every point of the rocker circle seen from A at theta from C
-    others = _count_2_31_by_scan(p)
+    others = _other_limits_by_scan(p)
     assert len(others) == len(found) == 2
     for limit, fb, check in found:
         lp = fb.limit_positions()
