@@ -40,7 +40,8 @@ __all__ = [
 ]
 
 _DEG = math.pi / 180.0
-#: Relative tolerance on the simulated time ratio and swing of an accepted design.
+#: Relative tolerance on the simulated time ratio and swing of an accepted design, and the
+#: absolute tolerance (rad) on its rocker angle at the given limit position.
 _RTOL = 1e-9
 _SIDES = {1: "D on the side of A", -1: "D across the chord"}
 
@@ -104,7 +105,7 @@ def _design_results(tag, side, q, check, gamma_allowed):
         Result(f"{tag} swing simulated, {name}", check.output_range, "rad", "rocker stops of the simulation"),
         Result(f"{tag} gamma_min simulated, {name}", check.min_transmission_angle, "rad",
                "smallest angle BCD (or its supplement) over the turn"),
-        Result(f"{tag} gamma_min >= [gamma], {name}", bool(check.min_transmission_angle >= gamma_allowed - 1e-12),
+        Result(f"{tag} gamma_min >= [gamma], {name}", bool(check.min_transmission_angle >= gamma_allowed),
                "", f"[gamma] = {math.degrees(gamma_allowed):g}°"),
     )
 
@@ -211,7 +212,7 @@ def designs_2_31(p):
             fb = FourBar(a, b, c, d, branch=branch)
             check = _measured(fb)
             stops = np.array(check.output_limits)
-            if _agrees(check.time_ratio, K) and np.min(np.abs(np.angle(np.exp(1j * (stops - psi_given))))) <= 1e-9:
+            if _agrees(check.time_ratio, K) and np.min(np.abs(np.angle(np.exp(1j * (stops - psi_given))))) <= _RTOL:
                 out.append((limit, fb, check))
     return sorted(out, key=lambda x: x[1].a)
 

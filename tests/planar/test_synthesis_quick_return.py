@@ -351,3 +351,18 @@ def test_type_errors_are_input_type_errors():
         quick_return_slider_crank(1.3, "100", alpha=0.5)
     with pytest.raises(mech.InputTypeError):
         simulate_quick_return(None)
+
+
+def test_family_designs_all_keep_the_permitted_angle():
+    fam = crank_rocker_family(1.2, 80.0, deg(35), min_transmission=deg(42))
+    assert len(fam.intervals) == 1
+    designs = fam.designs(7)
+    assert len(designs) == 7
+    for q in designs:
+        m = q.check()
+        assert m.min_transmission_angle >= deg(42)
+        assert m.time_ratio == pytest.approx(1.2, rel=RTOL)
+    lo, hi = fam.intervals[0]
+    outside = [fam.design(lo - 1e-3), fam.design(hi + 1e-3)]
+    assert all(q.check().min_transmission_angle < deg(42) for q in outside)
+    assert crank_rocker_family(1.2, 80.0, deg(35), min_transmission=deg(80)).intervals == ()
