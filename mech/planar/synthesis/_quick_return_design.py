@@ -394,7 +394,12 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     Notes
     -----
     Derived in :ref:`deriv-quick-return-design`. The design is computed with c = 1 and
-    scaled, so any finite positive rocker length gives the same angles. A crank (or
+    scaled, so any finite positive rocker length gives the same angles. Not every alpha
+    of (0, pi - theta) gives a crank-rocker that does the task: the crank must pass both
+    positions along the frame line, and the extended and folded limit positions must lie
+    on one assembly branch (C on the same side of B->D at both); (2-46) does not ensure
+    the latter (it fails e.g. for a small swing with a large K), and such an alpha raises
+    ValueError. The returned `FourBar` is on the branch of both limit positions. A crank (or
     coupler) fixes alpha uniquely through ``a = 2R cos((theta + alpha)/2) sin(theta/2)``
     (or the line for b of (2-46)), both monotonic on (0, pi - theta).
 
@@ -655,7 +660,8 @@ def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side
     Notes
     -----
     gamma_min(alpha) comes from (2-48) and its companion at the extended position
-    (l.2543); alpha where the linkage is not a crank-rocker count as below [gamma]. The
+    (l.2543); alpha where the linkage is not a crank-rocker doing the task (see
+    `quick_return_crank_rocker`) count as below [gamma]. The
     sampling must resolve each interval: an interval narrower than (pi - theta)/samples
     can be missed.
 
