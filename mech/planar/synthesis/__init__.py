@@ -34,3 +34,24 @@ __all__ = [
     "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
     "least_squares", "lengths_from_coefficients", "precision_pairs",
 ]
+
+# quick-return design (2-46)-(2-52), examples 2-17 to 2-20
+from mech.planar.synthesis._quick_return_design import (  # noqa: E402
+    QuickReturnCheck,
+    QuickReturnCrankRocker,
+    QuickReturnFamily,
+    QuickReturnGuideBar,
+    QuickReturnSliderCrank,
+    crank_rocker_family,
+    quick_return_crank_rocker,
+    quick_return_guide_bar,
+    quick_return_slider_crank,
+    simulate_quick_return,
+    slider_crank_family,
+)
+
+__all__ += [
+    "QuickReturnCheck", "QuickReturnCrankRocker", "QuickReturnFamily", "QuickReturnGuideBar",
+    "QuickReturnSliderCrank", "crank_rocker_family", "quick_return_crank_rocker", "quick_return_guide_bar",
+    "quick_return_slider_crank", "simulate_quick_return", "slider_crank_family",
+]

@@ -1,0 +1,723 @@
+"""Quick-return design (textbook section 4, III: l.2388-2700, eqs. 2-46 to 2-52, Ex. 2-17 to 2-20).
+
+The time ratio K fixes the extreme angle theta = pi (K - 1)/(K + 1). A crank-rocker with
+rocker c and swing phi, or an offset slider-crank with stroke H, then has one free
+parameter, the angle alpha = angle AOC1 on the circle that sees the output's two limit
+positions C1, C2 under theta (page ``deriv-quick-return-design``). This module builds
+the design for a given alpha (or for a given crank, coupler or offset, which fix alpha),
+searches alpha for the largest minimum transmission angle or for every design that keeps
+it above a permitted value, and designs the oscillating guide-bar from K and its frame.
+
+Every design is returned as the analysis class that moves it (`FourBar`, `SliderCrank`,
+`GuideBar`); its ``check()`` simulates one full crank turn with that class and MEASURES
+the time ratio, the swing or stroke and the minimum transmission angle, independently of
+the formulas that built it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Callable
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from mech._generated.quick_return_design import (
+    qr_alpha_from_lengths,
+    qr_alpha_from_offset,
+    qr_crank_rocker,
+    qr_crank_rocker_cos_gamma,
+    qr_slider_crank,
+)
+from mech._scaling import length_scale
+from mech._validate import InputTypeError, branch_sign, nonnegative_int, positive_length, real_number
+from mech.planar._fourbar import FourBar
+from mech.planar._guide_bar import GuideBar
+from mech.planar._quick_return import extreme_angle as _extreme_angle
+from mech.planar._slider_crank import SliderCrank
+
+__all__ = [
+    "QuickReturnCheck",
+    "QuickReturnCrankRocker",
+    "QuickReturnSliderCrank",
+    "QuickReturnGuideBar",
+    "QuickReturnFamily",
+    "quick_return_crank_rocker",
+    "quick_return_slider_crank",
+    "quick_return_guide_bar",
+    "crank_rocker_family",
+    "slider_crank_family",
+    "simulate_quick_return",
+]
+
+_TWO_PI = 2.0 * math.pi
+
+
+# ----------------------------------------------------------------------------- input checks
+def _theta(time_ratio):
+    K = real_number("time_ratio", time_ratio)
+    if not K > 1.0:
+        raise ValueError(f"Expected `time_ratio` > 1 for a quick return, got {K!r}")
+    return K, float(_extreme_angle(K))
+
+
+def _slider_theta(time_ratio):
+    K, theta = _theta(time_ratio)
+    if not theta < math.pi / 2:
+        raise ValueError(f"Expected `time_ratio` < 3 for an offset slider-crank (extreme angle < pi/2), got {K!r}")
+    return K, theta
+
+
+def _angle_in(name, value, low, high):
+    x = real_number(name, value)
+    if not low < x < high:
+        raise ValueError(f"Expected `{name}` in ({low!r}, {high!r}), got {x!r}")
+    return x
+
+
+def _one_of(**given):
+    named = [k for k, v in given.items() if v is not None]
+    if len(named) != 1:
+        raise ValueError(f"Expected exactly one of {', '.join(f'`{k}`' for k in given)}, got {len(named)}: {named}")
+    return named[0], given[named[0]]
+
+
+# ----------------------------------------------------------------------------- simulation
+@dataclass(frozen=True)
+class QuickReturnCheck:
+    """What one simulated crank turn of a quick-return design measured.
+
+    Attributes
+    ----------
+    time_ratio : float
+        K = (crank angle of the slow stroke) / (crank angle of the fast stroke), measured.
+    extreme_angle : float
+        The crank angle between the two limit positions minus pi, in absolute value (rad).
+    output_range : float
+        The swing of the rocker or guide (rad), or the stroke of the slider (length).
+    min_transmission_angle : float
+        The smallest transmission angle over the turn (rad), from the simulated positions.
+    theta_limits : tuple of float
+        The crank angles in [0, 2 pi) where the output stops (first: its smallest value).
+    output_limits : tuple of float
+        The output's smallest and largest values (rocker or guide angle, slider x).
+    samples : int
+        The number of crank angles sampled before the limit positions and the minimum
+        were refined.
+    """
+
+    time_ratio: float
+    extreme_angle: float
+    output_range: float
+    min_transmission_angle: float
+    theta_limits: tuple
+    output_limits: tuple
+    samples: int
+
+
+def _stops(rate, t, xtol):
+    """Crank angles in [0, 2 pi) where `rate` changes sign along the sampled turn `t`."""
+    r = rate(t)
+    nxt = np.roll(r, -1)
+    idx = np.flatnonzero(np.sign(r) != np.sign(nxt))
+    roots = []
+    for i in idx:
+        lo, hi = t[i], t[i] + (t[1] - t[0])
+        roots.append(brentq(lambda u: float(rate(np.array([u]))[0]), lo, hi, xtol=xtol) % _TWO_PI)
+    return roots
+
+
+def _simulate(position, rate, gamma, samples, xtol, angular=True):
+    """Measure K, the extreme angle, the output range and gamma_min over one crank turn.
+
+    ``position(t)``, ``rate(t)`` and ``gamma(t)`` are the output coordinate, its rate and
+    the transmission angle, all from the analysis class, at crank angles ``t``.
+    """
+    samples = nonnegative_int("samples", samples, 10**7)
+    if samples < 16:
+        raise ValueError(f"Expected `samples` >= 16, got {samples!r}")
+    xtol = positive_length("xtol", xtol)
+    t = np.linspace(0.0, _TWO_PI, samples, endpoint=False)
+    stops = _stops(rate, t, xtol)
+    if len(stops) != 2:
+        raise ValueError(f"Expected an output with two limit positions per turn, got {len(stops)}")
+    out = position(np.array(stops))
+    span = out[1] - out[0]
+    if angular:
+        # a rocker or guide angle may cross the cut at +-pi between its stops
+        span = float(np.angle(np.exp(1j * span)))
+    low, high = (0, 1) if span > 0 else (1, 0)
+    forward = (stops[high] - stops[low]) % _TWO_PI       # crank turn from the low to the high stop
+    strokes = sorted((forward, _TWO_PI - forward))
+    g = gamma(t)
+    k = int(np.argmin(g))
+    step = t[1] - t[0]
+    refined = minimize_scalar(lambda u: float(gamma(np.array([u]))[0]), bounds=(t[k] - step, t[k] + step),
+                              method="bounded", options={"xatol": xtol})
+    return QuickReturnCheck(
+        time_ratio=strokes[1] / strokes[0],
+        extreme_angle=abs(forward - math.pi),
+        output_range=abs(float(span)),
+        min_transmission_angle=float(min(refined.fun, g[k])),
+        theta_limits=(float(stops[low]), float(stops[high])),
+        output_limits=(float(out[low]), float(out[high])),
+        samples=samples,
+    )
+
+
+def simulate_quick_return(linkage, *, samples=2048, xtol=1e-13):
+    """Simulate one crank turn of a `FourBar`, `SliderCrank` or `GuideBar`; measure its quick return.
+
+    The output (rocker angle psi, slider position x, guide angle psi) stops where its rate
+    from ``linkage.solve(t, order=1)`` changes sign: those crank angles are found by
+    Brent's method from `samples` equally spaced crank angles, and K, the extreme angle
+    and the swing or stroke follow from them. The transmission angle is computed from the
+    simulated pin positions (angle BCD of a four-bar; rod against the guide's normal of a
+    slider-crank; pi/2 for the guide-bar, whose block pushes the guide along its normal)
+    and its smallest value refined by a bounded scalar minimisation.
+
+    Parameters
+    ----------
+    linkage : FourBar, SliderCrank or GuideBar
+        A linkage whose input crank turns fully.
+    samples : int, optional
+        Crank angles sampled over the turn (>= 16).
+    xtol : float, optional
+        Absolute tolerance (rad) of the refinements.
+
+    Returns
+    -------
+    QuickReturnCheck
+
+    Raises
+    ------
+    ValueError
+        If the output does not stop exactly twice per turn.
+
+    Examples
+    --------
+    >>> from mech.planar import FourBar
+    >>> from mech.planar.synthesis import simulate_quick_return
+    >>> round(simulate_quick_return(FourBar(10, 40, 30, 35)).time_ratio, 5)     # example 2-1
+    1.22404
+    """
+    # FourBar on this branch loses its angles for lengths near 1e-300 (NaN with valid True):
+    # simulate a copy scaled by a power of two, which changes no angle and no rounding
+    if isinstance(linkage, FourBar):
+        scale = length_scale(linkage.a, linkage.b, linkage.c, linkage.d)
+        linkage = FourBar(linkage.a / scale, linkage.b / scale, linkage.c / scale, linkage.d / scale,
+                          branch=linkage.branch)
+        d = linkage.d
+
+        def gamma(t):
+            p = linkage.solve(t)
+            # angle BCD from the simulated pins, not from the cosine law (2-48)
+            cos_bcd = np.real((p.B - p.C) * np.conj(d - p.C)) / (np.abs(p.B - p.C) * np.abs(d - p.C))
+            return _acute(cos_bcd)
+
+        return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_output,
+                         gamma, samples, xtol)
+    if isinstance(linkage, SliderCrank):
+        scale = length_scale(linkage.a, linkage.b, linkage.e)
+        linkage = SliderCrank(linkage.a / scale, linkage.b / scale, linkage.e / scale, branch=linkage.branch)
+        b = linkage.b
+
+        def gamma(t):
+            p = linkage.solve(t)
+            # acute angle between the rod and the normal of the guide, from the pins
+            return _acute(np.imag(p.C - p.B) / b)
+
+        check = _simulate(lambda t: linkage.solve(t).x, lambda t: linkage.solve(t, order=1).v, gamma,
+                          samples, xtol, angular=False)
+        return replace(check, output_range=check.output_range * scale,
+                       output_limits=tuple(x * scale for x in check.output_limits))
+    if isinstance(linkage, GuideBar):
+        return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_guide,
+                         lambda t: np.full(np.shape(t), np.pi / 2), samples, xtol)
+    raise InputTypeError(f"Expected `linkage` to be a FourBar, SliderCrank or GuideBar, got {linkage!r}")
+
+
+def _acute(cos_angle):
+    """The transmission angle (acute, in [0, pi/2]) of an angle with cosine `cos_angle`."""
+    return np.pi / 2 - np.arcsin(np.clip(np.abs(cos_angle), 0.0, 1.0))
+
+
+# ----------------------------------------------------------------------------- crank-rocker
+@dataclass(frozen=True)
+class QuickReturnCrankRocker:
+    """A crank-rocker designed for a time ratio, a rocker and its swing, (2-46).
+
+    Attributes
+    ----------
+    fourbar : FourBar
+        The linkage in the standard frame (A = 0, D = d on +x) on the branch that passes
+        through the designed limit positions.
+    lengths : tuple of float
+        ``(a, b, c, d)``: crank AB, coupler BC, rocker CD, frame AD.
+    time_ratio, extreme_angle, swing : float
+        The task: K, theta = pi (K - 1)/(K + 1) and the rocker swing phi (rad).
+    alpha : float
+        The free parameter, angle AOC1 in (0, pi - theta) (rad).
+    side : int
+        +1: D on the side of A of the chord C1C2 (the textbook's Fig. 2-101); -1: the
+        other side.
+    min_transmission_angle : float
+        gamma_min from (2-48) and its companion at the extended position (rad).
+    theta_extended, theta_folded : float
+        Crank angles (standard frame) at the limit positions with AC2 = b + a and
+        AC1 = b - a.
+    psi_extended, psi_folded : float
+        Rocker angles (of D->C) there.
+    placement : tuple
+        ``(origin, rotation)``: a point z of the standard frame is at
+        ``origin + exp(1j*rotation) * z`` in the design frame of page
+        ``deriv-quick-return-design`` (circle centre O at 0, chord C1C2 parallel to x).
+    """
+
+    fourbar: FourBar
+    lengths: tuple
+    time_ratio: float
+    extreme_angle: float
+    swing: float
+    alpha: float
+    side: int
+    min_transmission_angle: float
+    theta_extended: float
+    theta_folded: float
+    psi_extended: float
+    psi_folded: float
+    placement: tuple
+
+    def check(self, *, samples=2048, xtol=1e-13):
+        """Simulate one crank turn with `FourBar` and measure K, the swing and gamma_min.
+
+        Parameters
+        ----------
+        samples : int, optional
+            Crank angles sampled over the turn before the rocker's stops (sign changes of
+            its angular velocity) are refined by Brent's method and the smallest
+            transmission angle by a bounded scalar minimisation.
+        xtol : float, optional
+            Absolute tolerance (rad) of those refinements.
+
+        Returns
+        -------
+        QuickReturnCheck
+        """
+        return simulate_quick_return(self.fourbar, samples=samples, xtol=xtol)
+
+
+def _crank_rocker_unit(theta, swing, alpha, side):
+    """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min and whether the crank revolves."""
+    R, H, a, b, d = qr_crank_rocker(theta, 1.0, swing, alpha, side)
+    with np.errstate(invalid="ignore"):
+        k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
+    # the crank revolves when it passes both positions along the frame line
+    revolves = (np.abs(k0) <= 1.0) & (np.abs(kpi) <= 1.0) & (a > 0.0) & (b > a)
+    # and C1, C2 must be positions of one assembly branch (C on one side of B->D at both);
+    # (2-46) alone does not ensure it, e.g. for a small swing with a large K
+    A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
+    D = -1j * H
+    C1 = R * (-np.sin(theta) + 1j * np.cos(theta))
+    C2 = R * (np.sin(theta) + 1j * np.cos(theta))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        B2 = A + a * (C2 - A) / np.abs(C2 - A)
+        B1 = A - a * (C1 - A) / np.abs(C1 - A)
+    side2 = np.imag(np.conj(D - B2) * (C2 - B2))
+    side1 = np.imag(np.conj(D - B1) * (C1 - B1))
+    revolves = revolves & (side1 * side2 > 0.0)
+    gamma = np.where(revolves, np.minimum(_acute(k0), _acute(kpi)), -1.0)
+    return R, H, a, b, d, gamma, revolves
+
+
+def _build_crank_rocker(K, theta, c, swing, alpha, side):
+    R, H, a, b, d, gamma, revolves = (float(v) for v in _crank_rocker_unit(theta, swing, alpha, side))
+    if not revolves:
+        raise ValueError(
+            f"Expected `alpha` for which the design is a crank-rocker (the crank passes both positions "
+            f"along the frame, both limit positions on one branch), got {alpha!r}"
+        )
+    # design frame of the derivation, in units of c: O = 0, chord C1C2 at height R cos(theta)
+    A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
+    D = -1j * H
+    C1 = complex(-R * math.sin(theta), R * math.cos(theta))
+    C2 = complex(R * math.sin(theta), R * math.cos(theta))
+    u = (D - A) / abs(D - A)
+    C1s, C2s = (C1 - A) / u, (C2 - A) / u
+    B2 = a * C2s / abs(C2s)
+    branch = 1 if ((d - B2).conjugate() * (C2s - B2)).imag > 0 else -1
+    fb = FourBar(a * c, b * c, c, d * c, branch=branch)
+    return QuickReturnCrankRocker(
+        fourbar=fb, lengths=(a * c, b * c, c, d * c), time_ratio=K, extreme_angle=theta, swing=swing,
+        alpha=alpha, side=side, min_transmission_angle=gamma,
+        theta_extended=float(np.angle(C2s)) % _TWO_PI, theta_folded=float(np.angle(-C1s)) % _TWO_PI,
+        psi_extended=float(np.angle(C2s - d)), psi_folded=float(np.angle(C1s - d)),
+        placement=(complex(A * c), float(np.angle(u))),
+    )
+
+
+def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=None, coupler=None, side=1):
+    """The crank-rocker with time ratio K, rocker `rocker` swinging through `swing`, (2-46).
+
+    Give exactly one of `alpha` (the textbook's free parameter), `crank` (example 2-17) or
+    `coupler` (example 2-18).
+
+    Parameters
+    ----------
+    time_ratio : float
+        K > 1.
+    rocker : float
+        Rocker length c > 0.
+    swing : float
+        Rocker swing phi in (0, pi), radians.
+    alpha : float, optional
+        Angle AOC1 in (0, pi - theta), radians.
+    crank : float, optional
+        Crank length a in (0, c sin(phi/2)).
+    coupler : float, optional
+        Coupler length b in (c sin(phi/2), c sin(phi/2) / sin(theta/2)).
+    side : {1, -1}, optional
+        +1: frame pivot D on the side of A of the chord C1C2 (Fig. 2-101, the textbook's
+        only family); -1: on the other side, a second family with the same crank and
+        coupler and another frame.
+
+    Returns
+    -------
+    QuickReturnCrankRocker
+
+    Raises
+    ------
+    ValueError
+        If an input is out of its range or the design is not a crank-rocker.
+
+    Notes
+    -----
+    Derived in :ref:`deriv-quick-return-design`. The design is computed with c = 1 and
+    scaled, so any finite positive rocker length gives the same angles. Not every alpha
+    of (0, pi - theta) gives a crank-rocker that does the task: the crank must pass both
+    positions along the frame line, and the extended and folded limit positions must lie
+    on one assembly branch (C on the same side of B->D at both); (2-46) does not ensure
+    the latter (it fails e.g. for a small swing with a large K), and such an alpha raises
+    ValueError. The returned `FourBar` is on the branch of both limit positions. A crank (or
+    coupler) fixes alpha uniquely through ``a = 2R cos((theta + alpha)/2) sin(theta/2)``
+    (or the line for b of (2-46)), both monotonic on (0, pi - theta).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.planar.synthesis import quick_return_crank_rocker
+    >>> q = quick_return_crank_rocker(1.3, 100.0, np.radians(40.0), crank=31.4)   # l.2533
+    >>> round(float(np.degrees(q.alpha)), 2), [round(x, 2) for x in q.lengths]
+    (28.5, [31.4, 73.67, 100.0, 95.98])
+    >>> round(q.check().time_ratio, 9)
+    1.3
+    """
+    K, theta = _theta(time_ratio)
+    c = positive_length("rocker", rocker)
+    swing = _angle_in("swing", swing, 0.0, math.pi)
+    side = branch_sign(side, "side")
+    which, value = _one_of(alpha=alpha, crank=crank, coupler=coupler)
+    if which == "alpha":
+        al = _angle_in("alpha", value, 0.0, math.pi - theta)
+    else:
+        x = positive_length(which, value) / c
+        # one of the two inverses is out of its domain: its NaN is not used
+        with np.errstate(invalid="ignore"):
+            al_a, al_b = (float(v) for v in np.nan_to_num(
+                np.asarray(qr_alpha_from_lengths(theta, 1.0, swing, min(x, 1e6)), dtype=float), nan=-1.0))
+        al = al_a if which == "crank" else al_b
+        if not 0.0 < al < math.pi - theta:
+            raise ValueError(f"Expected `{which}` that fits the swing and K (0 < alpha < pi - theta), got {value!r}")
+    return _build_crank_rocker(K, theta, c, swing, al, side)
+
+
+# ----------------------------------------------------------------------------- slider-crank
+@dataclass(frozen=True)
+class QuickReturnSliderCrank:
+    """An offset slider-crank designed for a time ratio and a stroke, (2-51).
+
+    Attributes
+    ----------
+    slider_crank : SliderCrank
+        The linkage in its standard frame (A = 0, guide y = e > 0, slider to the right).
+    lengths : tuple of float
+        ``(a, b, e)``: crank, connecting rod, offset.
+    time_ratio, extreme_angle, stroke : float
+        The task: K, theta and the stroke H.
+    alpha : float
+        The free parameter, angle AOC1 in (0, pi - theta).
+    min_transmission_angle : float
+        gamma_min with cos(gamma_min) = (a + e)/b, (2-52) (rad).
+    theta_extended, theta_folded : float
+        Crank angles at the far (x = sqrt((a+b)^2 - e^2)) and near limit positions.
+    """
+
+    slider_crank: SliderCrank
+    lengths: tuple
+    time_ratio: float
+    extreme_angle: float
+    stroke: float
+    alpha: float
+    min_transmission_angle: float
+    theta_extended: float
+    theta_folded: float
+
+    def check(self, *, samples=2048, xtol=1e-13):
+        """Simulate one crank turn with `SliderCrank`: measure K, the stroke and gamma_min.
+
+        Same keywords as `QuickReturnCrankRocker.check`.
+        """
+        return simulate_quick_return(self.slider_crank, samples=samples, xtol=xtol)
+
+
+def _slider_unit(theta, alpha):
+    R, a, b, e = qr_slider_crank(theta, 1.0, alpha)
+    # C1 must lie beyond the foot of A on the guide, or the folded position is on the other
+    # branch: sin(theta + alpha) > sin(theta), that is alpha < pi - 2 theta
+    valid = (b > a + np.abs(e)) & (np.sin(theta + alpha) > np.sin(theta))
+    gamma = np.where(valid, _acute((a + e) / b), -1.0)
+    return R, a, b, e, gamma
+
+
+def _build_slider(K, theta, H, alpha):
+    R, a, b, e, gamma = (float(v) for v in _slider_unit(theta, alpha))
+    if gamma < 0.0:
+        raise ValueError(
+            f"Expected `alpha` < pi - 2 theta = {math.pi - 2 * theta!r} so that both limit positions lie on "
+            f"one branch, got {alpha!r}"
+        )
+    sc = SliderCrank(a * H, b * H, e * H)
+    return QuickReturnSliderCrank(
+        slider_crank=sc, lengths=(a * H, b * H, e * H), time_ratio=K, extreme_angle=theta, stroke=H,
+        alpha=alpha, min_transmission_angle=gamma,
+        theta_extended=math.asin(e / (a + b)) % _TWO_PI, theta_folded=(math.pi + math.asin(e / (b - a))) % _TWO_PI,
+    )
+
+
+def quick_return_slider_crank(time_ratio, stroke, *, alpha=None, offset=None):
+    """The offset slider-crank with time ratio K and stroke H, (2-51).
+
+    Give exactly one of `alpha` (angle AOC1 in (0, pi - 2 theta)) or `offset` (example
+    2-19: e in (0, H / tan(theta)), one design).
+
+    Returns
+    -------
+    QuickReturnSliderCrank
+
+    Notes
+    -----
+    Derived in :ref:`deriv-quick-return-design`. Computed with H = 1 and scaled. The
+    textbook lets alpha run over (0, pi - theta), but for alpha >= pi - 2 theta the near
+    limit position C1 lies behind the foot of A on the guide and the slider would have to
+    change branch between its two limit positions: such an alpha raises ValueError. On
+    (0, pi - 2 theta) the crank revolves (b > a + e).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.planar.synthesis import quick_return_slider_crank
+    >>> q = quick_return_slider_crank(1.25, 100.0, alpha=np.radians(25.0))   # l.2671
+    >>> [round(x, 3) for x in q.lengths], round(float(np.degrees(q.min_transmission_angle)), 3)
+    ([46.907, 110.189, 34.002], 42.755)
+    >>> round(q.check().output_range, 9)
+    100.0
+    """
+    K, theta = _slider_theta(time_ratio)
+    H = positive_length("stroke", stroke)
+    which, value = _one_of(alpha=alpha, offset=offset)
+    if which == "alpha":
+        al = _angle_in("alpha", value, 0.0, math.pi - 2.0 * theta)
+    else:
+        e = positive_length("offset", value) / H
+        top = 1.0 / math.tan(theta)
+        if not e < top:
+            raise ValueError(f"Expected `offset` < H / tan(theta) = {top * H!r}, got {value!r}")
+        al = float(qr_alpha_from_offset(theta, 1.0, e))
+    return _build_slider(K, theta, H, al)
+
+
+# ----------------------------------------------------------------------------- guide-bar
+@dataclass(frozen=True)
+class QuickReturnGuideBar:
+    """An oscillating guide-bar designed for a time ratio and a frame (Ex. 2-20).
+
+    Attributes
+    ----------
+    guide_bar : GuideBar
+        The linkage: crank a = d sin(theta/2) about A = 0, guide pivot at D = d.
+    time_ratio, extreme_angle : float
+        K and theta; the guide swings through theta.
+    frame, crank : float
+        d and a.
+    min_guide_length : float
+        The guide must reach the crank pin at its farthest, ``d + a`` (l.2492).
+    """
+
+    guide_bar: GuideBar
+    time_ratio: float
+    extreme_angle: float
+    frame: float
+    crank: float
+    min_guide_length: float
+
+    def check(self, *, samples=2048, xtol=1e-13):
+        """Simulate one crank turn with `GuideBar`: measure K and the swing of the guide.
+
+        Same keywords as `QuickReturnCrankRocker.check`; see `simulate_quick_return`.
+        """
+        return simulate_quick_return(self.guide_bar, samples=samples, xtol=xtol)
+
+
+def quick_return_guide_bar(time_ratio, frame):
+    """The oscillating guide-bar with time ratio K and frame AD = `frame` (Ex. 2-20).
+
+    The guide's limit positions are tangent to the crank circle, so the crank is
+    perpendicular to the guide there, the swing equals the extreme angle theta and
+    ``a = d sin(theta / 2)`` (l.2488-2492).
+
+    Examples
+    --------
+    >>> from mech.planar.synthesis import quick_return_guide_bar
+    >>> q = quick_return_guide_bar(2.0, 300.0)
+    >>> round(q.crank, 9), round(q.check().time_ratio, 9)
+    (150.0, 2.0)
+    """
+    K, theta = _theta(time_ratio)
+    d = positive_length("frame", frame)
+    gb = GuideBar.from_swing(d, theta)
+    return QuickReturnGuideBar(gb, K, theta, d, gb.a, d + gb.a)
+
+
+# ----------------------------------------------------------------------------- searches over alpha
+@dataclass(frozen=True)
+class QuickReturnFamily:
+    """Every design of one kind for a task, over the free parameter alpha.
+
+    Attributes
+    ----------
+    intervals : tuple of (float, float)
+        Open intervals of alpha (rad) whose designs have ``gamma_min >= min_transmission``
+        (empty if there is none).
+    best : QuickReturnCrankRocker or QuickReturnSliderCrank
+        The design with the largest gamma_min over (0, pi - theta).
+    min_transmission : float
+        The permitted transmission angle [gamma] the intervals keep.
+    design : callable
+        ``design(alpha)`` builds the design at any alpha.
+    """
+
+    intervals: tuple
+    best: object
+    min_transmission: float
+    design: Callable
+
+    def designs(self, n=5):
+        """``n`` designs spread over each interval (its ends excluded)."""
+        n = nonnegative_int("n", n, 10**6)
+        return [self.design(lo + (hi - lo) * (k + 1) / (n + 1)) for lo, hi in self.intervals for k in range(n)]
+
+
+def _search(gamma_of, top, min_transmission, samples, xtol):
+    """alpha maximising gamma_of on (0, top) and the intervals where gamma_of >= min_transmission."""
+    alpha = np.linspace(0.0, top, samples + 2)[1:-1]
+    g = gamma_of(alpha)
+    k = int(np.argmax(g))
+    step = alpha[1] - alpha[0]
+    res = minimize_scalar(lambda u: -float(gamma_of(np.array([u]))[0]),
+                          bounds=(max(alpha[k] - step, 0.5 * alpha[0]), min(alpha[k] + step, top - 0.5 * alpha[0])),
+                          method="bounded", options={"xatol": xtol})
+    best = float(res.x) if -res.fun >= g[k] else float(alpha[k])
+    f = lambda u: float(gamma_of(np.array([u]))[0]) - min_transmission  # noqa: E731
+    above = g >= min_transmission
+    ends = [0.0] if above[0] else []
+    for i in np.flatnonzero(above[1:] != above[:-1]):
+        ends.append(brentq(f, alpha[i], alpha[i + 1], xtol=xtol))
+    if above[-1]:
+        ends.append(top)
+    return best, tuple((float(lo), float(hi)) for lo, hi in zip(ends[0::2], ends[1::2]))
+
+
+def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side=1, samples=2001, xtol=1e-12):
+    """Every quick-return crank-rocker for K, c and phi, and the best by gamma_min (Table 2-3).
+
+    Parameters
+    ----------
+    time_ratio, rocker, swing, side
+        As for `quick_return_crank_rocker`.
+    min_transmission : float, optional
+        The permitted transmission angle [gamma] in [0, pi/2) (rad).
+    samples : int, optional
+        Values of alpha sampled on (0, pi - theta) before the crossings of [gamma] are
+        refined by Brent's method and the best alpha by a bounded scalar search.
+    xtol : float, optional
+        Absolute tolerance (rad) on alpha of those refinements.
+
+    Returns
+    -------
+    QuickReturnFamily
+
+    Notes
+    -----
+    gamma_min(alpha) comes from (2-48) and its companion at the extended position
+    (l.2543); alpha where the linkage is not a crank-rocker doing the task (see
+    `quick_return_crank_rocker`) count as below [gamma]. The
+    sampling must resolve each interval: an interval narrower than (pi - theta)/samples
+    can be missed.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.planar.synthesis import crank_rocker_family
+    >>> f = crank_rocker_family(1.25, 500.0, np.radians(40.0), min_transmission=np.radians(40.0))
+    >>> [tuple(round(float(np.degrees(x)), 4) for x in iv) for iv in f.intervals]   # l.2551
+    [(14.4487, 45.2267)]
+    """
+    K, theta = _theta(time_ratio)
+    c = positive_length("rocker", rocker)
+    swing = _angle_in("swing", swing, 0.0, math.pi)
+    side = branch_sign(side, "side")
+    gmin = real_number("min_transmission", min_transmission)
+    if not 0.0 <= gmin < math.pi / 2:
+        raise ValueError(f"Expected `min_transmission` in [0, pi/2), got {gmin!r}")
+    samples = nonnegative_int("samples", samples, 10**7)
+    xtol = positive_length("xtol", xtol)
+
+    def gamma_of(al):
+        with np.errstate(invalid="ignore"):
+            return _crank_rocker_unit(theta, swing, al, side)[5]
+
+    best, intervals = _search(gamma_of, math.pi - theta, gmin, samples, xtol)
+    if gamma_of(np.array([best]))[0] < 0.0:
+        raise ValueError(f"Expected K, swing and side that admit a crank-rocker, got none for swing = {swing!r}")
+    return QuickReturnFamily(intervals, _build_crank_rocker(K, theta, c, swing, best, side), gmin,
+                             lambda al: quick_return_crank_rocker(K, c, swing, alpha=al, side=side))
+
+
+def slider_crank_family(time_ratio, stroke, *, min_transmission=0.0, samples=2001, xtol=1e-12):
+    """Every quick-return offset slider-crank for K and H, and the best by gamma_min (Table 2-5).
+
+    Keywords as for `crank_rocker_family`; gamma_min(alpha) from (2-52).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.planar.synthesis import slider_crank_family
+    >>> f = slider_crank_family(1.25, 100.0)
+    >>> round(float(np.degrees(f.best.alpha)), 3), round(float(np.degrees(f.best.min_transmission_angle)), 4)
+    (27.035, 42.8078)
+    """
+    K, theta = _slider_theta(time_ratio)
+    H = positive_length("stroke", stroke)
+    gmin = real_number("min_transmission", min_transmission)
+    if not 0.0 <= gmin < math.pi / 2:
+        raise ValueError(f"Expected `min_transmission` in [0, pi/2), got {gmin!r}")
+    samples = nonnegative_int("samples", samples, 10**7)
+    xtol = positive_length("xtol", xtol)
+
+    def gamma_of(al):
+        return _slider_unit(theta, al)[4]
+
+    best, intervals = _search(gamma_of, math.pi - 2.0 * theta, gmin, samples, xtol)
+    return QuickReturnFamily(intervals, _build_slider(K, theta, H, best), gmin,
+                             lambda al: quick_return_slider_crank(K, H, alpha=al))
