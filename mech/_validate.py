@@ -32,6 +32,12 @@ __all__ = [
     "motion_inputs",
     "vector3",
     "bool_flag",
+    "integer",
+    "nonnegative_number",
+    "option",
+    "real_tuple",
+    "planar_point",
+    "planar_points",
 ]
 
 
@@ -54,11 +60,42 @@ def _kind_name(arr):
             "M": "datetime", "m": "timedelta", "V": "structured"}.get(arr.dtype.kind, str(arr.dtype))
 
 
-def _first_bad_object(arr):
+_NONE_BAD = object()
+
+
+def _first_bad_object(arr, allowed=numbers.Real):
     for item in arr.ravel():
-        if isinstance(item, (bool, np.bool_)) or not isinstance(item, numbers.Real):
+        if isinstance(item, (bool, np.bool_)) or not isinstance(item, allowed):
             return item
-    return None
+    return _NONE_BAD
+
+
+def _first_bool(value):
+    """The first boolean inside nested lists and tuples (NumPy would turn it into 1.0)."""
+    if isinstance(value, (bool, np.bool_)):
+        return value
+    if isinstance(value, (list, tuple)):
+        for item in value:
+            found = _first_bool(item)
+            if found is not _NONE_BAD:
+                return found
+    return _NONE_BAD
+
+
+def _first_text(arr, value):
+    """The value shown for a string array: its first string that is not a number, in context."""
+    if arr.dtype.kind not in "US" or arr.ndim == 0:
+        return _show(value)
+    for item in np.asarray(value, dtype=object).ravel():
+        if isinstance(item, (str, bytes)):
+            return f"{item!r} in {_show(value)}"
+    return _show(value)
+
+
+def _first_complex(arr):
+    flat = arr.ravel()
+    nonreal = np.flatnonzero(flat.imag != 0)
+    return complex(flat[nonreal[0]] if nonreal.size else flat[0]) if flat.size else None
 
 
 def real_array(name, value, *, finite=True):
@@ -75,9 +112,16 @@ def real_array(name, value, *, finite=True):
     except Exception as exc:
         raise InputTypeError(f"Expected `{name}` to be real numbers, got {_show(value)} ({exc})") from None
     kind = arr.dtype.kind
+    bad = _first_bool(value)
+    if bad is not _NONE_BAD:
+        raise InputTypeError(f"Expected `{name}` to be real numbers, got {bad!r} in {_show(value)}")
+    if kind == "c":
+        raise InputTypeError(
+            f"Expected `{name}` to be real numbers, got a complex value {_first_complex(arr)!r} in {_show(value)}"
+        )
     if kind == "O":
         bad = _first_bad_object(arr)
-        if bad is not None or arr.size == 0 and arr.ndim == 0:
+        if bad is not _NONE_BAD:
             raise InputTypeError(f"Expected `{name}` to be real numbers, got {bad!r} in {_show(value)}")
         try:
             arr = arr.astype(float)
@@ -85,7 +129,7 @@ def real_array(name, value, *, finite=True):
             raise InputTypeError(f"Expected `{name}` to be real numbers, got {_show(value)}") from None
     elif kind not in "iuf":
         raise InputTypeError(
-            f"Expected `{name}` to be real numbers, got a {_kind_name(arr)} value {_show(value)}"
+            f"Expected `{name}` to be real numbers, got a {_kind_name(arr)} value {_first_text(arr, value)}"
         )
     arr = np.asarray(arr, dtype=float)
     if finite and not np.all(np.isfinite(arr)):
@@ -120,6 +164,22 @@ def positive_length(name, value):
     if not (np.isfinite(x) and x > 0.0):
         raise ValueError(f"Expected `{name}` > 0, got {x!r}")
     return x
+
+
+def nonnegative_number(name, value):
+    """Return ``value`` as a float after checking that it is finite and >= 0 (a tolerance)."""
+    x = _scalar(name, value)
+    if not (np.isfinite(x) and x >= 0.0):
+        raise ValueError(f"Expected `{name}` >= 0, got {x!r}")
+    return x
+
+
+def real_tuple(name, value, size):
+    """Return ``value`` as a tuple of ``size`` finite floats, e.g. a coupler point ``(p, q)``."""
+    arr = finite_array(name, value)
+    if arr.shape != (size,):
+        raise ValueError(f"Expected `{name}` to be {size} numbers, got shape {arr.shape}: {_show(value)}")
+    return tuple(float(x) for x in arr)
 
 
 def arc(name, value):
@@ -167,6 +227,71 @@ def bool_flag(name, value):
     if not isinstance(value, (bool, np.bool_)):
         raise InputTypeError(f"Expected `{name}` to be True or False, got {value!r}")
     return bool(value)
+
+
+def integer(name, value, *, minimum=None, maximum=None):
+    """Return ``value`` as an int after checking its type and the bounds given.
+
+    Accepts Python and NumPy integers only: booleans, floats (even ``2.0``), strings and
+    other objects raise :class:`~mech.InputTypeError`; a value out of bounds raises
+    ``ValueError``.
+    """
+    bounds = {(None, None): "", (None, maximum): f" <= {maximum}", (minimum, None): f" >= {minimum}"}.get(
+        (minimum, maximum), f" in [{minimum}, {maximum}]")
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputTypeError(f"Expected `{name}` to be an integer{bounds}, got {_show(value)}")
+    if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
+        raise ValueError(f"Expected `{name}` to be an integer{bounds}, got {value!r}")
+    return int(value)
+
+
+def option(name, value, allowed):
+    """Return ``value`` after checking that it is one of the strings ``allowed``."""
+    if not isinstance(value, str) or value not in allowed:
+        choices = ", ".join(repr(a) for a in allowed)
+        raise ValueError(f"Expected `{name}` to be one of {choices}, got {_show(value)}")
+    return value
+
+
+def planar_points(name, value):
+    """Return ``value`` as a complex array of finite planar points ``x + 1j*y``.
+
+    Planar points are complex by the package's convention, so real and complex numbers are
+    both accepted; booleans, strings, ``None``, other objects, NaN and infinities (in
+    either part) are rejected by name.
+    """
+    if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
+        raise InputTypeError(f"Expected `{name}` to be a point x + 1j*y, got {value!r}")
+    try:
+        arr = np.asarray(value)
+    except Exception as exc:
+        raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {_show(value)} ({exc})") from None
+    bad = _first_bool(value)
+    if bad is not _NONE_BAD:
+        raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {bad!r} in {_show(value)}")
+    if arr.dtype.kind == "O":
+        bad = _first_bad_object(arr, numbers.Complex)
+        if bad is not _NONE_BAD or arr.ndim == 0:
+            bad = value if bad is _NONE_BAD else bad
+            raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {bad!r} in {_show(value)}")
+        arr = arr.astype(complex)
+    elif arr.dtype.kind not in "iufc":
+        raise InputTypeError(
+            f"Expected `{name}` to be points x + 1j*y, got a {_kind_name(arr)} value {_first_text(arr, value)}"
+        )
+    arr = np.asarray(arr, dtype=complex)
+    finite = np.isfinite(arr)
+    if not np.all(finite):
+        raise ValueError(f"Expected finite `{name}`, got {arr[~finite].ravel()[0]!r}")
+    return arr
+
+
+def planar_point(name, value):
+    """Return ``value`` as one finite planar point, a Python complex (see `planar_points`)."""
+    arr = planar_points(name, value)
+    if arr.ndim != 0:
+        raise ValueError(f"Expected `{name}` to be a single point, got shape {arr.shape}: {_show(value)}")
+    return complex(arr)
 
 
 def motion_inputs(name, angle, order, omega, alpha):

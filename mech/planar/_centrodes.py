@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import instant_centres as _gen
-from mech._validate import finite_array, positive_length
+from mech._validate import finite_array, integer, positive_length
 
 __all__ = ["CentrodeSegment", "CouplerCentrodes", "coupler_centrodes"]
 
@@ -57,6 +57,7 @@ class CouplerCentrodes:
         Returns ``B + moving * exp(i phi)`` at that pose: it touches the fixed centrode
         at that pose's P24.
         """
+        index = integer("index", index, minimum=-self.phi.size, maximum=self.phi.size - 1)
         return self.B[index] + self.moving * np.exp(1j * self.phi[index])
 
     def segments(self, limit):

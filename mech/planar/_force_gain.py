@@ -14,7 +14,7 @@ import numpy as np
 
 from mech._generated import force_gain as _g
 from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal
-from mech._validate import branch_sign, finite_array, positive_length, real_number
+from mech._validate import branch_sign, finite_array, planar_point, positive_length, real_number
 from mech.planar._linkage import Guide, Linkage
 
 __all__ = [
@@ -391,7 +391,7 @@ def hand_press(*, lever=25.0, handle=250.0, pivot=70.0 - 75.0j, link2=70.0, link
     """
     L = {k: positive_length(k, v) for k, v in dict(lever=lever, handle=handle, link2=link2,
                                                         link3=link3, link4=link4).items()}
-    return (Linkage({"D": 0.0, "A": complex(pivot)})
+    return (Linkage({"D": 0.0, "A": planar_point("pivot", pivot)})
             .crank("lever", pivot="A", tip="B", length=L["lever"])
             .point("H", link="lever", at=-L["handle"])
             .rrr(("link2", "link3"), pins=("B", "D"), joint="C", lengths=(L["link2"], L["link3"]), branch=1)
@@ -438,7 +438,8 @@ def jaw_crusher(*, crank=12.0, pitman=250.0, toggle_back=90.0, toggle_front=90.0
     """
     L = {k: positive_length(k, v) for k, v in dict(crank=crank, pitman=pitman, toggle_back=toggle_back,
                                                         toggle_front=toggle_front, jaw=jaw).items()}
-    return (Linkage({"A": 0.0, "D": complex(back_pivot), "F": complex(jaw_pivot)})
+    return (Linkage({"A": 0.0, "D": planar_point("back_pivot", back_pivot),
+                     "F": planar_point("jaw_pivot", jaw_pivot)})
             .crank("crank", pivot="A", tip="B", length=L["crank"])
             .rrr(("pitman", "back"), pins=("B", "D"), joint="C", lengths=(L["pitman"], L["toggle_back"]),
                  branch=-1)

@@ -4,7 +4,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
-from mech._validate import branch_sign, motion_inputs, positive_length
+from mech._validate import bool_flag, branch_sign, motion_inputs, nonnegative_number, positive_length, real_tuple
 from mech._pose import Pose
 
 __all__ = ["FourBar", "FourBarPose"]
@@ -111,13 +111,8 @@ class FourBar:
                 )
         self._a, self._b, self._c, self._d = (lengths[n] for n in "abcd")
         self._branch = branch_sign(branch)
-        try:
-            p, q = (float(v) for v in coupler)
-        except (TypeError, ValueError):
-            raise ValueError(f"Expected `coupler` to be a pair of numbers (p, q), got {coupler!r}") from None
-        if not (np.isfinite(p) and np.isfinite(q)):
-            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
-        self._coupler = (p, q)
+        self._coupler = real_tuple("coupler", coupler, 2)
+        rtol = nonnegative_number("rtol", rtol)
         gaps = [float(g) for g in _gen.fourbar_assembly_gaps(*(lengths[n] for n in "abcd"))]
         zero = [abs(g) <= rtol * total for g in gaps]
         self._gaps = tuple(0.0 if z else g for g, z in zip(gaps, zero))
@@ -183,6 +178,7 @@ class FourBar:
         >>> pose.valid.tolist(), pose.aP.shape
         ([True, True], (2,))
         """
+        strict = bool_flag("strict", strict)
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size

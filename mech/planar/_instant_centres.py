@@ -7,12 +7,14 @@ of the lines, so centres at infinity (sliding pairs, translating links) need no 
 case anywhere.
 """
 
+import numbers
 from dataclasses import dataclass
 from itertools import combinations
 
 import numpy as np
 
-from mech._validate import finite_array
+from mech._errors import InputTypeError
+from mech._validate import finite_array, integer, planar_points
 
 __all__ = [
     "Centre",
@@ -77,13 +79,7 @@ def higher_pair(contact, normal):
 
 
 def _complex(name, value):
-    arr = np.asarray(value)
-    if not np.issubdtype(arr.dtype, np.number):
-        raise ValueError(f"Expected `{name}` to be a complex number, got {value!r}")
-    arr = arr.astype(complex)
-    finite_array(f"{name}.real", arr.real)
-    finite_array(f"{name}.imag", arr.imag)
-    return arr
+    return planar_points(name, value)
 
 
 def _direction(name, value):
@@ -222,12 +218,11 @@ def _meet(lines):
 
 
 def _labels(links):
-    if isinstance(links, (int, np.integer)) and not isinstance(links, bool):
-        centre_count(links)
-        return tuple(range(1, int(links) + 1))
+    if isinstance(links, (bool, np.bool_, str, bytes, numbers.Number)) or not hasattr(links, "__iter__"):
+        return tuple(range(1, integer("links", links, minimum=2) + 1))
     labels = tuple(links)
     if len(labels) < 2 or len(set(labels)) != len(labels):
-        raise ValueError(f"Expected at least two distinct link labels, got {links!r}")
+        raise ValueError(f"Expected `links` to be at least two distinct link labels, got {links!r}")
     return labels
 
 
@@ -278,6 +273,8 @@ def instant_centres(links, direct):
     labels = _labels(links)
     index = {label: k for k, label in enumerate(labels)}
     known, lines, steps, sources = {}, {}, [], {}
+    if not hasattr(direct, "items"):
+        raise InputTypeError(f"Expected `direct` to be a mapping of link pairs to centres, got {direct!r}")
     for raw_pair, spec in dict(direct).items():
         try:
             i, j = raw_pair
@@ -289,7 +286,7 @@ def instant_centres(links, direct):
         if pair in known or pair in lines:
             raise ValueError(f"Expected each pair once in `direct`, got {pair!r} twice")
         if not isinstance(spec, _Direct):
-            spec = revolute(spec)
+            spec = _Direct("revolute", _complex(f"direct[{raw_pair!r}]", spec))
         if spec.kind == "line":
             lines[pair] = spec
             continue
@@ -441,7 +438,9 @@ class LinkVelocities:
         ``v = i omega (z - P_link,frame)``; for a translating link (absolute centre at
         infinity) the same formula in homogeneous coordinates gives the common velocity.
         """
-        z = np.asarray(z, dtype=complex)
+        z = planar_points("z", z)
+        if link not in self._rates:
+            raise ValueError(f"Expected `link` among {list(self._rates)}, got {link!r}")
         if link == self._frame:
             return np.zeros(np.broadcast_shapes(z.shape, np.shape(self.omega[link])), complex)[()]
         h = self._centres[link, self._frame].homogeneous

@@ -13,13 +13,24 @@ from types import MappingProxyType
 
 import numpy as np
 
-from mech._errors import AssemblyError
+from mech._errors import AssemblyError, InputTypeError
 from mech._generated import assur_groups as _g
-from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
+from mech._validate import (
+    bool_flag, branch_sign, finite_array, integer, nonnegative_int, planar_point, positive_length, real_number,
+)
 
 __all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
 
 GROUND = "ground"
+
+
+def _looks_numeric(text):
+    """True for a string such as "10" that would name a driver but reads as a number."""
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 @dataclass(frozen=True)
@@ -33,6 +44,11 @@ class Guide:
     link: str
     through: object = 0j
     angle: float = 0.0
+
+    def __post_init__(self):
+        if not isinstance(self.through, str) or _looks_numeric(self.through):
+            object.__setattr__(self, "through", planar_point("through", self.through))
+        object.__setattr__(self, "angle", real_number("angle", self.angle))
 
 
 @dataclass(frozen=True)
@@ -113,9 +129,12 @@ class Linkage:
         self._links = {GROUND: None}
         self._guides = {}
         self._drivers = ()
+        if ground is not None and not hasattr(ground, "items"):
+            raise InputTypeError(f"Expected `ground` to be a mapping of point names to points, got {ground!r}")
         for name, z in dict(ground or {}).items():
             self._add_point(name, GROUND)
-            self._steps += (_Step("ground", name, (GROUND,), (("at", complex(z)),)),)
+            z = planar_point(f"ground[{name!r}]", z)
+            self._steps += (_Step("ground", name, (GROUND,), (("at", z),)),)
 
     # ------------------------------------------------------------------ building
     def _copy(self):
@@ -172,7 +191,7 @@ class Linkage:
         """Add a fixed point ``name`` at ``at`` (complex)."""
         new = self._copy()
         new._add_point(name, GROUND)
-        return new._push("ground", name, (GROUND,), at=complex(at))
+        return new._push("ground", name, (GROUND,), at=planar_point("at", at))
 
     def point(self, name, *, link, at):
         """Attach a point to ``link`` at local coordinates ``at`` (complex) in its frame."""
@@ -181,7 +200,7 @@ class Linkage:
         if link == GROUND:
             return new.ground(name, at)
         new._add_point(name, link)
-        return new._push("point", name, (link,), at=complex(at))
+        return new._push("point", name, (link,), at=planar_point("at", at))
 
     def crank(self, link, *, pivot, tip, length, driver=None):
         """A crank: ``link`` turns about the known point ``pivot`` through the input angle.
@@ -226,7 +245,7 @@ class Linkage:
         new._need_point(p2)
         lens = []
         for k, r in enumerate(lengths):
-            if isinstance(r, str):
+            if isinstance(r, str) and not _looks_numeric(r):
                 new._drivers = new._drivers + (r,)
                 lens.append(r)
             else:
@@ -267,9 +286,7 @@ class Linkage:
         gl, block = links
         for p in pins:
             new._need_point(p)
-        e = float(offset)
-        if not math.isfinite(e):
-            raise ValueError(f"Expected a finite `offset`, got {offset!r}")
+        e = real_number("offset", offset)
         new._add_link(gl)
         new._add_link(block)
         return new._push("rpr", f"RPR {gl}-{block}", (gl, block), pins=tuple(pins), offset=e,
@@ -303,8 +320,9 @@ class Linkage:
         pinned, sliding = links
         new._need_point(pin)
         new._need_guide(guide)
-        gam = float(angle)
-        if not math.isfinite(gam) or abs(math.sin(gam)) < 1e-12:
+        gam = real_number("angle", angle)
+        offset = real_number("offset", offset)
+        if abs(math.sin(gam)) < 1e-12:
             raise ValueError(f"Expected an `angle` not parallel to the guide, got {angle!r}")
         new._add_link(pinned)
         new._add_link(sliding)
@@ -373,6 +391,7 @@ class Linkage:
         >>> lk.solve([0.0, 2.0]).valid.tolist()
         [True, False]
         """
+        strict = bool_flag("strict", strict)
         order = nonnegative_int("order", order, 2)
         q, w, al = (self._per_driver(x, name) for x, name in
                     ((inputs, "inputs"), (omega, "omega"), (alpha, "alpha")))
@@ -399,7 +418,7 @@ class Linkage:
                                  f"got {sorted(unknown)}")
             missing = set(self._drivers) - set(value)
             if missing and what == "inputs":
-                raise ValueError(f"Expected an input for every driver, missing {sorted(missing)}")
+                raise ValueError(f"Expected `inputs` for every driver, missing {sorted(missing)}, got {value!r}")
             default = 1.0 if what == "omega" else 0.0
             return {d: finite_array(f"{what}[{d!r}]", value.get(d, default)) for d in self._drivers}
         if len(self._drivers) != 1 and what == "inputs":
@@ -667,12 +686,16 @@ class Linkage:
             driver = self._drivers[0]
         if driver not in self._drivers:
             raise ValueError(f"Expected `driver` among {list(self._drivers)}, got {driver!r}")
+        start, end = real_number("start", start), real_number("end", end)
+        samples = integer("samples", samples, minimum=2)
+        if others is not None and not hasattr(others, "items"):
+            raise InputTypeError(f"Expected `others` to be a mapping of drivers to inputs, got {others!r}")
         fixed = dict(others or {})
 
         def ok(x):
             return self.solve({**fixed, driver: x}, order=0).valid
 
-        x = np.linspace(float(start), float(end), int(samples))
+        x = np.linspace(start, end, samples)
         good = ok(x)
         edges = np.flatnonzero(np.diff(good.astype(np.int8)))
         cuts = []
@@ -819,6 +842,8 @@ class LinkageSolution:
 
     def direction(self, link):
         """Unit complex direction of ``link``'s frame x axis (no trigonometry)."""
+        if link not in self._dirs:
+            raise ValueError(f"Expected `link` among {sorted(self._dirs)}, got {link!r}")
         return self._dirs[link]
 
     def __setattr__(self, name, value):

@@ -24,6 +24,8 @@ from types import MappingProxyType
 
 import numpy as np
 
+from mech._validate import positive_length
+
 __all__ = [
     "Term",
     "Equation",
@@ -122,9 +124,7 @@ class Polygon:
         For the textbook's ``mu_v = 0.05 (m/s)/mm`` with velocities in mm/s, pass
         ``mu = 50.0``: a velocity of 1000 mm/s is then drawn 20 mm long.
         """
-        mu = float(mu)
-        if not np.isfinite(mu) or mu <= 0.0:
-            raise ValueError(f"Expected `mu` > 0, got {mu!r}")
+        mu = positive_length("mu", mu)
         return MappingProxyType({name: np.abs(t.vector) / mu for name, t in self.terms.items()})
 
 

@@ -13,7 +13,7 @@ import numpy as np
 
 from mech._generated import pressure_angle as _g
 from mech._generated.transmission_angle import fourbar_transmission
-from mech._validate import finite_array, positive_length, real_number
+from mech._validate import bool_flag, finite_array, positive_length, real_number
 from mech.planar._grashof import grashof
 
 __all__ = [
@@ -438,4 +438,5 @@ def design_check(gamma_min, *, high_speed=False):
     (True, False)
     """
     g = real_number("gamma_min", gamma_min)
+    high_speed = bool_flag("high_speed", high_speed)
     return bool(g >= np.radians(50.0 if high_speed else 40.0))

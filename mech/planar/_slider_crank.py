@@ -7,7 +7,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
-from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
+from mech._validate import bool_flag, branch_sign, finite_array, nonnegative_int, positive_length, real_number
 from mech._pose import Pose
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
@@ -180,6 +180,7 @@ class SliderCrank:
         >>> SliderCrank(1.0, 4.0).solve(np.linspace(0, np.pi, 7)).x.shape
         (7,)
         """
+        strict = bool_flag("strict", strict)
         order = nonnegative_int("order", order, 2)
         theta = finite_array("theta", theta)
         args = (self._a, self._b, self._e)

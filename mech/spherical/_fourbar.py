@@ -5,7 +5,9 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
 from mech._pose import Pose
-from mech._validate import arc as _arc, branch_sign, motion_inputs, nonnegative_int, real_number
+from mech._validate import (
+    arc as _arc, bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_int, real_number, real_tuple,
+)
 from mech.spatial import AssemblyRange
 
 __all__ = ["SphericalFourBar", "SphericalFourBarPose", "ground_frame"]
@@ -20,12 +22,9 @@ _SCALARS = {0: ("psi",), 1: ("psi", "omega_output"), 2: ("psi", "omega_output", 
 
 def _rotation(frame, tol=1e-9):
     """Return `frame` as a 3x3 float array after checking it is a proper rotation."""
-    try:
-        R = np.array(frame, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got {frame!r}") from None
-    if R.shape != (3, 3) or not np.all(np.isfinite(R)):
-        raise ValueError(f"Expected `frame` to be a finite 3x3 rotation matrix, got {frame!r}")
+    R = finite_array("frame", frame)
+    if R.shape != (3, 3):
+        raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got shape {R.shape}")
     if np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
         raise ValueError("Expected `frame` to be a proper rotation (R.T @ R = I, det R = +1), "
                          f"got {np.array2string(R, precision=6)}")
@@ -139,13 +138,7 @@ class SphericalFourBar:
     def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), frame=None):
         self._a, self._b, self._c, self._d = (_arc(n, v) for n, v in zip("abcd", (a, b, c, d)))
         self._branch = branch_sign(branch)
-        try:
-            r, gamma = (float(v) for v in coupler)
-        except (TypeError, ValueError):
-            raise ValueError(f"Expected `coupler` to be a pair of numbers (r, gamma), got {coupler!r}") from None
-        if not (np.isfinite(r) and np.isfinite(gamma)):
-            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
-        self._coupler = (r, gamma)
+        self._coupler = real_tuple("coupler", coupler, 2)
         self._frame = None if frame is None else _rotation(frame)
 
     a = property(lambda self: self._a, doc="Input arc AB.")
@@ -215,6 +208,7 @@ class SphericalFourBar:
         >>> pose.valid.tolist(), pose.aP.shape
         ([True, True], (2, 3))
         """
+        strict = bool_flag("strict", strict)
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size
