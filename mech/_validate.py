@@ -32,7 +32,9 @@ __all__ = [
     "motion_inputs",
     "vector3",
     "bool_flag",
+    "instance",
     "integer",
+    "known_name",
     "nonnegative_number",
     "option",
     "real_tuple",
@@ -250,6 +252,25 @@ def option(name, value, allowed):
     if not isinstance(value, str) or value not in allowed:
         choices = ", ".join(repr(a) for a in allowed)
         raise ValueError(f"Expected `{name}` to be one of {choices}, got {_show(value)}")
+    return value
+
+
+def instance(name, value, cls):
+    """Return ``value`` after checking that it is a ``cls`` (e.g. a solved linkage)."""
+    if not isinstance(value, cls):
+        raise InputTypeError(f"Expected `{name}` to be a {cls.__name__}, got {_show(value)}")
+    return value
+
+
+def known_name(name, value, names):
+    """Return ``value`` after checking that it is one of ``names`` (point or link names)."""
+    try:
+        known = value in names
+    except TypeError:            # an unhashable value is no name
+        known = False
+    if not known:
+        listed = ", ".join(repr(n) for n in names)
+        raise ValueError(f"Expected `{name}` among {listed}, got {_show(value)}")
     return value
 
 

@@ -5,7 +5,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import instant_centres as _gen
-from mech._validate import finite_array, integer, positive_length
+from mech._validate import finite_array, instance, integer, positive_length
+from mech.planar._fourbar import FourBar
 
 __all__ = ["CentrodeSegment", "CouplerCentrodes", "coupler_centrodes"]
 
@@ -133,6 +134,7 @@ def coupler_centrodes(fourbar, theta):
     >>> bool(abs(abs(cen.moving[0]) - abs(cen.fixed[0] - cen.B[0])) < 1e-9)
     True
     """
+    instance("fourbar", fourbar, FourBar)
     theta = finite_array("theta", theta)
     pose = fourbar.solve(theta)
     B, C = pose.B, pose.C

@@ -6,7 +6,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import cognates as _gen
-from mech._validate import bool_flag, branch_sign, finite_array, planar_points, positive_length
+from mech._validate import bool_flag, branch_sign, finite_array, instance, planar_points, positive_length
 from mech.planar._fourbar import FourBar
 from mech._pose import Pose
 
@@ -162,6 +162,7 @@ class Cognates:
     """
 
     def __init__(self, original):
+        instance("original", original, FourBar)
         a, b, c, d = original.a, original.b, original.c, original.d
         p, q = original.coupler
         beta = original.branch

@@ -470,7 +470,9 @@ def eccentric_clamp_locks(alpha, e, r_disc, rho_pin, phi):
     [True, False]
     """
     e, r, rho, phi = _clamp_args(e, r_disc, rho_pin, phi)
-    margin, _ = eccentric_clamp(finite_array("alpha", alpha), e, r, rho, phi)
+    alpha = finite_array("alpha", alpha)
+    with np.errstate(invalid="ignore"):      # the largest angle (unused here) is NaN when x > 1
+        margin, _ = eccentric_clamp(alpha, e, r, rho, phi)
     return _out(np.asarray(margin) >= 0)
 
 

@@ -14,8 +14,10 @@ import numpy as np
 
 from mech._generated import force_gain as _g
 from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal
-from mech._validate import branch_sign, finite_array, planar_point, positive_length, real_number
-from mech.planar._linkage import Guide, Linkage
+from mech._validate import (
+    branch_sign, finite_array, instance, option, planar_point, positive_length, real_number,
+)
+from mech.planar._linkage import Guide, Linkage, LinkageSolution
 
 __all__ = [
     "mechanical_advantage",
@@ -113,8 +115,8 @@ def mechanical_advantage(solution, input, output, *, method="velocities"):
     >>> round(float(a), 9) == round(float(b), 9)
     True
     """
-    if method not in ("velocities", "centres"):
-        raise ValueError(f"Expected `method` 'velocities' or 'centres', got {method!r}")
+    instance("solution", solution, LinkageSolution)
+    option("method", method, ("velocities", "centres"))
     if method == "velocities" and solution.order < 1:
         raise ValueError(f"Expected a solution with velocities (order >= 1), got order {solution.order}")
     s_in, s_out = _spec(solution, input, "input"), _spec(solution, output, "output")

@@ -13,8 +13,8 @@ from itertools import combinations
 
 import numpy as np
 
-from mech._errors import InputTypeError
-from mech._validate import finite_array, integer, planar_points
+from mech._errors import InputTypeError, UnknownKeyError
+from mech._validate import finite_array, instance, integer, known_name, planar_points
 
 __all__ = [
     "Centre",
@@ -170,10 +170,10 @@ class InstantCentres:
         try:
             i, j = pair
         except (TypeError, ValueError):
-            raise KeyError(f"Expected a pair of link labels, got {pair!r}") from None
+            raise UnknownKeyError(f"Expected a pair of link labels, got {pair!r}") from None
         order = {label: k for k, label in enumerate(self.links)}
         if i not in order or j not in order or i == j:
-            raise KeyError(f"Expected two different links among {self.links}, got {pair!r}")
+            raise UnknownKeyError(f"Expected two different links among {self.links}, got {pair!r}")
         return (i, j) if order[i] < order[j] else (j, i)
 
     def __getitem__(self, pair):
@@ -405,6 +405,9 @@ def omega_ratio(centres, i, j, frame):
     >>> round(float(omega_ratio(ic, 3, 1, 4)), 12)     # P13 = -11: (-11 - 0) / (-11 - 8)
     0.578947368421
     """
+    instance("centres", centres, InstantCentres)
+    for name, label in (("i", i), ("j", j), ("frame", frame)):
+        known_name(name, label, centres.links)
     if frame in (i, j):
         if frame == j:
             raise ValueError(f"Expected `j` to differ from `frame` (the frame does not turn), got {j!r}")
@@ -483,6 +486,9 @@ def centre_velocities(centres, frame, driver, omega):
     >>> round(float(motion.omega[2]), 12), round(complex(motion.point_velocity(3, 0j)).real, 12)
     (-1.2, -12.8)
     """
+    instance("centres", centres, InstantCentres)
+    known_name("frame", frame, centres.links)
+    known_name("driver", driver, centres.links)
     if driver == frame:
         raise ValueError(f"Expected a `driver` other than the frame, got {driver!r}")
     omega = finite_array("omega", omega)

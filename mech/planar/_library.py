@@ -15,7 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import integer, planar_point, positive_length, real_number
+from mech._errors import InputTypeError
+from mech._validate import instance, integer, known_name, planar_point, positive_length, real_number
 from mech.planar._linkage import Guide, Linkage
 
 __all__ = [
@@ -481,6 +482,8 @@ def step_ratio(solution, *, axis=-1):
     >>> max(step_ratio(sol).values()) < 3
     True
     """
+    if not hasattr(getattr(solution, "points", None), "items"):    # any solved linkage with points
+        raise InputTypeError(f"Expected `solution` to be a LinkageSolution, got {solution!r}")
     axis = integer("axis", axis)
     out = {}
     for name, z in solution.points.items():
@@ -539,6 +542,8 @@ def ram_stroke(linkage, point="F", *, direction=1.0 + 0.0j, samples=3600):
     >>> round(s.length, 1), round(s.time_ratio, 3)
     (299.3, 1.492)
     """
+    instance("linkage", linkage, Linkage)
+    known_name("point", point, linkage.point_names)
     e = planar_point("direction", direction)
     if e == 0:
         raise ValueError(f"Expected a non-zero `direction`, got {direction!r}")

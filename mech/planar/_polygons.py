@@ -24,7 +24,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from mech._validate import positive_length
+from mech._errors import InputTypeError
+from mech._validate import instance, known_name, positive_length
 
 __all__ = [
     "Term",
@@ -116,6 +117,8 @@ class Polygon:
 
     def segment(self, tail, head):
         """The vector from vertex ``tail`` to vertex ``head``."""
+        known_name("tail", tail, tuple(self.vertices))
+        known_name("head", head, tuple(self.vertices))
         return self.vertices[head] - self.vertices[tail]
 
     def lengths(self, mu):
@@ -345,6 +348,15 @@ def _polygon(kind, equations):
     return Polygon(kind, MappingProxyType(vertices), tuple(equations))
 
 
+def _motions(motions):
+    if isinstance(motions, (str, bytes)) or not hasattr(motions, "__iter__"):
+        raise InputTypeError(f"Expected `motions` to be a sequence of RelativeMotion, got {motions!r}")
+    motions = list(motions)
+    for k, m in enumerate(motions):
+        instance(f"motions[{k}]", m, RelativeMotion)
+    return motions
+
+
 def velocity_polygon(motions):
     """The velocity polygon of a sequence of `RelativeMotion` (pole ``"p"``).
 
@@ -360,7 +372,7 @@ def velocity_polygon(motions):
     >>> sorted(vp.vertices), vp.closure < 1e-9
     (['b', 'c', 'p'], True)
     """
-    return _polygon("velocity", [m.velocity for m in motions])
+    return _polygon("velocity", [m.velocity for m in _motions(motions)])
 
 
 def acceleration_polygon(motions):
@@ -374,7 +386,7 @@ def acceleration_polygon(motions):
     >>> complex(ap.vertices["c"]).real.__round__(6)
     -12500.0
     """
-    return _polygon("acceleration", [m.acceleration for m in motions])
+    return _polygon("acceleration", [m.acceleration for m in _motions(motions)])
 
 
 def _image(kind, sol, link, base, points):

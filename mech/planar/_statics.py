@@ -17,7 +17,8 @@ import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import statics as _g
-from mech._validate import finite_array, integer, nonnegative_number, planar_points
+from mech._validate import finite_array, instance, integer, nonnegative_number, planar_points
+from mech.planar._linkage import LinkageSolution
 
 __all__ = ["StaticForces", "static_forces", "as_linkage"]
 
@@ -430,6 +431,7 @@ def static_forces(solution, forces=None, couples=None, *, rho=0.0, mu=0.0, tol=1
     True
     """
     sol = solution
+    instance("solution", solution, LinkageSolution)
     tol = nonnegative_number("tol", tol)
     max_iter = integer("max_iter", max_iter, minimum=1)
     _check_valid(sol)
