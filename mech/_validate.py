@@ -84,6 +84,28 @@ def _first_bool(value):
     return _NONE_BAD
 
 
+def _first_bad_leaf(value, allowed):
+    """The first entry of nested lists and tuples that is not an ``allowed`` number."""
+    if isinstance(value, (list, tuple)):
+        for item in value:
+            found = _first_bad_leaf(item, allowed)
+            if found is not _NONE_BAD:
+                return found
+        return _NONE_BAD
+    if isinstance(value, np.ndarray) and value.dtype.kind in "iufc":
+        return _NONE_BAD
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, allowed):
+        return value
+    return _NONE_BAD
+
+
+def _unreadable(name, value, exc, what, allowed):
+    """The error for a value NumPy cannot read as an array (ragged lists, odd objects)."""
+    bad = _first_bad_leaf(value, allowed)
+    shown = f"{bad!r} in {_show(value)}" if bad is not _NONE_BAD else f"{_show(value)} ({exc})"
+    return InputTypeError(f"Expected `{name}` to be {what}, got {shown}")
+
+
 def _first_text(arr, value):
     """The value shown for a string array: its first string that is not a number, in context."""
     if arr.dtype.kind not in "US" or arr.ndim == 0:
@@ -112,7 +134,7 @@ def real_array(name, value, *, finite=True):
     try:
         arr = np.asarray(value)
     except Exception as exc:
-        raise InputTypeError(f"Expected `{name}` to be real numbers, got {_show(value)} ({exc})") from None
+        raise _unreadable(name, value, exc, "real numbers", numbers.Real) from None
     kind = arr.dtype.kind
     bad = _first_bool(value)
     if bad is not _NONE_BAD:
@@ -286,7 +308,7 @@ def planar_points(name, value):
     try:
         arr = np.asarray(value)
     except Exception as exc:
-        raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {_show(value)} ({exc})") from None
+        raise _unreadable(name, value, exc, "points x + 1j*y", numbers.Complex) from None
     bad = _first_bool(value)
     if bad is not _NONE_BAD:
         raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {bad!r} in {_show(value)}")
