@@ -233,15 +233,18 @@ def vector3(name, value):
 
 def branch_sign(value, name="branch"):
     """Return ``value`` as the int +1 or -1."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, numbers.Real)) \
-            or value not in (1, -1):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, numbers.Real)):
+        raise InputTypeError(f"Expected `{name}` to be +1 or -1, got {value!r}")
+    if value not in (1, -1):
         raise ValueError(f"Expected `{name}` to be +1 or -1, got {value!r}")
     return int(value)
 
 
 def nonnegative_int(name, value, maximum):
     """Return ``value`` as an int in ``[0, maximum]``."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) or not 0 <= value <= maximum:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputTypeError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
+    if not 0 <= value <= maximum:
         raise ValueError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
     return int(value)
 

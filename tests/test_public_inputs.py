@@ -594,7 +594,8 @@ CASES = {
                               theta1=[0.0, 1.0], alpha=0.5),
     "spatial.hooke_ratio": E(lambda: sp.hooke_ratio, {"theta1": "real", "alpha": "real"},
                              theta1=[0.0, 1.0], alpha=0.5),
-    "spatial.mobility": E(lambda: sp.mobility, {"moving_links": "count"}, moving_links=3, pairs="RSSR"),
+    "spatial.mobility": E(lambda: sp.mobility, {"moving_links": "count", "pairs": "option"}, moving_links=3,
+                          pairs="RSSR"),
     "spatial.rot_x": E(lambda: sp.rot_x, {"lam": "real"}, lam=[0.5, 1.5]),
     "spatial.rot_z": E(lambda: sp.rot_z, {"phi": "real"}, phi=[0.5, 1.5]),
     # ------------------------------------------------------------------------- spherical
@@ -899,7 +900,7 @@ def _random_bad(kind):
     return st.one_of(strategies)
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=1500, deadline=None)
 @given(data=st.data())
 def test_random_bad_values_rejected_by_name(data):
     key, slot = data.draw(st.sampled_from(_SLOTTED), label="slot")

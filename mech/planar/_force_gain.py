@@ -15,7 +15,7 @@ import numpy as np
 from mech._generated import force_gain as _g
 from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal
 from mech._validate import (
-    branch_sign, finite_array, instance, option, planar_point, positive_length, real_number,
+    branch_sign, finite_array, instance, option, planar_point, planar_points, positive_length, real_number,
 )
 from mech.planar._linkage import Guide, Linkage, LinkageSolution
 
@@ -49,9 +49,9 @@ def _spec(solution, spec, what):
         raise ValueError(f"Expected `{what}` to be a link name or (point, direction), got {spec!r}") from None
     if point not in solution.points:
         raise ValueError(f"Expected the point of `{what}` to be a point of the linkage, got {point!r}")
-    u = np.asarray(direction, dtype=complex)
-    if not np.all(np.isfinite(u)) or np.any(u == 0):
-        raise ValueError(f"Expected a finite, non-zero direction in `{what}`, got {direction!r}")
+    u = planar_points(what, direction)
+    if np.any(u == 0):
+        raise ValueError(f"Expected a non-zero direction in `{what}`, got {direction!r}")
     return ("force", point, u / np.abs(u))
 
 
