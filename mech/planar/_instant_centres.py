@@ -442,8 +442,7 @@ class LinkVelocities:
         infinity) the same formula in homogeneous coordinates gives the common velocity.
         """
         z = planar_points("z", z)
-        if link not in self._rates:
-            raise ValueError(f"Expected `link` among {list(self._rates)}, got {link!r}")
+        known_name("link", link, tuple(self._rates))
         if link == self._frame:
             return np.zeros(np.broadcast_shapes(z.shape, np.shape(self.omega[link])), complex)[()]
         h = self._centres[link, self._frame].homogeneous

@@ -16,12 +16,24 @@ import numpy as np
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import assur_groups as _g
 from mech._validate import (
-    bool_flag, branch_sign, finite_array, integer, nonnegative_int, planar_point, positive_length, real_number,
+    bool_flag, branch_sign, finite_array, integer, known_name, nonnegative_int, planar_point, positive_length,
+    real_number,
 )
 
 __all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
 
 GROUND = "ground"
+
+
+def _for(arg):
+    return "" if arg is None else f" for `{arg}`"
+
+
+def _two(name, value):
+    """Unpack a pair of names (links, pins, guides) given as a tuple or list."""
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise InputTypeError(f"Expected `{name}` to be a pair, got {value!r}")
+    return tuple(value)
 
 
 def _looks_numeric(text):
@@ -146,34 +158,36 @@ class Linkage:
         new._drivers = self._drivers
         return new
 
-    def _add_point(self, name, link):
+    def _add_point(self, name, link, arg=None):
+        where = _for(arg)
         if not isinstance(name, str) or not name:
-            raise ValueError(f"Expected a point name (a non-empty str), got {name!r}")
+            raise ValueError(f"Expected a point name (a non-empty str){where}, got {name!r}")
         if name in self._points:
-            raise ValueError(f"Expected a new point name, got {name!r}, which is already defined")
+            raise ValueError(f"Expected a new point name{where}, got {name!r}, which is already defined")
         self._points[name] = link
 
-    def _add_link(self, name):
+    def _add_link(self, name, arg=None):
+        where = _for(arg)
         if not isinstance(name, str) or not name:
-            raise ValueError(f"Expected a link name (a non-empty str), got {name!r}")
+            raise ValueError(f"Expected a link name (a non-empty str){where}, got {name!r}")
         if name in self._links:
-            raise ValueError(f"Expected a new link name, got {name!r}, which is already defined")
+            raise ValueError(f"Expected a new link name{where}, got {name!r}, which is already defined")
         self._links[name] = True
 
-    def _need_point(self, name):
-        if name not in self._points:
+    def _need_point(self, name, arg=None):
+        if not isinstance(name, str) or name not in self._points:
             known = ", ".join(sorted(self._points)) or "none"
-            raise ValueError(f"Expected a known point, got {name!r} (known points: {known})")
+            raise ValueError(f"Expected a known point{_for(arg)}, got {name!r} (known points: {known})")
 
-    def _need_link(self, name):
-        if name not in self._links:
+    def _need_link(self, name, arg=None):
+        if not isinstance(name, str) or name not in self._links:
             known = ", ".join(sorted(self._links))
-            raise ValueError(f"Expected a known link, got {name!r} (known links: {known})")
+            raise ValueError(f"Expected a known link{_for(arg)}, got {name!r} (known links: {known})")
 
-    def _need_guide(self, guide):
+    def _need_guide(self, guide, arg="guide"):
         if not isinstance(guide, Guide):
-            raise ValueError(f"Expected a `Guide(link, through, angle)`, got {guide!r}")
-        self._need_link(guide.link)
+            raise InputTypeError(f"Expected `{arg}` to be a Guide(link, through, angle), got {guide!r}")
+        self._need_link(guide.link, f"{arg}.link")
         if isinstance(guide.through, str):
             self._need_point(guide.through)
         else:
@@ -190,16 +204,16 @@ class Linkage:
     def ground(self, name, at):
         """Add a fixed point ``name`` at ``at`` (complex)."""
         new = self._copy()
-        new._add_point(name, GROUND)
+        new._add_point(name, GROUND, "name")
         return new._push("ground", name, (GROUND,), at=planar_point("at", at))
 
     def point(self, name, *, link, at):
         """Attach a point to ``link`` at local coordinates ``at`` (complex) in its frame."""
         new = self._copy()
-        new._need_link(link)
+        new._need_link(link, "link")
         if link == GROUND:
             return new.ground(name, at)
-        new._add_point(name, link)
+        new._add_point(name, link, "name")
         return new._push("point", name, (link,), at=planar_point("at", at))
 
     def crank(self, link, *, pivot, tip, length, driver=None):
@@ -209,10 +223,10 @@ class Linkage:
         the link's frame has its origin at ``pivot`` and its x axis along ``pivot -> tip``.
         """
         new = self._copy()
-        new._need_point(pivot)
+        new._need_point(pivot, "pivot")
         r = positive_length(f"length of {link}", length)
-        new._add_link(link)
-        new._add_point(tip, link)
+        new._add_link(link, "link")
+        new._add_point(tip, link, "tip")
         name = link if driver is None else driver
         new._drivers = new._drivers + (name,)
         return new._push("crank", f"crank {link}", (link,), pivot=pivot, tip=tip, length=r, driver=name)
@@ -225,8 +239,8 @@ class Linkage:
         """
         new = self._copy()
         new._need_guide(guide)
-        new._add_link(link)
-        new._add_point(point, link)
+        new._add_link(link, "link")
+        new._add_point(point, link, "point")
         name = link if driver is None else driver
         new._drivers = new._drivers + (name,)
         return new._push("slider", f"slider {link}", (link, guide.link), guide=guide, point=point, driver=name)
@@ -239,10 +253,10 @@ class Linkage:
         A length given as a str is a driver: an actuator whose length is an input.
         """
         new = self._copy()
-        l1, l2 = links
-        p1, p2 = pins
-        new._need_point(p1)
-        new._need_point(p2)
+        l1, l2 = _two("links", links)
+        p1, p2 = _two("pins", pins)
+        new._need_point(p1, "pins[0]")
+        new._need_point(p2, "pins[1]")
         lens = []
         for k, r in enumerate(lengths):
             if isinstance(r, str) and not _looks_numeric(r):
@@ -250,9 +264,9 @@ class Linkage:
                 lens.append(r)
             else:
                 lens.append(positive_length(f"lengths[{k}] of the RRR group {l1}-{l2}", r))
-        new._add_link(l1)
-        new._add_link(l2)
-        new._add_point(joint, l1)
+        new._add_link(l1, "links[0]")
+        new._add_link(l2, "links[1]")
+        new._add_point(joint, l1, "joint")
         return new._push("rrr", f"RRR {l1}-{l2}", (l1, l2), pins=(p1, p2), joint=joint,
                          lengths=tuple(lens), branch=branch_sign(branch))
 
@@ -264,13 +278,13 @@ class Linkage:
         x along the guide. The block's sliding pair is ``(links[1], guide.link)``.
         """
         new = self._copy()
-        rod, block = links
-        new._need_point(pin)
+        rod, block = _two("links", links)
+        new._need_point(pin, "pin")
         new._need_guide(guide)
         r = positive_length(f"length of {rod}", length)
-        new._add_link(rod)
-        new._add_link(block)
-        new._add_point(joint, rod)
+        new._add_link(rod, "links[0]")
+        new._add_link(block, "links[1]")
+        new._add_point(joint, rod, "joint")
         return new._push("rrp", f"RRP {rod}-{block}", (rod, block), pin=pin, guide=guide, joint=joint,
                          length=r, branch=branch_sign(branch))
 
@@ -283,12 +297,13 @@ class Linkage:
         block from pins[1], x along the guide. The sliding pair is ``(links[1], links[0])``.
         """
         new = self._copy()
-        gl, block = links
-        for p in pins:
-            new._need_point(p)
+        gl, block = _two("links", links)
+        pins = _two("pins", pins)
+        for k, p in enumerate(pins):
+            new._need_point(p, f"pins[{k}]")
         e = real_number("offset", offset)
-        new._add_link(gl)
-        new._add_link(block)
+        new._add_link(gl, "links[0]")
+        new._add_link(block, "links[1]")
         return new._push("rpr", f"RPR {gl}-{block}", (gl, block), pins=tuple(pins), offset=e,
                          branch=branch_sign(branch))
 
@@ -299,11 +314,11 @@ class Linkage:
         ``(links[0], guides[0].link)`` and ``(links[1], guides[1].link)``.
         """
         new = self._copy()
-        b1, b2 = links
-        g1, g2 = (new._need_guide(g) for g in guides)
-        new._add_link(b1)
-        new._add_link(b2)
-        new._add_point(joint, b1)
+        b1, b2 = _two("links", links)
+        g1, g2 = (new._need_guide(g, f"guides[{k}]") for k, g in enumerate(_two("guides", guides)))
+        new._add_link(b1, "links[0]")
+        new._add_link(b2, "links[1]")
+        new._add_point(joint, b1, "joint")
         return new._push("prp", f"PRP {b1}-{b2}", (b1, b2), guides=(g1, g2), joint=joint)
 
     def rpp(self, links, *, pin, guide, angle, point, offset=0.0):
@@ -317,16 +332,16 @@ class Linkage:
         ``(links[0], links[1])``.
         """
         new = self._copy()
-        pinned, sliding = links
-        new._need_point(pin)
+        pinned, sliding = _two("links", links)
+        new._need_point(pin, "pin")
         new._need_guide(guide)
         gam = real_number("angle", angle)
         offset = real_number("offset", offset)
         if abs(math.sin(gam)) < 1e-12:
             raise ValueError(f"Expected an `angle` not parallel to the guide, got {angle!r}")
-        new._add_link(pinned)
-        new._add_link(sliding)
-        new._add_point(point, sliding)
+        new._add_link(pinned, "links[0]")
+        new._add_link(sliding, "links[1]")
+        new._add_point(point, sliding, "point")
         return new._push("rpp", f"RPP {pinned}-{sliding}", (pinned, sliding), pin=pin, guide=guide,
                          angle=gam, point=point, offset=float(offset))
 
@@ -842,8 +857,7 @@ class LinkageSolution:
 
     def direction(self, link):
         """Unit complex direction of ``link``'s frame x axis (no trigonometry)."""
-        if link not in self._dirs:
-            raise ValueError(f"Expected `link` among {sorted(self._dirs)}, got {link!r}")
+        known_name("link", link, tuple(self._dirs))
         return self._dirs[link]
 
     def __setattr__(self, name, value):

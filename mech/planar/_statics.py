@@ -68,7 +68,7 @@ def as_linkage(mechanism):
                 .crank("crank", pivot="A", tip="B", length=mechanism.a)
                 .rrp(("rod", "slider"), pin="B", guide=Guide(GROUND, complex(0.0, mechanism.e), 0.0),
                      joint="C", length=mechanism.b, branch=mechanism.branch))
-    raise ValueError(f"Expected a FourBar or a SliderCrank, got {type(mechanism).__name__}")
+    raise InputTypeError(f"Expected `mechanism` to be a FourBar or a SliderCrank, got {type(mechanism).__name__}")
 
 
 # ----------------------------------------------------------------------------- the pairs
@@ -301,6 +301,8 @@ class StaticForces:
 def _load_table(sol, forces, couples):
     lk = sol.linkage
     pts, links = lk._points, set(lk.links)
+    if forces is not None and (isinstance(forces, (str, bytes)) or not hasattr(forces, "__iter__")):
+        raise InputTypeError(f"Expected `forces` to be a mapping of points to forces, got {forces!r}")
     items = forces.items() if hasattr(forces, "items") else (forces or ())
     out_f = []
     for key, f in items:

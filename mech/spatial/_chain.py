@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._errors import InputTypeError
 from mech._generated import open_chains as _gen
 from mech._pose import Pose
 from mech._validate import finite_array, nonnegative_int, positive_length, real_number
@@ -119,9 +120,11 @@ class OpenChain:
     """
 
     def __init__(self, joints):
+        if isinstance(joints, (str, bytes)) or not hasattr(joints, "__iter__"):
+            raise InputTypeError(f"Expected `joints` to be a non-empty sequence of Joint, got {joints!r}")
         joints = tuple(joints)
         if not joints or not all(isinstance(j, Joint) for j in joints):
-            raise ValueError(f"Expected a non-empty sequence of Joint, got {joints!r}")
+            raise ValueError(f"Expected `joints` to be a non-empty sequence of Joint, got {joints!r}")
         self.joints = joints
         self.dof = sum(j.dof for j in joints)
 
