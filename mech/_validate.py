@@ -9,6 +9,13 @@ sequences of those. They reject, naming the argument and showing the value:
 - NaN and infinities (unless a caller explicitly allows them);
 - a wrong shape where a shape is fixed.
 
+Planar points are complex by the package's convention: `planar_point` and `planar_points`
+accept real and complex numbers but reject the rest as above (NaN or infinity in either
+part included). Integers (`integer`, `nonnegative_int`), flags (`bool_flag`), the branch
+sign (`branch_sign`) and string options (`option`) accept exactly their type: ``True`` is
+not 1, ``1`` is not ``True`` and ``2.0`` is not an integer. Objects and names (a solved
+linkage, a point name) are checked by `instance` and `known_name`.
+
 A wrong *type* raises :class:`mech.InputTypeError`, which is both a ``TypeError`` and a
 ``ValueError``; a wrong *value* raises ``ValueError``. So ``except ValueError`` catches every
 bad input, and ``except TypeError`` catches exactly the wrong types.

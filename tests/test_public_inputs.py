@@ -908,3 +908,72 @@ def test_random_bad_values_rejected_by_name(data):
     label, value, texts = data.draw(_random_bad(kind), label="bad value")
     failure = _check(key, slot, label, value, texts)
     assert failure is None, failure
+
+
+# ----------------------------------------------------------------------------- the reported cases
+def test_fourbar_strings_and_booleans_rejected():
+    """Issue 11, item 9: ``FourBar("10", "40", "30", True)`` built a four-bar with d = 1."""
+    with pytest.raises(mech.InputTypeError, match="Expected `a`.*'10'"):
+        pl.FourBar("10", 40, 30, 35)
+    with pytest.raises(mech.InputTypeError, match="Expected `d`.*True"):
+        pl.FourBar(10, 40, 30, True)
+    with pytest.raises(mech.InputTypeError, match="Expected `coupler`.*True"):
+        pl.FourBar(10, 40, 30, 35, coupler=(True, 0.0))
+
+
+def test_friction_angle_complex_named():
+    """Issue 11, item 8: ``friction_angle(1+1j)`` leaked "float() argument must be ..."."""
+    with pytest.raises(mech.InputTypeError, match=r"Expected `mu`.*\(1\+1j\)"):
+        pl.friction_angle(1 + 1j)
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, complex(math.nan, 0.0), complex(0.0, -math.inf)])
+def test_linkage_ground_rejects_nonfinite(bad):
+    """Issue 11, item 7: NaN or infinite ground points were accepted."""
+    with pytest.raises(ValueError, match=r"Expected finite `ground\['D'\]`"):
+        pl.Linkage({"A": 0, "D": bad})
+    with pytest.raises(ValueError, match="Expected finite `at`"):
+        pl.Linkage({"A": 0}).ground("D", bad)
+
+
+@pytest.mark.parametrize("make", [sph.Dual, sph.dual])
+@pytest.mark.parametrize("real, dual, name", [(math.nan, 0.0, "real"), (0.5, math.inf, "dual"),
+                                              (0.5, -math.inf, "dual")])
+def test_dual_rejects_nonfinite(make, real, dual, name):
+    """Issue 11, item 7: NaN or infinite parts of `Dual` and `dual` were accepted."""
+    with pytest.raises(ValueError, match=f"Expected finite `{name}`"):
+        make(real, dual)
+
+
+@pytest.mark.parametrize("bad", ["0.5", True, 0.5 + 0j, None])
+def test_dual_rejects_wrong_types(bad):
+    with pytest.raises(mech.InputTypeError, match="Expected `real`"):
+        sph.Dual(bad, 1.0)
+    with pytest.raises(mech.InputTypeError, match="Expected `dual`"):
+        sph.dual(0.5, bad)
+
+
+def test_dual_arithmetic_still_carries_nan():
+    """The check is on the user's parts only: arithmetic may still produce NaN (0/0)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q = sph.Dual(0.0, 1.0) / sph.Dual(0.0, 0.0)
+    assert np.isnan(q.real_part)
+
+
+def test_planar_point_accepts_real_and_complex():
+    from mech._validate import planar_point, planar_points
+
+    assert planar_point("at", 3) == 3 + 0j
+    assert planar_point("at", np.float64(2.5)) == 2.5 + 0j
+    assert planar_point("at", 1 - 2j) == 1 - 2j
+    np.testing.assert_array_equal(planar_points("at", [1, 2j, 3 + 4j]), np.array([1, 2j, 3 + 4j]))
+    with pytest.raises(mech.InputTypeError, match="Expected `at`.*True"):
+        planar_points("at", [1.0, True])
+    with pytest.raises(ValueError, match="Expected `at` to be a single point"):
+        planar_point("at", [1, 2])
+
+
+@pytest.mark.parametrize("value, message", [(1, "1"), (1.0, "1.0"), ("yes", "'yes'"), (None, "None")])
+def test_strict_must_be_a_bool(value, message):
+    with pytest.raises(mech.InputTypeError, match=f"Expected `strict` to be True or False, got {message}"):
+        pl.FourBar(10, 40, 30, 35).solve(0.5, strict=value)
