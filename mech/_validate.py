@@ -69,6 +69,10 @@ def _kind_name(arr):
             "M": "datetime", "m": "timedelta", "V": "structured"}.get(arr.dtype.kind, str(arr.dtype))
 
 
+#: The largest count of samples or points a public function accepts: an array beyond it
+#: would not fit comfortably in memory, and NumPy's own error would not name the argument.
+MAX_COUNT = 10**7
+
 _NONE_BAD = object()
 
 

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import branch_sign, integer, planar_points, positive_length, real_number
+from mech._validate import MAX_COUNT, branch_sign, integer, planar_points, positive_length, real_number
 from mech.planar._fourbar import FourBar
 
 __all__ = ["CouplerDashes", "coupler_dashes"]
@@ -85,7 +85,7 @@ def coupler_dashes(a, b, c, d, coupler, *, n=72, branch=1, start=0.0):
     """
     lengths = [positive_length(name, v) for name, v in zip("abcd", (a, b, c, d))]
     branch = branch_sign(branch)
-    n = integer("n", n, minimum=3)
+    n = integer("n", n, minimum=3, maximum=MAX_COUNT)
     start = real_number("start", start)
     w = planar_points("coupler", coupler)
     theta = start + np.linspace(0.0, 2 * np.pi, n + 1)

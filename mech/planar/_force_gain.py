@@ -137,9 +137,7 @@ def mechanical_advantage(solution, input, output, *, method="velocities"):
 
 
 def _driver(driver, allowed):
-    if driver not in allowed:
-        raise ValueError(f"Expected `driver` in {allowed}, got {driver!r}")
-    return driver
+    return option("driver", driver, allowed)
 
 
 def fourbar_mechanical_advantage(a, b, c, d, theta, *, branch=1, driver="crank"):

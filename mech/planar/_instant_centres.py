@@ -219,7 +219,7 @@ def _meet(lines):
 
 def _labels(links):
     if isinstance(links, (bool, np.bool_, str, bytes, numbers.Number)) or not hasattr(links, "__iter__"):
-        return tuple(range(1, integer("links", links, minimum=2) + 1))
+        return tuple(range(1, integer("links", links, minimum=2, maximum=10**4) + 1))
     labels = tuple(links)
     if len(labels) < 2 or len(set(labels)) != len(labels):
         raise ValueError(f"Expected `links` to be at least two distinct link labels, got {links!r}")

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._errors import InputTypeError
-from mech._validate import instance, integer, known_name, planar_point, positive_length, real_number
+from mech._validate import MAX_COUNT, instance, integer, known_name, planar_point, positive_length, real_number
 from mech.planar._linkage import Guide, Linkage
 
 __all__ = [
@@ -484,7 +484,7 @@ def step_ratio(solution, *, axis=-1):
     """
     if not hasattr(getattr(solution, "points", None), "items"):    # any solved linkage with points
         raise InputTypeError(f"Expected `solution` to be a LinkageSolution, got {solution!r}")
-    axis = integer("axis", axis)
+    axis = integer("axis", axis, minimum=-64, maximum=63)
     out = {}
     for name, z in solution.points.items():
         step = np.abs(np.diff(z, axis=axis))
@@ -548,7 +548,7 @@ def ram_stroke(linkage, point="F", *, direction=1.0 + 0.0j, samples=3600):
     if e == 0:
         raise ValueError(f"Expected a non-zero `direction`, got {direction!r}")
     e = e / abs(e)
-    samples = integer("samples", samples, minimum=3)
+    samples = integer("samples", samples, minimum=3, maximum=MAX_COUNT)
     th = 2.0 * math.pi * np.arange(samples) / samples
     sol = linkage.solve(th)
     if not np.all(sol.valid):

@@ -16,7 +16,7 @@ import numpy as np
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import assur_groups as _g
 from mech._validate import (
-    bool_flag, branch_sign, finite_array, integer, known_name, nonnegative_int, planar_point, positive_length,
+    MAX_COUNT, bool_flag, branch_sign, finite_array, integer, known_name, nonnegative_int, planar_point, positive_length,
     real_number,
 )
 
@@ -702,7 +702,7 @@ class Linkage:
         if driver not in self._drivers:
             raise ValueError(f"Expected `driver` among {list(self._drivers)}, got {driver!r}")
         start, end = real_number("start", start), real_number("end", end)
-        samples = integer("samples", samples, minimum=2)
+        samples = integer("samples", samples, minimum=2, maximum=MAX_COUNT)
         if others is not None and not hasattr(others, "items"):
             raise InputTypeError(f"Expected `others` to be a mapping of drivers to inputs, got {others!r}")
         fixed = dict(others or {})

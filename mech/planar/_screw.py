@@ -53,8 +53,7 @@ def lead_angle(pitch, d2, starts=1):
     >>> round(float(np.degrees(lead_angle(4.0, 22.0))), 4)
     3.3123
     """
-    if isinstance(starts, bool) or not isinstance(starts, (int, np.integer)) or starts < 1:
-        raise ValueError(f"Expected `starts` to be a positive integer, got {starts!r}")
+    starts = integer("starts", starts, minimum=1, maximum=10**6)
     p, d = _positive("pitch", pitch), _positive("d2", d2)
     return _out(screw_geometry(starts * p, d, 0.0, 0.0)[0])
 
@@ -218,7 +217,7 @@ class ScrewJack:
         for name in ("d2", "pitch"):
             object.__setattr__(self, name, positive_length(name, getattr(self, name)))
         object.__setattr__(self, "mu", nonnegative_number("mu", self.mu))
-        object.__setattr__(self, "starts", integer("starts", self.starts, minimum=1))
+        object.__setattr__(self, "starts", integer("starts", self.starts, minimum=1, maximum=10**6))
         object.__setattr__(self, "flank_angle", real_number("flank_angle", self.flank_angle))
         if self.collar is not None:
             outer, inner = real_tuple("collar", self.collar, 2)
