@@ -17,3 +17,11 @@ class InputTypeError(TypeError, ValueError):
     It is both a ``TypeError`` and a ``ValueError``, so ``except ValueError`` still catches
     every bad input. The message names the argument and shows the value.
     """
+
+
+class UnknownKeyError(KeyError, ValueError):
+    """A key names nothing known: a ``KeyError`` for mapping protocols, and a ``ValueError``
+    like every other bad input (private; the message names the key)."""
+
+    def __str__(self):
+        return str(self.args[0]) if self.args else ""

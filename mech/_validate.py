@@ -9,6 +9,13 @@ sequences of those. They reject, naming the argument and showing the value:
 - NaN and infinities (unless a caller explicitly allows them);
 - a wrong shape where a shape is fixed.
 
+Planar points are complex by the package's convention: `planar_point` and `planar_points`
+accept real and complex numbers but reject the rest as above (NaN or infinity in either
+part included). Integers (`integer`, `nonnegative_int`), flags (`bool_flag`), the branch
+sign (`branch_sign`) and string options (`option`) accept exactly their type: ``True`` is
+not 1, ``1`` is not ``True`` and ``2.0`` is not an integer. Objects and names (a solved
+linkage, a point name) are checked by `instance` and `known_name`.
+
 A wrong *type* raises :class:`mech.InputTypeError`, which is both a ``TypeError`` and a
 ``ValueError``; a wrong *value* raises ``ValueError``. So ``except ValueError`` catches every
 bad input, and ``except TypeError`` catches exactly the wrong types.
@@ -32,6 +39,14 @@ __all__ = [
     "motion_inputs",
     "vector3",
     "bool_flag",
+    "instance",
+    "integer",
+    "known_name",
+    "nonnegative_number",
+    "option",
+    "real_tuple",
+    "planar_point",
+    "planar_points",
 ]
 
 
@@ -54,11 +69,68 @@ def _kind_name(arr):
             "M": "datetime", "m": "timedelta", "V": "structured"}.get(arr.dtype.kind, str(arr.dtype))
 
 
-def _first_bad_object(arr):
+#: The largest count of samples or points a public function accepts: an array beyond it
+#: would not fit comfortably in memory, and NumPy's own error would not name the argument.
+MAX_COUNT = 10**7
+
+_NONE_BAD = object()
+
+
+def _first_bad_object(arr, allowed=numbers.Real):
     for item in arr.ravel():
-        if isinstance(item, (bool, np.bool_)) or not isinstance(item, numbers.Real):
+        if isinstance(item, (bool, np.bool_)) or not isinstance(item, allowed):
             return item
-    return None
+    return _NONE_BAD
+
+
+def _first_bool(value):
+    """The first boolean inside nested lists and tuples (NumPy would turn it into 1.0)."""
+    if isinstance(value, (bool, np.bool_)):
+        return value
+    if isinstance(value, (list, tuple)):
+        for item in value:
+            found = _first_bool(item)
+            if found is not _NONE_BAD:
+                return found
+    return _NONE_BAD
+
+
+def _first_bad_leaf(value, allowed):
+    """The first entry of nested lists and tuples that is not an ``allowed`` number."""
+    if isinstance(value, (list, tuple)):
+        for item in value:
+            found = _first_bad_leaf(item, allowed)
+            if found is not _NONE_BAD:
+                return found
+        return _NONE_BAD
+    if isinstance(value, np.ndarray) and value.dtype.kind in "iufc":
+        return _NONE_BAD
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, allowed):
+        return value
+    return _NONE_BAD
+
+
+def _unreadable(name, value, exc, what, allowed):
+    """The error for a value NumPy cannot read as an array (ragged lists, odd objects)."""
+    bad = _first_bad_leaf(value, allowed)
+    shown = f"{bad!r} in {_show(value)}" if bad is not _NONE_BAD else f"{_show(value)} ({exc})"
+    return InputTypeError(f"Expected `{name}` to be {what}, got {shown}")
+
+
+def _first_text(arr, value):
+    """The value shown for a string array: its first string that is not a number, in context."""
+    if arr.dtype.kind not in "US" or arr.ndim == 0:
+        return _show(value)
+    for item in np.asarray(value, dtype=object).ravel():
+        if isinstance(item, (str, bytes)):
+            return f"{item!r} in {_show(value)}"
+    return _show(value)
+
+
+def _first_complex(arr):
+    flat = arr.ravel()
+    nonreal = np.flatnonzero(flat.imag != 0)
+    return complex(flat[nonreal[0]] if nonreal.size else flat[0]) if flat.size else None
 
 
 def real_array(name, value, *, finite=True):
@@ -73,11 +145,18 @@ def real_array(name, value, *, finite=True):
     try:
         arr = np.asarray(value)
     except Exception as exc:
-        raise InputTypeError(f"Expected `{name}` to be real numbers, got {_show(value)} ({exc})") from None
+        raise _unreadable(name, value, exc, "real numbers", numbers.Real) from None
     kind = arr.dtype.kind
+    bad = _first_bool(value)
+    if bad is not _NONE_BAD:
+        raise InputTypeError(f"Expected `{name}` to be real numbers, got {bad!r} in {_show(value)}")
+    if kind == "c":
+        raise InputTypeError(
+            f"Expected `{name}` to be real numbers, got a complex value {_first_complex(arr)!r} in {_show(value)}"
+        )
     if kind == "O":
         bad = _first_bad_object(arr)
-        if bad is not None or arr.size == 0 and arr.ndim == 0:
+        if bad is not _NONE_BAD:
             raise InputTypeError(f"Expected `{name}` to be real numbers, got {bad!r} in {_show(value)}")
         try:
             arr = arr.astype(float)
@@ -85,7 +164,7 @@ def real_array(name, value, *, finite=True):
             raise InputTypeError(f"Expected `{name}` to be real numbers, got {_show(value)}") from None
     elif kind not in "iuf":
         raise InputTypeError(
-            f"Expected `{name}` to be real numbers, got a {_kind_name(arr)} value {_show(value)}"
+            f"Expected `{name}` to be real numbers, got a {_kind_name(arr)} value {_first_text(arr, value)}"
         )
     arr = np.asarray(arr, dtype=float)
     if finite and not np.all(np.isfinite(arr)):
@@ -122,6 +201,22 @@ def positive_length(name, value):
     return x
 
 
+def nonnegative_number(name, value):
+    """Return ``value`` as a float after checking that it is finite and >= 0 (a tolerance)."""
+    x = _scalar(name, value)
+    if not (np.isfinite(x) and x >= 0.0):
+        raise ValueError(f"Expected `{name}` >= 0, got {x!r}")
+    return x
+
+
+def real_tuple(name, value, size):
+    """Return ``value`` as a tuple of ``size`` finite floats, e.g. a coupler point ``(p, q)``."""
+    arr = finite_array(name, value)
+    if arr.shape != (size,):
+        raise ValueError(f"Expected `{name}` to be {size} numbers, got shape {arr.shape}: {_show(value)}")
+    return tuple(float(x) for x in arr)
+
+
 def arc(name, value):
     """Return ``value`` as a float after checking that it is an arc in (0, pi) (a sphere)."""
     x = real_number(name, value)
@@ -149,15 +244,18 @@ def vector3(name, value):
 
 def branch_sign(value, name="branch"):
     """Return ``value`` as the int +1 or -1."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, numbers.Real)) \
-            or value not in (1, -1):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, numbers.Real)):
+        raise InputTypeError(f"Expected `{name}` to be +1 or -1, got {value!r}")
+    if value not in (1, -1):
         raise ValueError(f"Expected `{name}` to be +1 or -1, got {value!r}")
     return int(value)
 
 
 def nonnegative_int(name, value, maximum):
     """Return ``value`` as an int in ``[0, maximum]``."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) or not 0 <= value <= maximum:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputTypeError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
+    if not 0 <= value <= maximum:
         raise ValueError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
     return int(value)
 
@@ -167,6 +265,90 @@ def bool_flag(name, value):
     if not isinstance(value, (bool, np.bool_)):
         raise InputTypeError(f"Expected `{name}` to be True or False, got {value!r}")
     return bool(value)
+
+
+def integer(name, value, *, minimum=None, maximum=None):
+    """Return ``value`` as an int after checking its type and the bounds given.
+
+    Accepts Python and NumPy integers only: booleans, floats (even ``2.0``), strings and
+    other objects raise :class:`~mech.InputTypeError`; a value out of bounds raises
+    ``ValueError``.
+    """
+    bounds = {(None, None): "", (None, maximum): f" <= {maximum}", (minimum, None): f" >= {minimum}"}.get(
+        (minimum, maximum), f" in [{minimum}, {maximum}]")
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputTypeError(f"Expected `{name}` to be an integer{bounds}, got {_show(value)}")
+    if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
+        raise ValueError(f"Expected `{name}` to be an integer{bounds}, got {value!r}")
+    return int(value)
+
+
+def option(name, value, allowed):
+    """Return ``value`` after checking that it is one of the strings ``allowed``."""
+    if not isinstance(value, str) or value not in allowed:
+        choices = ", ".join(repr(a) for a in allowed)
+        raise ValueError(f"Expected `{name}` to be one of {choices}, got {_show(value)}")
+    return value
+
+
+def instance(name, value, cls):
+    """Return ``value`` after checking that it is a ``cls`` (e.g. a solved linkage)."""
+    if not isinstance(value, cls):
+        raise InputTypeError(f"Expected `{name}` to be a {cls.__name__}, got {_show(value)}")
+    return value
+
+
+def known_name(name, value, names):
+    """Return ``value`` after checking that it is one of ``names`` (point or link names)."""
+    try:
+        known = value in names
+    except TypeError:            # an unhashable value is no name
+        known = False
+    if not known:
+        listed = ", ".join(repr(n) for n in names)
+        raise ValueError(f"Expected `{name}` among {listed}, got {_show(value)}")
+    return value
+
+
+def planar_points(name, value):
+    """Return ``value`` as a complex array of finite planar points ``x + 1j*y``.
+
+    Planar points are complex by the package's convention, so real and complex numbers are
+    both accepted; booleans, strings, ``None``, other objects, NaN and infinities (in
+    either part) are rejected by name.
+    """
+    if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
+        raise InputTypeError(f"Expected `{name}` to be a point x + 1j*y, got {value!r}")
+    try:
+        arr = np.asarray(value)
+    except Exception as exc:
+        raise _unreadable(name, value, exc, "points x + 1j*y", numbers.Complex) from None
+    bad = _first_bool(value)
+    if bad is not _NONE_BAD:
+        raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {bad!r} in {_show(value)}")
+    if arr.dtype.kind == "O":
+        bad = _first_bad_object(arr, numbers.Complex)
+        if bad is not _NONE_BAD or arr.ndim == 0:
+            bad = value if bad is _NONE_BAD else bad
+            raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {bad!r} in {_show(value)}")
+        arr = arr.astype(complex)
+    elif arr.dtype.kind not in "iufc":
+        raise InputTypeError(
+            f"Expected `{name}` to be points x + 1j*y, got a {_kind_name(arr)} value {_first_text(arr, value)}"
+        )
+    arr = np.asarray(arr, dtype=complex)
+    finite = np.isfinite(arr)
+    if not np.all(finite):
+        raise ValueError(f"Expected finite `{name}`, got {arr[~finite].ravel()[0]!r}")
+    return arr
+
+
+def planar_point(name, value):
+    """Return ``value`` as one finite planar point, a Python complex (see `planar_points`)."""
+    arr = planar_points(name, value)
+    if arr.ndim != 0:
+        raise ValueError(f"Expected `{name}` to be a single point, got shape {arr.shape}: {_show(value)}")
+    return complex(arr)
 
 
 def motion_inputs(name, angle, order, omega, alpha):

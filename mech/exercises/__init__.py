@@ -53,9 +53,9 @@ def get(number):
     >>> get("2-9")
     Traceback (most recent call last):
     ...
-    ValueError: Expected an exercise number among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, got '2-9'
+    ValueError: Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, got '2-9'
     """
-    key = str(number).strip()
+    key = number.strip() if isinstance(number, str) else None
     if key not in EXERCISES:
-        raise ValueError(f"Expected an exercise number among {', '.join(EXERCISES)}, got {number!r}")
+        raise ValueError(f"Expected `number` among {', '.join(EXERCISES)}, got {number!r}")
     return EXERCISES[key]

@@ -15,6 +15,9 @@ from typing import Any, Callable
 
 import numpy as np
 
+from mech._errors import InputTypeError
+from mech._validate import integer, real_number
+
 __all__ = ["Parameter", "Interval", "Result", "Part", "Solution", "Exercise"]
 
 
@@ -159,6 +162,8 @@ class Solution:
         The title is a heading of ``heading_level`` (1 to 6), or bold text when None (the
         default, safe inside a book page's output).
         """
+        if heading_level is not None:
+            heading_level = integer("heading_level", heading_level, minimum=1, maximum=6)
         title = f"Solution of exercise {self.number}"
         title = f"{'#' * heading_level} {title}" if heading_level else f"**{title}**"
         given = ", ".join(
@@ -255,7 +260,7 @@ class Exercise:
                 f"Expected parameters of exercise {self.number} among {', '.join(out)}, "
                 f"got {unknown[0]!r}"
             )
-        out.update({k: float(v) for k, v in given.items()})
+        out.update({k: real_number(k, v) for k, v in given.items()})
         return out
 
     def statement_text(self, params=None, **overrides):
@@ -270,7 +275,14 @@ class Exercise:
 
     def variant(self, rng=None, *, max_tries=1000):
         """Draw other valid givens (a dict) from ``rng`` (a Generator, a seed, or None)."""
-        rng = np.random.default_rng(rng)
+        max_tries = integer("max_tries", max_tries, minimum=1)
+        if isinstance(rng, (bool, np.bool_, float, complex, str, bytes)):
+            raise InputTypeError(f"Expected `rng` to be a Generator, an integer seed or None, got {rng!r}")
+        try:
+            rng = np.random.default_rng(rng)
+        except (TypeError, ValueError) as exc:
+            raise InputTypeError(f"Expected `rng` to be a Generator, an integer seed or None, got {rng!r} "
+                                 f"({exc})") from None
         for _ in range(max_tries):
             candidate = self.params(self.sampler(rng))
             try:
@@ -278,4 +290,5 @@ class Exercise:
             except ValueError:
                 continue
             return candidate
-        raise RuntimeError(f"No valid variant of exercise {self.number} in {max_tries} draws")
+        raise ValueError(f"Expected a valid variant of exercise {self.number} within `max_tries` = "
+                         f"{max_tries} draws, got none")

@@ -35,7 +35,8 @@ from __future__ import annotations
 import math
 
 
-from mech._validate import positive_length
+from mech._errors import InputTypeError
+from mech._validate import instance, positive_length
 from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
 from mech.planar import FourBar, SliderCrank, grashof
 from mech.planar import _grashof
@@ -66,6 +67,9 @@ _DEG = math.pi / 180.0
 
 def merge_intervals(intervals):
     """Sort intervals and join those that touch, e.g. ``(0, 1] ∪ (1, 2)`` into ``(0, 2)``."""
+    if isinstance(intervals, (str, bytes)) or not hasattr(intervals, "__iter__"):
+        raise InputTypeError(f"Expected `intervals` to be a sequence of Interval, got {intervals!r}")
+    intervals = [instance(f"intervals[{k}]", iv, Interval) for k, iv in enumerate(intervals)]
     merged = []
     for iv in sorted(intervals, key=lambda v: (v.low, not v.closed_low)):
         if merged:

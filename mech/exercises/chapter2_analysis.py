@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from mech._validate import positive_length
+from mech._validate import branch_sign, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import (FourBar, Guide, GuideBar, Linkage, grashof, higher_pair, instant_centres, omega_ratio,
                          time_ratio)
@@ -172,7 +172,7 @@ def linkage_2_4(params=None, *, h=None):
     """
     p = EXERCISE_2_4.params(params)
     a, b, c, d, de, ef, h0 = _check_2_4(p)
-    h = h0 if h is None else float(h)
+    h = h0 if h is None else real_number("h", h)
     return (Linkage({"A": 0.0, "D": d})
             .crank("crank", pivot="A", tip="B", length=a)
             .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(b, c), branch=1)
@@ -316,13 +316,14 @@ def linkage_2_5(params=None, *, y=0.0):
     """
     p = EXERCISE_2_5.params(params)
     ab, ac, cd, de = _check_2_5(p)
-    if abs(float(y)) >= de - cd:
+    y = real_number("y", y)
+    if abs(y) >= de - cd:
         raise ValueError(f"Expected |`y`| < DE - CD = {de - cd!r}, got {y!r}")
     return (Linkage({"C": 0.0, "A": 1j * ac})
             .crank("crank", pivot="A", tip="B", length=ab)
             .rpr(("bar", "block"), pins=("C", "B"), offset=0.0, branch=1)
             .point("D", link="bar", at=-cd)
-            .rrp(("rod", "slider"), pin="D", guide=Guide("ground", through=1j * float(y), angle=0.0),
+            .rrp(("rod", "slider"), pin="D", guide=Guide("ground", through=1j * y, angle=0.0),
                  joint="E", length=de, branch=1))
 
 
@@ -568,7 +569,7 @@ def cam_2_10(params=None, *, side=-1):
     """
     p = EXERCISE_2_10.params(params)
     r, oa, ac, phi, _ = _check_2_10(p)
-    side = 1 if side > 0 else -1
+    side = branch_sign(side, "side")
     A, C = 0j, complex(ac)
     O = complex(oa * np.exp(1j * phi))
     dist = abs(O - C)

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import branch_sign, finite_array, positive_length
+from mech._validate import MAX_COUNT, branch_sign, integer, planar_points, positive_length, real_number
 from mech.planar._fourbar import FourBar
 
 __all__ = ["CouplerDashes", "coupler_dashes"]
@@ -85,13 +85,9 @@ def coupler_dashes(a, b, c, d, coupler, *, n=72, branch=1, start=0.0):
     """
     lengths = [positive_length(name, v) for name, v in zip("abcd", (a, b, c, d))]
     branch = branch_sign(branch)
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
-        raise ValueError(f"Expected `n` to be an integer >= 3, got {n!r}")
-    start = float(finite_array("start", start))
-    w = np.asarray(coupler, dtype=complex)
-    if not np.all(np.isfinite(w)):
-        bad = complex(w[~np.isfinite(w)].ravel()[0])
-        raise ValueError(f"Expected finite `coupler`, got {bad!r}")
+    n = integer("n", n, minimum=3, maximum=MAX_COUNT)
+    start = real_number("start", start)
+    w = planar_points("coupler", coupler)
     theta = start + np.linspace(0.0, 2 * np.pi, n + 1)
     flat = w.reshape(-1)
     points = np.empty((flat.size, n + 1), dtype=complex)

@@ -6,7 +6,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import instant_centres as _gen
-from mech._validate import finite_array, positive_length
+from mech._validate import finite_array, instance, integer, positive_length
+from mech.planar._fourbar import FourBar
 
 __all__ = ["CentrodeSegment", "CouplerCentrodes", "coupler_centrodes"]
 
@@ -58,6 +59,7 @@ class CouplerCentrodes:
         Returns ``B + moving * exp(i phi)`` at that pose: it touches the fixed centrode
         at that pose's P24.
         """
+        index = integer("index", index, minimum=-self.phi.size, maximum=self.phi.size - 1)
         return self.B[index] + self.moving * np.exp(1j * self.phi[index])
 
     def segments(self, limit):
@@ -133,6 +135,7 @@ def coupler_centrodes(fourbar, theta):
     >>> bool(abs(abs(cen.moving[0]) - abs(cen.fixed[0] - cen.B[0])) < 1e-9)
     True
     """
+    instance("fourbar", fourbar, FourBar)
     theta = finite_array("theta", theta)
     pose = fourbar.solve(theta)
     B, C = pose.B, pose.C

@@ -7,7 +7,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import cognates as _gen
-from mech._validate import branch_sign, finite_array, positive_length
+from mech._validate import bool_flag, branch_sign, finite_array, instance, planar_points, positive_length
 from mech.planar._fourbar import FourBar
 from mech._pose import Pose
 
@@ -93,10 +93,14 @@ class Cognate:
     @property
     def pivots(self):
         """Crank pivot and rocker pivot in the original frame, complex."""
-        return self.origin, self.place(self.fourbar.d)
+        return self.origin, self._place(self.fourbar.d)
 
     def place(self, z):
         """Map points of the cognate's own frame to the original frame."""
+        return self._place(planar_points("z", z))
+
+    def _place(self, z):
+        # unchecked: the poses solved below carry NaN where they cannot be assembled
         return self.origin + self.rotation * np.asarray(z)
 
     def solve(self, theta, *, branch=None, strict=False):
@@ -126,6 +130,7 @@ class Cognate:
         >>> pose.P.shape
         (2,)
         """
+        strict = bool_flag("strict", strict)
         fb = self.fourbar
         if branch is not None and branch_sign(branch) != fb.branch:
             fb = FourBar(fb.a, fb.b, fb.c, fb.d, branch=branch, coupler=fb.coupler)
@@ -133,8 +138,8 @@ class Cognate:
         if strict and not np.all(own.valid):
             bad = float(np.broadcast_to(own.theta, own.valid.shape)[~own.valid][0])
             raise AssemblyError(f"Cannot assemble cognate {self.name} at theta = {bad!r}")
-        fields = {"B": self.place(own.B)[()], "C": self.place(own.C)[()],
-                  "P": self.place(own.P)[()], "valid": own.valid, "theta": own.theta}
+        fields = {"B": self._place(own.B)[()], "C": self._place(own.C)[()],
+                  "P": self._place(own.P)[()], "valid": own.valid, "theta": own.theta}
         return CognatePose(0, fields)
 
     def __repr__(self):
@@ -158,6 +163,7 @@ class Cognates:
     """
 
     def __init__(self, original):
+        instance("original", original, FourBar)
         a, b, c, d = original.a, original.b, original.c, original.d
         p, q = original.coupler
         beta = original.branch

@@ -4,8 +4,8 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import special_mechanisms as _gen
-from mech._validate import finite_array, positive_length, real_number
-from mech._pose import Pose, mask_singular_rates
+from mech._validate import bool_flag, finite_array, positive_length, real_tuple
+from mech._pose import mask_singular_rates, Pose
 from mech.planar._special import _finish, _inputs
 
 __all__ = [
@@ -94,11 +94,7 @@ class EllipticTrammel:
 
     def __init__(self, L, *, point=(0.0, 0.0)):
         self._L = positive_length("L", L)
-        try:
-            p, q = point
-        except (TypeError, ValueError):
-            raise ValueError(f"Expected `point` = (p, q), got {point!r}") from None
-        self._p, self._q = real_number("p", p), real_number("q", q)
+        self._p, self._q = real_tuple("point", point, 2)
 
     @classmethod
     def from_crank(cls, a, *, point=(0.0, 0.0)):
@@ -150,6 +146,7 @@ class EllipticTrammel:
         >>> complex(pose.B), complex(pose.aB), float(pose.omega_coupler)
         ((2+0j), (-18+0j), -3.0)
         """
+        strict = bool_flag("strict", strict)
         order, theta, omega, alpha = _inputs(order, theta, omega, alpha)
         args = (self._L, self._p, self._q, theta)
         B, C, M, P, phi, I = _gen.trammel_position(*args)
@@ -228,6 +225,7 @@ class ScotchYoke:
 
         Same arguments as `EllipticTrammel.solve`; returns a `ScotchYokePose`.
         """
+        strict = bool_flag("strict", strict)
         order, theta, omega, alpha = _inputs(order, theta, omega, alpha)
         x, B = _gen.scotch_yoke_position(self._a, theta)
         fields = {"theta": theta, "valid": np.ones(np.shape(theta), dtype=bool), "x": x, "B": B}
@@ -296,6 +294,7 @@ class TangentMechanism:
         Same arguments as `EllipticTrammel.solve`; with ``strict=True`` raises
         `AssemblyError` naming the first angle with ``cos(theta) == 0``.
         """
+        strict = bool_flag("strict", strict)
         order, theta, omega, alpha = _inputs(order, theta, omega, alpha)
         valid = np.cos(theta) != 0.0
         if strict and not np.all(valid):
@@ -396,6 +395,7 @@ class OldhamCoupling:
 
         Same arguments as `EllipticTrammel.solve`; returns an `OldhamPose`.
         """
+        strict = bool_flag("strict", strict)
         order, theta, omega, alpha = _inputs(order, theta, omega, alpha)
         S, orbit, s1, s3 = _gen.oldham_position(self._e0, theta)
         fields = {"theta": theta, "valid": np.ones(np.shape(theta), dtype=bool), "S": S, "orbit": orbit,

@@ -15,7 +15,7 @@ import numpy as np
 from mech._generated.efficiency import push_rod as _push_rod
 from mech._generated.efficiency import spreading_wedge, wedge_press as _wedge_press
 from mech._generated.friction import eccentric_clamp
-from mech._validate import finite_array
+from mech._validate import bool_flag, finite_array
 from mech.planar._friction import _nonnegative, _out, _positive
 
 __all__ = [
@@ -341,6 +341,7 @@ def spreading_wedge_force(Q, theta, phi, base_friction=True):
     1142.82
     """
     Q, theta, phi = _positive("Q", Q), _positive("theta", theta), _nonnegative("phi", phi)
+    base_friction = bool_flag("base_friction", base_friction)
     if np.any(theta >= np.pi / 2):
         raise ValueError(f"Expected `theta` < pi/2, got {float(theta.max())!r}")
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -469,7 +470,9 @@ def eccentric_clamp_locks(alpha, e, r_disc, rho_pin, phi):
     [True, False]
     """
     e, r, rho, phi = _clamp_args(e, r_disc, rho_pin, phi)
-    margin, _ = eccentric_clamp(finite_array("alpha", alpha), e, r, rho, phi)
+    alpha = finite_array("alpha", alpha)
+    with np.errstate(invalid="ignore"):      # the largest angle (unused here) is NaN when x > 1
+        margin, _ = eccentric_clamp(alpha, e, r, rho, phi)
     return _out(np.asarray(margin) >= 0)
 
 

@@ -14,8 +14,10 @@ import numpy as np
 
 from mech._generated import force_gain as _g
 from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal
-from mech._validate import branch_sign, finite_array, positive_length, real_number
-from mech.planar._linkage import Guide, Linkage
+from mech._validate import (
+    branch_sign, finite_array, instance, option, planar_point, planar_points, positive_length, real_number,
+)
+from mech.planar._linkage import Guide, Linkage, LinkageSolution
 
 __all__ = [
     "mechanical_advantage",
@@ -47,9 +49,9 @@ def _spec(solution, spec, what):
         raise ValueError(f"Expected `{what}` to be a link name or (point, direction), got {spec!r}") from None
     if point not in solution.points:
         raise ValueError(f"Expected the point of `{what}` to be a point of the linkage, got {point!r}")
-    u = np.asarray(direction, dtype=complex)
-    if not np.all(np.isfinite(u)) or np.any(u == 0):
-        raise ValueError(f"Expected a finite, non-zero direction in `{what}`, got {direction!r}")
+    u = planar_points(what, direction)
+    if np.any(u == 0):
+        raise ValueError(f"Expected a non-zero direction in `{what}`, got {direction!r}")
     return ("force", point, u / np.abs(u))
 
 
@@ -113,8 +115,8 @@ def mechanical_advantage(solution, input, output, *, method="velocities"):
     >>> round(float(a), 9) == round(float(b), 9)
     True
     """
-    if method not in ("velocities", "centres"):
-        raise ValueError(f"Expected `method` 'velocities' or 'centres', got {method!r}")
+    instance("solution", solution, LinkageSolution)
+    option("method", method, ("velocities", "centres"))
     if method == "velocities" and solution.order < 1:
         raise ValueError(f"Expected a solution with velocities (order >= 1), got order {solution.order}")
     s_in, s_out = _spec(solution, input, "input"), _spec(solution, output, "output")
@@ -135,9 +137,7 @@ def mechanical_advantage(solution, input, output, *, method="velocities"):
 
 
 def _driver(driver, allowed):
-    if driver not in allowed:
-        raise ValueError(f"Expected `driver` in {allowed}, got {driver!r}")
-    return driver
+    return option("driver", driver, allowed)
 
 
 def fourbar_mechanical_advantage(a, b, c, d, theta, *, branch=1, driver="crank"):
@@ -394,7 +394,7 @@ def hand_press(*, lever=25.0, handle=250.0, pivot=70.0 - 75.0j, link2=70.0, link
     """
     L = {k: positive_length(k, v) for k, v in dict(lever=lever, handle=handle, link2=link2,
                                                         link3=link3, link4=link4).items()}
-    return (Linkage({"D": 0.0, "A": complex(pivot)})
+    return (Linkage({"D": 0.0, "A": planar_point("pivot", pivot)})
             .crank("lever", pivot="A", tip="B", length=L["lever"])
             .point("H", link="lever", at=-L["handle"])
             .rrr(("link2", "link3"), pins=("B", "D"), joint="C", lengths=(L["link2"], L["link3"]), branch=1)
@@ -441,7 +441,8 @@ def jaw_crusher(*, crank=12.0, pitman=250.0, toggle_back=90.0, toggle_front=90.0
     """
     L = {k: positive_length(k, v) for k, v in dict(crank=crank, pitman=pitman, toggle_back=toggle_back,
                                                         toggle_front=toggle_front, jaw=jaw).items()}
-    return (Linkage({"A": 0.0, "D": complex(back_pivot), "F": complex(jaw_pivot)})
+    return (Linkage({"A": 0.0, "D": planar_point("back_pivot", back_pivot),
+                     "F": planar_point("jaw_pivot", jaw_pivot)})
             .crank("crank", pivot="A", tip="B", length=L["crank"])
             .rrr(("pitman", "back"), pins=("B", "D"), joint="C", lengths=(L["pitman"], L["toggle_back"]),
                  branch=-1)

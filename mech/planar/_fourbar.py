@@ -6,7 +6,7 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
-from mech._validate import branch_sign, motion_inputs, positive_length
+from mech._validate import bool_flag, branch_sign, motion_inputs, nonnegative_number, positive_length, real_tuple
 from mech._pose import Pose
 from mech.planar._fourbar_change import change_point_rates, kite_pose
 
@@ -158,13 +158,8 @@ class FourBar:
         (a_, b_, c_, d_), self._exponent = fourbar_lengths(a, b, c, d)
         self._a, self._b, self._c, self._d = (float(v) for v in (a, b, c, d))
         self._branch = branch_sign(branch)
-        try:
-            p, q = (float(v) for v in coupler)
-        except (TypeError, ValueError):
-            raise ValueError(f"Expected `coupler` to be a pair of numbers (p, q), got {coupler!r}") from None
-        if not (np.isfinite(p) and np.isfinite(q)):
-            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
-        self._coupler = (p, q)
+        self._coupler = p, q = real_tuple("coupler", coupler, 2)
+        rtol = nonnegative_number("rtol", rtol)
         self._unit = (a_, b_, c_, d_, math.ldexp(p, -self._exponent), math.ldexp(q, -self._exponent))
         total = a_ + b_ + c_ + d_
         gaps = [float(g) for g in _gen.fourbar_assembly_gaps(a_, b_, c_, d_)]
@@ -234,6 +229,7 @@ class FourBar:
         >>> pose.valid.tolist(), pose.aP.shape
         ([True, True], (2,))
         """
+        strict = bool_flag("strict", strict)
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size

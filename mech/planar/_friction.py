@@ -17,7 +17,7 @@ from mech._generated.friction import (
     thrust_moment,
     two_force_tilt,
 )
-from mech._validate import finite_array, positive_length
+from mech._validate import bool_flag, finite_array, option, planar_points, positive_length
 
 __all__ = [
     "FRICTION_TABLE_2_2",
@@ -147,13 +147,14 @@ def total_reaction(normal, velocity, mu, normal_force=None):
     >>> total_reaction(1j, 1.0, 0.1, normal_force=50.0)
     (-5+50j)
     """
-    n = np.asarray(normal, dtype=complex)
+    n = planar_points("normal", normal)
+    velocity = planar_points("velocity", velocity)
     if np.any(n == 0):
         raise ValueError("Expected a nonzero `normal`, got 0j")
     mu = _nonnegative("mu", mu)
     n = n / np.abs(n)
     t = -1j * n                                                  # the tangent, n turned -90 deg
-    vt = np.real(np.asarray(velocity, dtype=complex) * np.conj(t))
+    vt = np.real(velocity * np.conj(t))
     sense = np.where(vt > 0, 1.0, np.where(vt < 0, -1.0, np.nan))
     if normal_force is None:
         return _out((n - sense * mu * t) / np.hypot(1.0, mu))
@@ -361,8 +362,7 @@ def journal_mu(mu, condition="run-in"):
     mu = _nonnegative("mu", mu)
     _, new, run_in = equivalent_mu(mu, np.pi / 2)
     table = {"new": new, "run-in": run_in, "line": mu}
-    if condition not in table:
-        raise ValueError(f"Expected `condition` among 'new', 'run-in', 'line', got {condition!r}")
+    option("condition", condition, tuple(table))
     return _out(np.asarray(table[condition], dtype=float))
 
 
@@ -471,6 +471,7 @@ def two_force_tilt_angle(length, rho_a, rho_b, cross=True):
     2.866
     """
     l = positive_length("length", length)
+    cross = bool_flag("cross", cross)
     ra, rb = (float(_nonnegative(n, v)) for n, v in (("rho_a", rho_a), ("rho_b", rho_b)))
     if cross and ra + rb >= l:
         raise ValueError(
@@ -532,9 +533,7 @@ def thrust_friction_moment(Q, mu, r_out, r_in=0.0, *, condition="new", cone_half
     if np.any(alpha > np.pi / 2):
         raise ValueError(f"Expected `cone_half_angle` <= pi/2, got {float(alpha.max())!r}")
     pressure, wear = thrust_moment(Q, mu, R, r, alpha)
-    if condition not in ("new", "run-in"):
-        raise ValueError(f"Expected `condition` 'new' or 'run-in', got {condition!r}")
-    return _out(pressure if condition == "new" else wear)
+    return _out(pressure if option("condition", condition, ("new", "run-in")) == "new" else wear)
 
 
 def collar_friction_radius(r_out, r_in=0.0, condition="new"):

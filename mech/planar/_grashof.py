@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated.grashof import grashof_margins
-from mech._validate import positive_length
+from mech._validate import nonnegative_number, option, positive_length, real_array
 
 __all__ = ["GrashofResult", "KindInterval", "grashof", "kind_intervals"]
 
@@ -143,7 +143,7 @@ def grashof(a, b, c, d, *, rtol=1e-12):
     'triple-rocker'
     """
     (a, b, c, d), total = _lengths(a, b, c, d)
-    rtol = positive_length("rtol", rtol) if rtol != 0 else 0.0
+    rtol = nonnegative_number("rtol", rtol)
     margins = tuple(float(m) for m in grashof_margins(a, b, c, d))
     signs = _signs(margins, rtol * total)
     is_grashof, revolving, kind = _classify(*signs)
@@ -161,18 +161,17 @@ def grashof(a, b, c, d, *, rtol=1e-12):
 
 
 def _fixed_lengths(lengths, vary):
-    if vary not in _LINKS:
-        raise ValueError(f'Expected `vary` to be one of "a", "b", "c", "d", got {vary!r}')
+    vary = option("vary", vary, _LINKS)
     others = [name for name in _LINKS if name != vary]
     if isinstance(lengths, Mapping):
         if sorted(lengths) != others:
             raise ValueError(f"Expected `lengths` to have the keys {others}, got {sorted(lengths)}")
         values = [lengths[name] for name in others]
     else:
-        values = list(lengths)
-        if len(values) != 3:
-            raise ValueError(f"Expected 3 fixed lengths in `lengths`, got {len(values)}")
-    return {name: positive_length(name, x) for name, x in zip(others, values)}
+        values = real_array("lengths", lengths, finite=False)
+        if values.shape != (3,):
+            raise ValueError(f"Expected 3 fixed lengths in `lengths`, got shape {values.shape}: {lengths!r}")
+    return {name: positive_length(f"lengths[{name!r}]", x) for name, x in zip(others, values)}
 
 
 def kind_intervals(lengths, vary, *, rtol=1e-12):
@@ -225,7 +224,7 @@ def kind_intervals(lengths, vary, *, rtol=1e-12):
     ['crank-rocker', 'triple-rocker', 'double-crank', 'triple-rocker']
     """
     fixed = _fixed_lengths(lengths, vary)
-    rtol = positive_length("rtol", rtol) if rtol != 0 else 0.0
+    rtol = nonnegative_number("rtol", rtol)
     total_fixed = sum(fixed.values())
     low = max(0.0, 2.0 * max(fixed.values()) - total_fixed)
     high = total_fixed

@@ -7,12 +7,14 @@ of the lines, so centres at infinity (sliding pairs, translating links) need no 
 case anywhere.
 """
 
+import numbers
 from dataclasses import dataclass
 from itertools import combinations
 
 import numpy as np
 
-from mech._validate import finite_array
+from mech._errors import InputTypeError, UnknownKeyError
+from mech._validate import finite_array, instance, integer, known_name, planar_points
 
 __all__ = [
     "Centre",
@@ -77,13 +79,7 @@ def higher_pair(contact, normal):
 
 
 def _complex(name, value):
-    arr = np.asarray(value)
-    if not np.issubdtype(arr.dtype, np.number):
-        raise ValueError(f"Expected `{name}` to be a complex number, got {value!r}")
-    arr = arr.astype(complex)
-    finite_array(f"{name}.real", arr.real)
-    finite_array(f"{name}.imag", arr.imag)
-    return arr
+    return planar_points(name, value)
 
 
 def _direction(name, value):
@@ -174,10 +170,10 @@ class InstantCentres:
         try:
             i, j = pair
         except (TypeError, ValueError):
-            raise KeyError(f"Expected a pair of link labels, got {pair!r}") from None
+            raise UnknownKeyError(f"Expected a pair of link labels, got {pair!r}") from None
         order = {label: k for k, label in enumerate(self.links)}
         if i not in order or j not in order or i == j:
-            raise KeyError(f"Expected two different links among {self.links}, got {pair!r}")
+            raise UnknownKeyError(f"Expected two different links among {self.links}, got {pair!r}")
         return (i, j) if order[i] < order[j] else (j, i)
 
     def __getitem__(self, pair):
@@ -222,12 +218,11 @@ def _meet(lines):
 
 
 def _labels(links):
-    if isinstance(links, (int, np.integer)) and not isinstance(links, bool):
-        centre_count(links)
-        return tuple(range(1, int(links) + 1))
+    if isinstance(links, (bool, np.bool_, str, bytes, numbers.Number)) or not hasattr(links, "__iter__"):
+        return tuple(range(1, integer("links", links, minimum=2, maximum=10**4) + 1))
     labels = tuple(links)
     if len(labels) < 2 or len(set(labels)) != len(labels):
-        raise ValueError(f"Expected at least two distinct link labels, got {links!r}")
+        raise ValueError(f"Expected `links` to be at least two distinct link labels, got {links!r}")
     return labels
 
 
@@ -288,6 +283,8 @@ def instant_centres(links, direct, *, undefined="raise"):
     labels = _labels(links)
     index = {label: k for k, label in enumerate(labels)}
     known, lines, steps, sources = {}, {}, [], {}
+    if not hasattr(direct, "items"):
+        raise InputTypeError(f"Expected `direct` to be a mapping of link pairs to centres, got {direct!r}")
     for raw_pair, spec in dict(direct).items():
         try:
             i, j = raw_pair
@@ -299,7 +296,7 @@ def instant_centres(links, direct, *, undefined="raise"):
         if pair in known or pair in lines:
             raise ValueError(f"Expected each pair once in `direct`, got {pair!r} twice")
         if not isinstance(spec, _Direct):
-            spec = revolute(spec)
+            spec = _Direct("revolute", _complex(f"direct[{raw_pair!r}]", spec))
         if spec.kind == "line":
             lines[pair] = spec
             continue
@@ -448,6 +445,9 @@ def omega_ratio(centres, i, j, frame):
     >>> round(float(omega_ratio(ic, 3, 1, 4)), 12)     # P13 = -11: (-11 - 0) / (-11 - 8)
     0.578947368421
     """
+    instance("centres", centres, InstantCentres)
+    for name, label in (("i", i), ("j", j), ("frame", frame)):
+        known_name(name, label, centres.links)
     if frame in (i, j):
         if frame == j:
             raise ValueError(f"Expected `j` to differ from `frame` (the frame does not turn), got {j!r}")
@@ -481,7 +481,8 @@ class LinkVelocities:
         ``v = i omega (z - P_link,frame)``; for a translating link (absolute centre at
         infinity) the same formula in homogeneous coordinates gives the common velocity.
         """
-        z = np.asarray(z, dtype=complex)
+        z = planar_points("z", z)
+        known_name("link", link, tuple(self._rates))
         if link == self._frame:
             return np.zeros(np.broadcast_shapes(z.shape, np.shape(self.omega[link])), complex)[()]
         h = self._centres[link, self._frame].homogeneous
@@ -524,6 +525,9 @@ def centre_velocities(centres, frame, driver, omega):
     >>> round(float(motion.omega[2]), 12), round(complex(motion.point_velocity(3, 0j)).real, 12)
     (-1.2, -12.8)
     """
+    instance("centres", centres, InstantCentres)
+    known_name("frame", frame, centres.links)
+    known_name("driver", driver, centres.links)
     if driver == frame:
         raise ValueError(f"Expected a `driver` other than the frame, got {driver!r}")
     omega = finite_array("omega", omega)

@@ -16,7 +16,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._scaling import length_scale
-from mech._validate import positive_length
+from mech._validate import (
+    instance, integer, known_name, MAX_COUNT, planar_point, positive_length, real_number,
+)
+from mech._errors import InputTypeError
 from mech.planar._linkage import Guide, Linkage
 
 __all__ = [
@@ -56,6 +59,12 @@ def _triangle(base, r1, r2, side, what):
 
 def _lengths(**kw):
     return {k: positive_length(k, v) for k, v in kw.items()}
+
+
+def _unit(name, angle):
+    """The unit vector at the checked angle ``angle``."""
+    angle = real_number(name, angle)
+    return complex(math.cos(angle), math.sin(angle))
 
 
 # ----------------------------------------------------------------------------- six-bars
@@ -104,11 +113,11 @@ def watt_six_bar(*, crank=20.0, coupler=50.0, rocker=45.0, frame=50.0, lever=44.
     """
     L = _lengths(crank=crank, coupler=coupler, rocker=rocker, frame=frame, lever=lever,
                  link5=link5, output=output)
-    return (Linkage({"A": 0.0, "D": L["frame"], "F": complex(pivot)})
+    return (Linkage({"A": 0.0, "D": L["frame"], "F": planar_point("pivot", pivot)})
             .crank("crank", pivot="A", tip="B", length=L["crank"])
             .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C",
                  lengths=(L["coupler"], L["rocker"]), branch=1)
-            .point("E", link="rocker", at=L["lever"] * complex(math.cos(lever_angle), math.sin(lever_angle)))
+            .point("E", link="rocker", at=L["lever"] * _unit("lever_angle", lever_angle))
             .rrr(("link5", "output"), pins=("E", "F"), joint="G", lengths=(L["link5"], L["output"]), branch=-1))
 
 
@@ -158,11 +167,11 @@ def stephenson_six_bar(*, crank=20.0, coupler=50.0, rocker=45.0, frame=50.0, poi
     True
     """
     L = _lengths(crank=crank, coupler=coupler, rocker=rocker, frame=frame, link5=link5, output=output)
-    return (Linkage({"A": 0.0, "D": L["frame"], "H": complex(pivot)})
+    return (Linkage({"A": 0.0, "D": L["frame"], "H": planar_point("pivot", pivot)})
             .crank("crank", pivot="A", tip="B", length=L["crank"])
             .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C",
                  lengths=(L["coupler"], L["rocker"]), branch=1)
-            .point("E", link="coupler", at=complex(point))
+            .point("E", link="coupler", at=planar_point("point", point))
             .rrr(("link5", "output"), pins=("E", "H"), joint="G", lengths=(L["link5"], L["output"]), branch=1))
 
 
@@ -214,7 +223,7 @@ def shaper_watt(*, crank=124.0, frame=400.0, bar=485.0, rod=120.0, height=None):
     L = _lengths(crank=crank, frame=frame, bar=bar, rod=rod)
     if L["crank"] >= L["frame"]:
         raise ValueError(f"Expected `crank` < `frame` = {L['frame']!r}, got {L['crank']!r}")
-    h = L["bar"] - L["frame"] if height is None else float(height)
+    h = L["bar"] - L["frame"] if height is None else real_number("height", height)
     lk = (Linkage({"A": 0.0, "D": complex(0.0, -L["frame"])})
           .crank("crank", pivot="A", tip="B", length=L["crank"])
           .rpr(("bar", "block"), pins=("D", "B"), offset=0.0, branch=1)
@@ -266,7 +275,7 @@ def shaper_stephenson(*, crank=120.0, frame=300.0, bar=600.0, rod=400.0, height=
         raise ValueError(f"Expected `crank` < `frame` = {L['frame']!r}, got {L['crank']!r}")
     if L["bar"] <= L["frame"] + L["crank"]:
         raise ValueError(f"Expected `bar` > frame + crank = {L['frame'] + L['crank']!r}, got {L['bar']!r}")
-    h = L["bar"] + L["crank"] if height is None else float(height)
+    h = L["bar"] + L["crank"] if height is None else real_number("height", height)
     lk = (Linkage({"A": 0.0, "D": complex(0.0, L["frame"])})
           .crank("crank", pivot="A", tip="B", length=L["crank"])
           .rpr(("bar", "block"), pins=("B", "D"), offset=0.0, branch=1)
@@ -349,7 +358,7 @@ def quick_return_slider_crank(*, crank=129.0, rod=280.0, offset=120.0):
     """
     L = _lengths(crank=crank, rod=rod)
     lk = Linkage({"A": 0.0}).crank("crank", pivot="A", tip="B", length=L["crank"])
-    return _ram(lk, pin="B", height=float(offset), rod=L["rod"])
+    return _ram(lk, pin="B", height=real_number("offset", offset), rod=L["rod"])
 
 
 def quick_return_crank_rocker(*, crank=60.0, coupler=120.0, rocker=180.0, frame=160.0,
@@ -393,12 +402,12 @@ def quick_return_crank_rocker(*, crank=60.0, coupler=120.0, rocker=180.0, frame=
     True
     """
     L = _lengths(crank=crank, coupler=coupler, rocker=rocker, frame=frame, lever=lever, rod=rod)
-    h = L["lever"] if height is None else float(height)
+    h = L["lever"] if height is None else real_number("height", height)
     lk = (Linkage({"A": 0.0, "D": L["frame"]})
           .crank("crank", pivot="A", tip="B", length=L["crank"])
           .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C",
                lengths=(L["coupler"], L["rocker"]), branch=1)
-          .point("E", link="rocker", at=L["lever"] * complex(math.cos(lever_angle), math.sin(lever_angle))))
+          .point("E", link="rocker", at=L["lever"] * _unit("lever_angle", lever_angle)))
     return _ram(lk, pin="E", height=h, rod=L["rod"])
 
 
@@ -479,6 +488,9 @@ def step_ratio(solution, *, axis=-1):
     >>> max(step_ratio(sol).values()) < 3
     True
     """
+    if not hasattr(getattr(solution, "points", None), "items"):    # any solved linkage with points
+        raise InputTypeError(f"Expected `solution` to be a LinkageSolution, got {solution!r}")
+    axis = integer("axis", axis, minimum=-64, maximum=63)
     out = {}
     for name, z in solution.points.items():
         step = np.abs(np.diff(z, axis=axis))
@@ -536,8 +548,14 @@ def ram_stroke(linkage, point="F", *, direction=1.0 + 0.0j, samples=3600):
     >>> round(s.length, 1), round(s.time_ratio, 3)
     (299.3, 1.492)
     """
-    e = complex(direction) / abs(complex(direction))
-    th = 2.0 * math.pi * np.arange(int(samples)) / int(samples)
+    instance("linkage", linkage, Linkage)
+    known_name("point", point, linkage.point_names)
+    e = planar_point("direction", direction)
+    if e == 0:
+        raise ValueError(f"Expected a non-zero `direction`, got {direction!r}")
+    e = e / abs(e)
+    samples = integer("samples", samples, minimum=3, maximum=MAX_COUNT)
+    th = 2.0 * math.pi * np.arange(samples) / samples
     sol = linkage.solve(th)
     if not np.all(sol.valid):
         bad = float(th[~sol.valid][0])

@@ -13,14 +13,36 @@ from types import MappingProxyType
 
 import numpy as np
 
-from mech._errors import AssemblyError
+from mech._errors import AssemblyError, InputTypeError
 from mech._generated import assur_groups as _g
 from mech.planar import _linkage_modes
-from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length
+from mech._validate import (
+    bool_flag, branch_sign, finite_array, integer, known_name, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number,
+)
 
 __all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
 
 GROUND = "ground"
+
+
+def _for(arg):
+    return "" if arg is None else f" for `{arg}`"
+
+
+def _two(name, value):
+    """Unpack a pair of names (links, pins, guides) given as a tuple or list."""
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise InputTypeError(f"Expected `{name}` to be a pair, got {value!r}")
+    return tuple(value)
+
+
+def _looks_numeric(text):
+    """True for a string such as "10" that would name a driver but reads as a number."""
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 @dataclass(frozen=True)
@@ -34,6 +56,11 @@ class Guide:
     link: str
     through: object = 0j
     angle: float = 0.0
+
+    def __post_init__(self):
+        if not isinstance(self.through, str) or _looks_numeric(self.through):
+            object.__setattr__(self, "through", planar_point("through", self.through))
+        object.__setattr__(self, "angle", real_number("angle", self.angle))
 
 
 @dataclass(frozen=True)
@@ -144,9 +171,12 @@ class Linkage:
         self._links = {GROUND: None}
         self._guides = {}
         self._drivers = ()
+        if ground is not None and not hasattr(ground, "items"):
+            raise InputTypeError(f"Expected `ground` to be a mapping of point names to points, got {ground!r}")
         for name, z in dict(ground or {}).items():
             self._add_point(name, GROUND)
-            self._steps += (_Step("ground", name, (GROUND,), (("at", complex(z)),)),)
+            z = planar_point(f"ground[{name!r}]", z)
+            self._steps += (_Step("ground", name, (GROUND,), (("at", z),)),)
 
     # ------------------------------------------------------------------ building
     def _copy(self):
@@ -159,34 +189,36 @@ class Linkage:
         new._rtol = self._rtol
         return new
 
-    def _add_point(self, name, link):
+    def _add_point(self, name, link, arg=None):
+        where = _for(arg)
         if not isinstance(name, str) or not name:
-            raise ValueError(f"Expected a point name (a non-empty str), got {name!r}")
+            raise ValueError(f"Expected a point name (a non-empty str){where}, got {name!r}")
         if name in self._points:
-            raise ValueError(f"Expected a new point name, got {name!r}, which is already defined")
+            raise ValueError(f"Expected a new point name{where}, got {name!r}, which is already defined")
         self._points[name] = link
 
-    def _add_link(self, name):
+    def _add_link(self, name, arg=None):
+        where = _for(arg)
         if not isinstance(name, str) or not name:
-            raise ValueError(f"Expected a link name (a non-empty str), got {name!r}")
+            raise ValueError(f"Expected a link name (a non-empty str){where}, got {name!r}")
         if name in self._links:
-            raise ValueError(f"Expected a new link name, got {name!r}, which is already defined")
+            raise ValueError(f"Expected a new link name{where}, got {name!r}, which is already defined")
         self._links[name] = True
 
-    def _need_point(self, name):
-        if name not in self._points:
+    def _need_point(self, name, arg=None):
+        if not isinstance(name, str) or name not in self._points:
             known = ", ".join(sorted(self._points)) or "none"
-            raise ValueError(f"Expected a known point, got {name!r} (known points: {known})")
+            raise ValueError(f"Expected a known point{_for(arg)}, got {name!r} (known points: {known})")
 
-    def _need_link(self, name):
-        if name not in self._links:
+    def _need_link(self, name, arg=None):
+        if not isinstance(name, str) or name not in self._links:
             known = ", ".join(sorted(self._links))
-            raise ValueError(f"Expected a known link, got {name!r} (known links: {known})")
+            raise ValueError(f"Expected a known link{_for(arg)}, got {name!r} (known links: {known})")
 
-    def _need_guide(self, guide):
+    def _need_guide(self, guide, arg="guide"):
         if not isinstance(guide, Guide):
-            raise ValueError(f"Expected a `Guide(link, through, angle)`, got {guide!r}")
-        self._need_link(guide.link)
+            raise InputTypeError(f"Expected `{arg}` to be a Guide(link, through, angle), got {guide!r}")
+        self._need_link(guide.link, f"{arg}.link")
         if isinstance(guide.through, str):
             self._need_point(guide.through)
         else:
@@ -203,17 +235,17 @@ class Linkage:
     def ground(self, name, at):
         """Add a fixed point ``name`` at ``at`` (complex)."""
         new = self._copy()
-        new._add_point(name, GROUND)
-        return new._push("ground", name, (GROUND,), at=complex(at))
+        new._add_point(name, GROUND, "name")
+        return new._push("ground", name, (GROUND,), at=planar_point("at", at))
 
     def point(self, name, *, link, at):
         """Attach a point to ``link`` at local coordinates ``at`` (complex) in its frame."""
         new = self._copy()
-        new._need_link(link)
+        new._need_link(link, "link")
         if link == GROUND:
             return new.ground(name, at)
-        new._add_point(name, link)
-        return new._push("point", name, (link,), at=complex(at))
+        new._add_point(name, link, "name")
+        return new._push("point", name, (link,), at=planar_point("at", at))
 
     def crank(self, link, *, pivot, tip, length, driver=None):
         """A crank: ``link`` turns about the known point ``pivot`` through the input angle.
@@ -222,10 +254,10 @@ class Linkage:
         the link's frame has its origin at ``pivot`` and its x axis along ``pivot -> tip``.
         """
         new = self._copy()
-        new._need_point(pivot)
+        new._need_point(pivot, "pivot")
         r = positive_length(f"length of {link}", length)
-        new._add_link(link)
-        new._add_point(tip, link)
+        new._add_link(link, "link")
+        new._add_point(tip, link, "tip")
         name = link if driver is None else driver
         new._drivers = new._drivers + (name,)
         return new._push("crank", f"crank {link}", (link,), pivot=pivot, tip=tip, length=r, driver=name)
@@ -238,8 +270,8 @@ class Linkage:
         """
         new = self._copy()
         new._need_guide(guide)
-        new._add_link(link)
-        new._add_point(point, link)
+        new._add_link(link, "link")
+        new._add_point(point, link, "point")
         name = link if driver is None else driver
         new._drivers = new._drivers + (name,)
         return new._push("slider", f"slider {link}", (link, guide.link), guide=guide, point=point, driver=name)
@@ -253,20 +285,20 @@ class Linkage:
         given as a str is a driver: an actuator whose length is an input.
         """
         new = self._copy()
-        l1, l2 = links
-        p1, p2 = pins
-        new._need_point(p1)
-        new._need_point(p2)
+        l1, l2 = _two("links", links)
+        p1, p2 = _two("pins", pins)
+        new._need_point(p1, "pins[0]")
+        new._need_point(p2, "pins[1]")
         lens = []
         for k, r in enumerate(lengths):
-            if isinstance(r, str):
+            if isinstance(r, str) and not _looks_numeric(r):
                 new._drivers = new._drivers + (r,)
                 lens.append(r)
             else:
                 lens.append(positive_length(f"lengths[{k}] of the RRR group {l1}-{l2}", r))
-        new._add_link(l1)
-        new._add_link(l2)
-        new._add_point(joint, l1)
+        new._add_link(l1, "links[0]")
+        new._add_link(l2, "links[1]")
+        new._add_point(joint, l1, "joint")
         return new._push("rrr", f"RRR {l1}-{l2}", (l1, l2), pins=(p1, p2), joint=joint,
                          lengths=tuple(lens), branch=branch_sign(branch))
 
@@ -279,13 +311,13 @@ class Linkage:
         guide. The block's sliding pair is ``(links[1], guide.link)``.
         """
         new = self._copy()
-        rod, block = links
-        new._need_point(pin)
+        rod, block = _two("links", links)
+        new._need_point(pin, "pin")
         new._need_guide(guide)
         r = positive_length(f"length of {rod}", length)
-        new._add_link(rod)
-        new._add_link(block)
-        new._add_point(joint, rod)
+        new._add_link(rod, "links[0]")
+        new._add_link(block, "links[1]")
+        new._add_point(joint, rod, "joint")
         return new._push("rrp", f"RRP {rod}-{block}", (rod, block), pin=pin, guide=guide, joint=joint,
                          length=r, branch=branch_sign(branch))
 
@@ -299,14 +331,13 @@ class Linkage:
         block from pins[1], x along the guide. The sliding pair is ``(links[1], links[0])``.
         """
         new = self._copy()
-        gl, block = links
-        for p in pins:
-            new._need_point(p)
-        e = float(offset)
-        if not math.isfinite(e):
-            raise ValueError(f"Expected a finite `offset`, got {offset!r}")
-        new._add_link(gl)
-        new._add_link(block)
+        gl, block = _two("links", links)
+        pins = _two("pins", pins)
+        for k, p in enumerate(pins):
+            new._need_point(p, f"pins[{k}]")
+        e = real_number("offset", offset)
+        new._add_link(gl, "links[0]")
+        new._add_link(block, "links[1]")
         return new._push("rpr", f"RPR {gl}-{block}", (gl, block), pins=tuple(pins), offset=e,
                          branch=branch_sign(branch))
 
@@ -317,11 +348,11 @@ class Linkage:
         ``(links[0], guides[0].link)`` and ``(links[1], guides[1].link)``.
         """
         new = self._copy()
-        b1, b2 = links
-        g1, g2 = (new._need_guide(g) for g in guides)
-        new._add_link(b1)
-        new._add_link(b2)
-        new._add_point(joint, b1)
+        b1, b2 = _two("links", links)
+        g1, g2 = (new._need_guide(g, f"guides[{k}]") for k, g in enumerate(_two("guides", guides)))
+        new._add_link(b1, "links[0]")
+        new._add_link(b2, "links[1]")
+        new._add_point(joint, b1, "joint")
         return new._push("prp", f"PRP {b1}-{b2}", (b1, b2), guides=(g1, g2), joint=joint)
 
     def rpp(self, links, *, pin, guide, angle, point, offset=0.0):
@@ -335,15 +366,16 @@ class Linkage:
         ``(links[0], links[1])``.
         """
         new = self._copy()
-        pinned, sliding = links
-        new._need_point(pin)
+        pinned, sliding = _two("links", links)
+        new._need_point(pin, "pin")
         new._need_guide(guide)
-        gam = float(angle)
-        if not math.isfinite(gam) or abs(math.sin(gam)) < 1e-12:
+        gam = real_number("angle", angle)
+        offset = real_number("offset", offset)
+        if abs(math.sin(gam)) < 1e-12:
             raise ValueError(f"Expected an `angle` not parallel to the guide, got {angle!r}")
-        new._add_link(pinned)
-        new._add_link(sliding)
-        new._add_point(point, sliding)
+        new._add_link(pinned, "links[0]")
+        new._add_link(sliding, "links[1]")
+        new._add_point(point, sliding, "point")
         return new._push("rpp", f"RPP {pinned}-{sliding}", (pinned, sliding), pin=pin, guide=guide,
                          angle=gam, point=point, offset=float(offset))
 
@@ -412,6 +444,7 @@ class Linkage:
         >>> lk.solve([0.0, 2.0]).valid.tolist()
         [True, False]
         """
+        strict = bool_flag("strict", strict)
         order = nonnegative_int("order", order, 2)
         q, w, al = (self._per_driver(x, name) for x, name in
                     ((inputs, "inputs"), (omega, "omega"), (alpha, "alpha")))
@@ -529,7 +562,7 @@ class Linkage:
                                  f"got {sorted(unknown)}")
             missing = set(self._drivers) - set(value)
             if missing and what == "inputs":
-                raise ValueError(f"Expected an input for every driver, missing {sorted(missing)}")
+                raise ValueError(f"Expected `inputs` for every driver, missing {sorted(missing)}, got {value!r}")
             default = 1.0 if what == "omega" else 0.0
             return {d: finite_array(f"{what}[{d!r}]", value.get(d, default)) for d in self._drivers}
         if len(self._drivers) != 1 and what == "inputs":
@@ -803,12 +836,16 @@ class Linkage:
             driver = self._drivers[0]
         if driver not in self._drivers:
             raise ValueError(f"Expected `driver` among {list(self._drivers)}, got {driver!r}")
+        start, end = real_number("start", start), real_number("end", end)
+        samples = integer("samples", samples, minimum=2, maximum=MAX_COUNT)
+        if others is not None and not hasattr(others, "items"):
+            raise InputTypeError(f"Expected `others` to be a mapping of drivers to inputs, got {others!r}")
         fixed = dict(others or {})
 
         def ok(x):
             return self.solve({**fixed, driver: x}, order=0).valid
 
-        x = np.linspace(float(start), float(end), int(samples))
+        x = np.linspace(start, end, samples)
         good = ok(x)
         edges = np.flatnonzero(np.diff(good.astype(np.int8)))
         cuts = []
@@ -1025,6 +1062,7 @@ class LinkageSolution:
 
     def direction(self, link):
         """Unit complex direction of ``link``'s frame x axis (no trigonometry)."""
+        known_name("link", link, tuple(self._dirs))
         return self._dirs[link]
 
     def __setattr__(self, name, value):

@@ -24,6 +24,9 @@ from types import MappingProxyType
 
 import numpy as np
 
+from mech._errors import InputTypeError
+from mech._validate import instance, known_name, planar_points, positive_length
+
 __all__ = [
     "Term",
     "Equation",
@@ -114,6 +117,8 @@ class Polygon:
 
     def segment(self, tail, head):
         """The vector from vertex ``tail`` to vertex ``head``."""
+        known_name("tail", tail, tuple(self.vertices))
+        known_name("head", head, tuple(self.vertices))
         return self.vertices[head] - self.vertices[tail]
 
     def lengths(self, mu):
@@ -122,9 +127,7 @@ class Polygon:
         For the textbook's ``mu_v = 0.05 (m/s)/mm`` with velocities in mm/s, pass
         ``mu = 50.0``: a velocity of 1000 mm/s is then drawn 20 mm long.
         """
-        mu = float(mu)
-        if not np.isfinite(mu) or mu <= 0.0:
-            raise ValueError(f"Expected `mu` > 0, got {mu!r}")
+        mu = positive_length("mu", mu)
         return MappingProxyType({name: np.abs(t.vector) / mu for name, t in self.terms.items()})
 
 
@@ -155,24 +158,24 @@ class Image:
         return np.angle(self.factor)
 
 
-def _pick(sol, mapping, what, name):
+def _pick(sol, mapping, what, name, arg):
     try:
         return np.asarray(getattr(sol, mapping)[name])
-    except KeyError:
+    except (KeyError, TypeError):
         known = ", ".join(sorted(getattr(sol, mapping))) or "none"
-        raise ValueError(f"Expected a {what} of the solution ({known}), got {name!r}") from None
+        raise ValueError(f"Expected `{arg}` to be a {what} of the solution ({known}), got {name!r}") from None
     except AttributeError:
-        raise ValueError(f"Expected a LinkageSolution solved with order=2, got {sol!r}") from None
+        raise ValueError(f"Expected `sol` to be a LinkageSolution solved with order=2, got {sol!r}") from None
 
 
-def _kin(sol, name):
-    """Position, velocity and acceleration of a named point."""
-    return (_pick(sol, "points", "point", name), _pick(sol, "velocities", "point", name),
-            _pick(sol, "accelerations", "point", name))
+def _kin(sol, name, arg):
+    """Position, velocity and acceleration of a named point (the argument ``arg``)."""
+    return (_pick(sol, "points", "point", name, arg), _pick(sol, "velocities", "point", name, arg),
+            _pick(sol, "accelerations", "point", name, arg))
 
 
-def _rates(sol, link):
-    return _pick(sol, "omegas", "link", link), _pick(sol, "alphas", "link", link)
+def _rates(sol, link, arg):
+    return _pick(sol, "omegas", "link", link, arg), _pick(sol, "alphas", "link", link, arg)
 
 
 def _low(name):
@@ -183,10 +186,10 @@ def _fixed(v, a):
     return bool(np.all(v == 0) and np.all(a == 0))
 
 
-def _about(sol, point, pos, pivot, link, tip):
+def _about(sol, point, pos, pivot, link, tip, link_arg="link"):
     """Chains for the motion of ``point`` (at ``pos``) on ``link`` about ``pivot``."""
-    Q, vQ, aQ = _kin(sol, pivot)
-    w, al = _rates(sol, link)
+    Q, vQ, aQ = _kin(sol, pivot, "pivot")
+    w, al = _rates(sol, link, link_arg)
     r = pos - Q
     fixed = _fixed(vQ, aQ)
     rel = point if fixed else point + pivot
@@ -247,9 +250,9 @@ def relative_motion(sol, point, *, base, link, pivot=None, pivot_link=None):
     >>> m.acceleration.text
     'a_C^n + a_C^t = a_B + a_CB^n + a_CB^t'
     """
-    P, vP, aP = _kin(sol, point)
-    Q, vQ, aQ = _kin(sol, base)
-    w, al = _rates(sol, link)
+    P, vP, aP = _kin(sol, point, "point")
+    Q, vQ, aQ = _kin(sol, base, "base")
+    w, al = _rates(sol, link, "link")
     r = P - Q
     tip, bq, n_tip = _low(point), _low(base), "n_" + _low(point + base)
     rhs_v = (Term(f"v_{base}", POLE, bq, vQ), Term(f"v_{point}{base}", bq, tip, 1j * w * r))
@@ -258,7 +261,8 @@ def relative_motion(sol, point, *, base, link, pivot=None, pivot_link=None):
     if pivot is None:
         lhs_v, lhs_a = (Term(f"v_{point}", POLE, tip, vP),), (Term(f"a_{point}", POLE, tip, aP),)
     else:
-        lhs_v, lhs_a = _about(sol, point, P, pivot, link if pivot_link is None else pivot_link, tip)
+        lhs_v, lhs_a = _about(sol, point, P, pivot, link if pivot_link is None else pivot_link, tip,
+                              "link" if pivot_link is None else "pivot_link")
     return RelativeMotion(Equation(lhs_v, rhs_v), Equation(lhs_a, rhs_a))
 
 
@@ -313,15 +317,18 @@ def coincident_motion(sol, point, *, carrier, link, pivot):
     >>> round(float(abs(m.acceleration.rhs[1].vector)), 12)   # 2 sqrt(2) omega^2 l
     2.828427124746
     """
-    P, vP, aP = _kin(sol, point)
+    P, vP, aP = _kin(sol, point, "point")
     slides = getattr(sol, "slides", {})
+    if not all(isinstance(x, str) for x in (carrier, link)):      # link names are strings
+        raise InputTypeError(f"Expected `carrier` and `link` to be link names, got {(carrier, link)!r}")
     if (carrier, link) in slides:
         sl, sign = slides[(carrier, link)], -1.0
     elif (link, carrier) in slides:
         sl, sign = slides[(link, carrier)], 1.0
     else:
         pairs = ", ".join(map(str, sorted(slides))) or "none"
-        raise ValueError(f"Expected a sliding pair of the solution ({pairs}), got {(carrier, link)!r}")
+        raise ValueError(f"Expected (`carrier`, `link`) to be a sliding pair of the solution ({pairs}), "
+                         f"got {(carrier, link)!r}")
     if sl.a is None:
         raise ValueError(f"Expected a LinkageSolution solved with order=2, got {sol!r}")
     d = np.asarray(sl.direction)
@@ -345,6 +352,15 @@ def _polygon(kind, equations):
     return Polygon(kind, MappingProxyType(vertices), tuple(equations))
 
 
+def _motions(motions):
+    if isinstance(motions, (str, bytes)) or not hasattr(motions, "__iter__"):
+        raise InputTypeError(f"Expected `motions` to be a sequence of RelativeMotion, got {motions!r}")
+    motions = list(motions)
+    for k, m in enumerate(motions):
+        instance(f"motions[{k}]", m, RelativeMotion)
+    return motions
+
+
 def velocity_polygon(motions):
     """The velocity polygon of a sequence of `RelativeMotion` (pole ``"p"``).
 
@@ -360,7 +376,7 @@ def velocity_polygon(motions):
     >>> sorted(vp.vertices), vp.closure < 1e-9
     (['b', 'c', 'p'], True)
     """
-    return _polygon("velocity", [m.velocity for m in motions])
+    return _polygon("velocity", [m.velocity for m in _motions(motions)])
 
 
 def acceleration_polygon(motions):
@@ -374,17 +390,21 @@ def acceleration_polygon(motions):
     >>> complex(ap.vertices["c"]).real.__round__(6)
     -12500.0
     """
-    return _polygon("acceleration", [m.acceleration for m in motions])
+    return _polygon("acceleration", [m.acceleration for m in _motions(motions)])
 
 
 def _image(kind, sol, link, base, points):
-    Q, vQ, aQ = _kin(sol, base)
-    w, al = _rates(sol, link)
+    Q, vQ, aQ = _kin(sol, base, "base")
+    w, al = _rates(sol, link, "link")
+    if isinstance(points, (str, bytes)) or not hasattr(points, "__iter__"):
+        raise InputTypeError(f"Expected `points` to be point names or a mapping of names to points, got {points!r}")
     names = tuple(points) if not hasattr(points, "keys") else tuple(points.keys())
+    if not names:
+        raise ValueError(f"Expected `points` to name at least one point, got {points!r}")
     if hasattr(points, "keys"):
-        figure = np.stack([np.asarray(points[n], dtype=complex) * np.ones_like(Q) for n in names])
+        figure = np.stack([planar_points(f"points[{n!r}]", points[n]) * np.ones_like(Q) for n in names])
     else:
-        figure = np.stack([_pick(sol, "points", "point", n) for n in names])
+        figure = np.stack([_pick(sol, "points", "point", n, "points") for n in names])
     factor = 1j * w if kind == "velocity" else 1j * al - w * w
     start = vQ if kind == "velocity" else aQ
     tips = start + factor * (figure - Q)

@@ -14,9 +14,12 @@ import numpy as np
 from mech._generated import pressure_angle as _g
 from mech._generated.transmission_angle import fourbar_transmission
 from mech._scaling import length_scale
-from mech._validate import finite_array, positive_length, real_number
+from mech._validate import (
+    bool_flag, finite_array, instance, known_name, planar_points, positive_length, real_number,
+)
 from mech.planar._grashof import grashof
 from mech.planar._transmission import _lengths as _fourbar_lengths, check_assembled
+from mech.planar._linkage import LinkageSolution
 
 __all__ = [
     "pressure_angle",
@@ -41,14 +44,21 @@ def _acute(u, v):
     return _g.acute_angle(u.real, u.imag, v.real, v.imag)
 
 
+def _is_key(value, mapping):
+    try:
+        return value in mapping
+    except TypeError:            # an unhashable value is no name
+        return False
+
+
 def _force_direction(solution, joint, force):
     if isinstance(force, str):
         if force not in solution.points:
             raise ValueError(f"Expected `force` to be a point name or a direction, got {force!r}")
         return solution.points[joint] - solution.points[force]
-    u = np.asarray(force, dtype=complex)
-    if not np.all(np.isfinite(u)) or np.any(u == 0):
-        raise ValueError(f"Expected a finite, non-zero force direction, got {force!r}")
+    u = planar_points("force", force)
+    if np.any(u == 0):
+        raise ValueError(f"Expected a non-zero `force` direction, got {force!r}")
     return u
 
 
@@ -112,15 +122,15 @@ def pressure_angle(solution, joint, force, *, follower=None):
     >>> round(float(np.degrees(pressure_angle(sol, "C", "B"))), 4)
     45.5847
     """
+    instance("solution", solution, LinkageSolution)
     if solution.order < 1:
         raise ValueError(f"Expected a solution with velocities (order >= 1), got order {solution.order}")
-    if joint not in solution.points:
-        raise ValueError(f"Expected `joint` to be a point of the linkage, got {joint!r}")
+    known_name("joint", joint, tuple(solution.points))
     u = _force_direction(solution, joint, force)
     if follower is None:
         v = solution.velocities[joint]
     else:
-        if follower not in solution.omegas:
+        if not _is_key(follower, solution.omegas):
             raise ValueError(f"Expected `follower` to be a moving link, got {follower!r}")
         v = _follower_velocity(solution, joint, follower)
     return _float(_acute(u, v))
@@ -164,8 +174,9 @@ def joint_transmission_angle(solution, joint, force, *, follower=None, pivot=Non
     """
     if pivot is None:
         return _float(np.pi / 2 - pressure_angle(solution, joint, force, follower=follower))
-    if pivot not in solution.points:
-        raise ValueError(f"Expected `pivot` to be a point of the linkage, got {pivot!r}")
+    instance("solution", solution, LinkageSolution)
+    known_name("joint", joint, tuple(solution.points))
+    known_name("pivot", pivot, tuple(solution.points))
     u = _force_direction(solution, joint, force)
     return _float(_acute(u, solution.points[joint] - solution.points[pivot]))
 
@@ -435,6 +446,7 @@ def watt_transmission_angles(solution):
     >>> round(float(np.degrees(g1)), 4), round(float(np.degrees(g2)), 4)
     (36.3361, 78.5128)
     """
+    instance("solution", solution, LinkageSolution)
     need = {"B", "C", "D", "E", "F", "G"} - set(solution.points)
     if need:
         raise ValueError(f"Expected a solved Watt six-bar with points B, C, D, E, F, G, missing {sorted(need)}")
@@ -453,4 +465,5 @@ def design_check(gamma_min, *, high_speed=False):
     (True, False)
     """
     g = real_number("gamma_min", gamma_min)
+    high_speed = bool_flag("high_speed", high_speed)
     return bool(g >= np.radians(50.0 if high_speed else 40.0))

@@ -12,7 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated.efficiency import screw_geometry, screw_jack as _screw_jack
-from mech._validate import finite_array
+from mech._validate import (
+    finite_array, integer, nonnegative_number, option, positive_length, real_number, real_tuple,
+)
 from mech.planar._friction import _nonnegative, _out, _positive, collar_friction_radius
 
 __all__ = ["ScrewJack", "ScrewResult", "lead_angle", "thread_friction_angle", "screw_efficiency"]
@@ -51,8 +53,7 @@ def lead_angle(pitch, d2, starts=1):
     >>> round(float(np.degrees(lead_angle(4.0, 22.0))), 4)
     3.3123
     """
-    if isinstance(starts, bool) or not isinstance(starts, (int, np.integer)) or starts < 1:
-        raise ValueError(f"Expected `starts` to be a positive integer, got {starts!r}")
+    starts = integer("starts", starts, minimum=1, maximum=10**6)
     p, d = _positive("pitch", pitch), _positive("d2", d2)
     return _out(screw_geometry(starts * p, d, 0.0, 0.0)[0])
 
@@ -211,6 +212,21 @@ class ScrewJack:
     collar: tuple = None
     mu_collar: float = None
     collar_condition: str = "new"
+
+    def __post_init__(self):
+        for name in ("d2", "pitch"):
+            object.__setattr__(self, name, positive_length(name, getattr(self, name)))
+        object.__setattr__(self, "mu", nonnegative_number("mu", self.mu))
+        object.__setattr__(self, "starts", integer("starts", self.starts, minimum=1, maximum=10**6))
+        object.__setattr__(self, "flank_angle", real_number("flank_angle", self.flank_angle))
+        if self.collar is not None:
+            outer, inner = real_tuple("collar", self.collar, 2)
+            if not outer > inner >= 0.0:
+                raise ValueError(f"Expected `collar` = (D, d0) with D > d0 >= 0, got {self.collar!r}")
+            object.__setattr__(self, "collar", (outer, inner))
+        if self.mu_collar is not None:
+            object.__setattr__(self, "mu_collar", nonnegative_number("mu_collar", self.mu_collar))
+        option("collar_condition", self.collar_condition, ("new", "run-in"))
 
     @property
     def lead_angle(self):

@@ -7,8 +7,10 @@ import numpy as np
 
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
-from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
-from mech._pose import Pose, mask_singular_rates
+from mech._validate import (
+    bool_flag, branch_sign, finite_array, nonnegative_int, positive_length, real_number,
+)
+from mech._pose import mask_singular_rates, Pose
 from mech._scaling import length_scale
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
@@ -202,6 +204,7 @@ class SliderCrank:
         >>> SliderCrank(1.0, 4.0).solve(np.linspace(0, np.pi, 7)).x.shape
         (7,)
         """
+        strict = bool_flag("strict", strict)
         order = nonnegative_int("order", order, 2)
         theta = finite_array("theta", theta)
         args = self._unit

@@ -8,7 +8,7 @@ roles of crank and rod exchanged; see :ref:`deriv-special-mechanisms`.
 import numpy as np
 
 from mech._generated import special_mechanisms as _gen
-from mech._validate import finite_array, nonnegative_int, positive_length
+from mech._validate import bool_flag, finite_array, nonnegative_int, positive_length
 from mech.planar._guide_bar import GuideBar
 from mech._pose import Pose, mask_singular_rates
 from mech._scaling import length_scale
@@ -149,6 +149,7 @@ class RotatingGuideBar:
         >>> float(pose.psi), float(pose.rho), float(pose.omega_guide)
         (0.0, 1.0, 2.0)
         """
+        strict = bool_flag("strict", strict)
         order, theta, omega, alpha = _inputs(order, theta, omega, alpha)
         a, d = self._unit
         equal = a == d
@@ -248,6 +249,7 @@ class SwingingBlock:
         >>> float(SwingingBlock(1.0, 2.0).solve(np.pi).rho)
         3.0
         """
+        strict = bool_flag("strict", strict)
         if isinstance(self._inner, GuideBar):
             return self._inner.solve(theta, order=order, omega=omega, alpha=alpha)
         return self._inner.solve(theta, order=order, omega=omega, alpha=alpha, strict=strict)

@@ -11,13 +11,14 @@ whose sizes depend on the reactions; that nonlinear system is solved by Newton's
 
 from __future__ import annotations
 
-import math
 from types import MappingProxyType
 
 import numpy as np
 
-from mech._errors import AssemblyError
+from mech._errors import AssemblyError, InputTypeError
 from mech._generated import statics as _g
+from mech._validate import finite_array, instance, integer, nonnegative_number, planar_points
+from mech.planar._linkage import LinkageSolution
 
 __all__ = ["StaticForces", "static_forces", "as_linkage"]
 
@@ -67,7 +68,7 @@ def as_linkage(mechanism):
                 .crank("crank", pivot="A", tip="B", length=mechanism.a)
                 .rrp(("rod", "slider"), pin="B", guide=Guide(GROUND, complex(0.0, mechanism.e), 0.0),
                      joint="C", length=mechanism.b, branch=mechanism.branch))
-    raise ValueError(f"Expected a FourBar or a SliderCrank, got {type(mechanism).__name__}")
+    raise InputTypeError(f"Expected `mechanism` to be a FourBar or a SliderCrank, got {type(mechanism).__name__}")
 
 
 # ----------------------------------------------------------------------------- the pairs
@@ -300,6 +301,8 @@ class StaticForces:
 def _load_table(sol, forces, couples):
     lk = sol.linkage
     pts, links = lk._points, set(lk.links)
+    if forces is not None and (isinstance(forces, (str, bytes)) or not hasattr(forces, "__iter__")):
+        raise InputTypeError(f"Expected `forces` to be a mapping of points to forces, got {forces!r}")
     items = forces.items() if hasattr(forces, "items") else (forces or ())
     out_f = []
     for key, f in items:
@@ -307,16 +310,14 @@ def _load_table(sol, forces, couples):
         lk._need_point(point)
         link = pts[point] if link is None else link
         lk._need_link(link)
-        f = np.asarray(f, dtype=complex)
-        if not np.all(np.isfinite(f)):
-            raise ValueError(f"Expected finite force at {point!r}, got {f!r}")
+        f = planar_points(f"forces[{point!r}]", f)
         out_f.append((link, point, f))
     out_c = []
+    if couples is not None and not hasattr(couples, "items"):
+        raise InputTypeError(f"Expected `couples` to be a mapping of links to couples, got {couples!r}")
     for link, m in dict(couples or {}).items():
         lk._need_link(link)
-        m = np.asarray(m, dtype=float)
-        if not np.all(np.isfinite(m)):
-            raise ValueError(f"Expected a finite couple on {link!r}, got {m!r}")
+        m = finite_array(f"couples[{link!r}]", m)
         out_c.append((link, m))
     if any(link == GROUND for link, _, _ in out_f) or any(link == GROUND for link, _ in out_c):
         raise ValueError("Expected loads on moving links, got a load on 'ground'")
@@ -332,16 +333,11 @@ def _coefficients(pairs, value, kind, what):
             raise ValueError(f"Expected `{what}` keys among {sorted(names, key=str)}, got {unknown[0]!r}")
         table = dict(value)
     else:
-        v = float(value)
-        if not math.isfinite(v) or v < 0:       # checked even where no pair of this kind exists
-            raise ValueError(f"Expected `{what}` >= 0, got {v!r}")
+        v = nonnegative_number(what, value)     # checked even where no pair of this kind exists
         table = {n: v for n in names}
     out = {}
     for k, v in table.items():
-        v = float(v)
-        if not math.isfinite(v) or v < 0:
-            raise ValueError(f"Expected `{what}` >= 0, got {v!r} for {k!r}")
-        out[k] = v
+        out[k] = nonnegative_number(f"{what}[{k!r}]", v)
     return [out.get(p.name if kind == "R" else p.slide, 0.0) if p.kind == kind else 0.0 for p in pairs]
 
 
@@ -437,6 +433,9 @@ def static_forces(solution, forces=None, couples=None, *, rho=0.0, mu=0.0, tol=1
     True
     """
     sol = solution
+    instance("solution", solution, LinkageSolution)
+    tol = nonnegative_number("tol", tol)
+    max_iter = integer("max_iter", max_iter, minimum=1)
     _check_valid(sol)
     shape = sol.valid.shape
     pairs = _pairs(sol)

@@ -10,21 +10,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._errors import AssemblyError
+from mech._errors import AssemblyError, InputTypeError
 from mech._scaling import length_scale
-from mech._validate import finite_array, positive_length
+from mech._validate import (
+    bool_flag, finite_array, integer, nonnegative_number, planar_point, positive_length, real_number,
+)
 
 __all__ = ["TriadPose", "TriadSixBar"]
 
 
 def _complex_point(name, value):
-    try:
-        z = complex(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"Expected `{name}` to be a complex number, got {value!r}") from None
-    if not np.isfinite(z.real) or not np.isfinite(z.imag):
-        raise ValueError(f"Expected finite `{name}`, got {z!r}")
-    return z
+    return planar_point(name, value)
 
 
 @dataclass(frozen=True)
@@ -106,7 +102,7 @@ class TriadSixBar:
     def __init__(self, a, b, cd, ce, angle, g, f, G, F):
         self.a, self.b, self.cd, self.ce, self.g, self.f = (
             positive_length(n, v) for n, v in zip(("a", "b", "cd", "ce", "g", "f"), (a, b, cd, ce, g, f)))
-        self.angle = float(finite_array("angle", angle))
+        self.angle = real_number("angle", angle)
         self.G, self.F = _complex_point("G", G), _complex_point("F", F)
         self._scale = length_scale(self.a, self.b, self.cd, self.ce, self.g, self.f,
                                    self.G.real, self.G.imag, self.F.real, self.F.imag)
@@ -161,10 +157,15 @@ class TriadSixBar:
         AssemblyError
             With ``strict=True``, naming the first input angle that did not converge.
         """
+        strict = bool_flag("strict", strict)
         theta = finite_array("theta", theta)
-        omega = float(finite_array("omega", omega))
+        omega = real_number("omega", omega)
+        tol = nonnegative_number("tol", tol)
+        max_iter = integer("max_iter", max_iter, minimum=1)
+        if not isinstance(start, (tuple, list)) or len(start) != 2:
+            raise InputTypeError(f"Expected `start` = (C, phi), a point and an angle, got {start!r}")
         C0 = _complex_point("start[0]", start[0]) / self._scale
-        q = np.array([C0.real, C0.imag, float(finite_array("start[1]", start[1]))])
+        q = np.array([C0.real, C0.imag, real_number("start[1]", start[1])])
         a, b, _, _, g, f, G, F = self._unit
         size = sum(self._unit[:6])
         flat = theta.reshape(-1)

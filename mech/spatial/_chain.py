@@ -10,10 +10,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._errors import InputTypeError
 from mech._generated import open_chains as _gen
 from mech._pose import Pose
 from mech._scaling import length_scale_array
-from mech._validate import finite_array, nonnegative_int, positive_length, real_number
+from mech._validate import finite_array, nonnegative_int, option, positive_length, real_number
 from mech.spatial._transforms import hd
 
 __all__ = ["Joint", "OpenChain", "ChainPose", "example_2_25_manipulator", "example_2_25_pose",
@@ -46,8 +47,7 @@ class Joint:
     pitch: float = 0.0
 
     def __post_init__(self):
-        if self.kind not in _KINDS:
-            raise ValueError(f"Expected `kind` in {sorted(_KINDS)}, got {self.kind!r}")
+        option("kind", self.kind, sorted(_KINDS))
         for name in ("phi", "lam", "s", "h", "pitch"):
             object.__setattr__(self, name, real_number(name, getattr(self, name)))
         if self.kind != "H" and self.pitch != 0.0:
@@ -120,9 +120,11 @@ class OpenChain:
     """
 
     def __init__(self, joints):
+        if isinstance(joints, (str, bytes)) or not hasattr(joints, "__iter__"):
+            raise InputTypeError(f"Expected `joints` to be a non-empty sequence of Joint, got {joints!r}")
         joints = tuple(joints)
         if not joints or not all(isinstance(j, Joint) for j in joints):
-            raise ValueError(f"Expected a non-empty sequence of Joint, got {joints!r}")
+            raise ValueError(f"Expected `joints` to be a non-empty sequence of Joint, got {joints!r}")
         self.joints = joints
         self.dof = sum(j.dof for j in joints)
 

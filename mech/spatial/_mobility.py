@@ -1,5 +1,10 @@
 """Degrees of freedom of a spatial linkage by counting constraints (F67, seed line 3442)."""
 
+import numbers
+
+import numpy as np
+
+from mech._errors import InputTypeError
 from mech._validate import nonnegative_int
 
 __all__ = ["PAIR_FREEDOMS", "mobility"]
@@ -47,8 +52,11 @@ def mobility(moving_links, pairs):
     """
     n = nonnegative_int("moving_links", moving_links, 10**6)
     total = 6 * n
+    if isinstance(pairs, (bytes, bool, np.bool_, numbers.Number)) or not hasattr(pairs, "__iter__"):
+        raise InputTypeError(f"Expected `pairs` to be pair letters such as 'RSSR', got {pairs!r}")
     for p in pairs:
-        if p not in PAIR_FREEDOMS:
-            raise ValueError(f"Expected pair letters among {', '.join(PAIR_FREEDOMS)}, got {p!r}")
+        if not isinstance(p, str) or p not in PAIR_FREEDOMS:
+            raise ValueError(f"Expected `pairs` to be pair letters among {', '.join(PAIR_FREEDOMS)}, "
+                             f"got {p!r} in {pairs!r}")
         total -= 6 - PAIR_FREEDOMS[p]
     return total

@@ -5,8 +5,8 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
-from mech._pose import Pose, mask_singular_rates
-from mech._validate import branch_sign, finite_array, nonnegative_int, real_number
+from mech._pose import mask_singular_rates, Pose
+from mech._validate import bool_flag, branch_sign, finite_array, nonnegative_int, real_number
 
 __all__ = ["RCCC", "RCCCPose"]
 
@@ -135,6 +135,7 @@ class RCCC:
         >>> pose.valid.tolist()
         [True, True]
         """
+        strict = bool_flag("strict", strict)
         from mech.spherical._dual import Dual
         from mech.spherical._transference import dual_fourbar_joints
 

@@ -7,8 +7,10 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import rssr as _gen
-from mech._validate import branch_sign, finite_array, motion_inputs, positive_length, real_number
-from mech._pose import Pose, mask_singular_rates
+from mech._validate import (
+    bool_flag, branch_sign, finite_array, motion_inputs, positive_length, real_number, real_tuple,
+)
+from mech._pose import mask_singular_rates, Pose
 from mech._scaling import length_scale
 
 __all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
@@ -134,13 +136,7 @@ class RSSR:
         self._s0, self._s3, self._h0, self._lam = (
             real_number(n, v) for n, v in (("s0", s0), ("s3", s3), ("h0", h0), ("lam", lam)))
         self._branch = branch_sign(branch)
-        try:
-            p, q, u = (float(v) for v in coupler)
-        except (TypeError, ValueError):
-            raise ValueError(f"Expected `coupler` to be three numbers (p, q, u), got {coupler!r}") from None
-        if not all(np.isfinite((p, q, u))):
-            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
-        self._coupler = (p, q, u)
+        self._coupler = real_tuple("coupler", coupler, 3)
         self._scale = length_scale(self._l1, self._l2, self._l3, self._s0, self._s3, self._h0)
         # the generated formulas see lengths of order one only (see mech._scaling)
         self._unit = tuple(x / self._scale for x in
@@ -276,6 +272,7 @@ class RSSR:
         >>> pose.valid.tolist(), pose.aC.shape
         ([True, True], (2, 3))
         """
+        strict = bool_flag("strict", strict)
         order, shape, (phi01, *rates) = motion_inputs("phi01", phi01, order, omega, alpha)
         l1, l2, l3, s0, s3, h0, lam = dims = self._dims()
         sigma = self._branch

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import finite_array
+from mech._validate import finite_array, vector3
 from mech.spherical._coordinates import _cross_accurate, _vectors, distance, local_frame
 from mech.spherical._coordinates import _norm as _robust_norm
 from mech.spherical._rigid_body import _great_circle_normal
@@ -49,7 +49,7 @@ class Circle:
     def residual(self, p):
         """Signed arc from the circle to the points `p`: distance(pole, p) - radius
         (negative inside, toward the pole)."""
-        return distance(self.pole, p) - self.radius
+        return distance(self.pole, vector3("p", p)) - self.radius
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,8 @@ function written for arrays runs unchanged on dual arguments.
 
 import numpy as np
 
+from mech._validate import real_array
+
 __all__ = ["Dual", "dual"]
 
 
@@ -32,6 +34,12 @@ class Dual:
     ----------
     real, dual : array_like
         Real and dual parts; they broadcast against each other.
+
+    Raises
+    ------
+    ValueError
+        If a part is not finite or the shapes do not broadcast; `mech.InputTypeError` (also
+        a ``TypeError``) if a part is complex, boolean, a string or another object.
 
     Notes
     -----
@@ -60,7 +68,24 @@ class Dual:
     __slots__ = ("_re", "_du")
 
     def __init__(self, real, dual=0.0):
-        re, du = np.broadcast_arrays(np.asarray(real, dtype=float), np.asarray(dual, dtype=float))
+        re, du = real_array("real", real), real_array("dual", dual)
+        try:
+            np.broadcast_shapes(re.shape, du.shape)
+        except ValueError:
+            raise ValueError(f"Expected `real` and `dual` shapes that broadcast together, "
+                             f"got {re.shape} and {du.shape}") from None
+        self._set(re, du)
+
+    @classmethod
+    def _raw(cls, real, dual=0.0):
+        """A dual number from parts already known to be real arrays (NaN allowed): the
+        arithmetic below builds its results with this, unchecked."""
+        new = object.__new__(cls)
+        new._set(np.asarray(real, dtype=float), np.asarray(dual, dtype=float))
+        return new
+
+    def _set(self, re, du):
+        re, du = np.broadcast_arrays(re, du)
         re, du = re.copy(), du.copy()
         re.flags.writeable = False
         du.flags.writeable = False
@@ -78,35 +103,35 @@ class Dual:
         return f"Dual({np.array2string(self._re)}, {np.array2string(self._du)})"
 
     def __getitem__(self, index):
-        return Dual(self._re[index], self._du[index])
+        return Dual._raw(self._re[index], self._du[index])
 
     # arithmetic -------------------------------------------------------------------
     def __add__(self, other):
-        return Dual(self._re + _part(other), self._du + _dpart(other))
+        return Dual._raw(self._re + _part(other), self._du + _dpart(other))
 
     __radd__ = __add__
 
     def __sub__(self, other):
-        return Dual(self._re - _part(other), self._du - _dpart(other))
+        return Dual._raw(self._re - _part(other), self._du - _dpart(other))
 
     def __rsub__(self, other):
-        return Dual(_part(other) - self._re, _dpart(other) - self._du)
+        return Dual._raw(_part(other) - self._re, _dpart(other) - self._du)
 
     def __mul__(self, other):
         o_re, o_du = _part(other), _dpart(other)
-        return Dual(self._re * o_re, self._re * o_du + self._du * o_re)
+        return Dual._raw(self._re * o_re, self._re * o_du + self._du * o_re)
 
     __rmul__ = __mul__
 
     def __truediv__(self, other):
         o_re, o_du = _part(other), _dpart(other)
-        return Dual(self._re / o_re, (self._du * o_re - self._re * o_du) / (o_re * o_re))
+        return Dual._raw(self._re / o_re, (self._du * o_re - self._re * o_du) / (o_re * o_re))
 
     def __rtruediv__(self, other):
-        return Dual(other) / self
+        return Dual._raw(other) / self
 
     def __neg__(self):
-        return Dual(-self._re, -self._du)
+        return Dual._raw(-self._re, -self._du)
 
     def __pos__(self):
         return self
@@ -115,7 +140,7 @@ class Dual:
         if isinstance(exponent, Dual):
             raise TypeError("Expected a real exponent for a Dual power, got a Dual")
         p = np.asarray(exponent, dtype=float)
-        return Dual(self._re**p, p * self._re ** (p - 1.0) * self._du)
+        return Dual._raw(self._re**p, p * self._re ** (p - 1.0) * self._du)
 
     # NumPy functions --------------------------------------------------------------
     def __array_ufunc__(self, ufunc, method, *inputs, **kwargs):
@@ -130,28 +155,28 @@ class Dual:
 
 def _unary(f, df):
     def rule(x):
-        x = x if isinstance(x, Dual) else Dual(x)
-        return Dual(f(x.real_part), df(x.real_part) * x.dual_part)
+        x = x if isinstance(x, Dual) else Dual._raw(x)
+        return Dual._raw(f(x.real_part), df(x.real_part) * x.dual_part)
     return rule
 
 
 def _atan2(y, x):
     y_re, y_du, x_re, x_du = _part(y), _dpart(y), _part(x), _dpart(x)
-    return Dual(np.arctan2(y_re, x_re), (x_re * y_du - y_re * x_du) / (x_re * x_re + y_re * y_re))
+    return Dual._raw(np.arctan2(y_re, x_re), (x_re * y_du - y_re * x_du) / (x_re * x_re + y_re * y_re))
 
 
 def _hypot(x, y):
     x_re, x_du, y_re, y_du = _part(x), _dpart(x), _part(y), _dpart(y)
     r = np.hypot(x_re, y_re)
-    return Dual(r, (x_re * x_du + y_re * y_du) / r)
+    return Dual._raw(r, (x_re * x_du + y_re * y_du) / r)
 
 
 _RULES = {
-    np.add: lambda x, y: Dual(_part(x), _dpart(x)) + y,
-    np.subtract: lambda x, y: Dual(_part(x), _dpart(x)) - y,
-    np.multiply: lambda x, y: Dual(_part(x), _dpart(x)) * y,
-    np.true_divide: lambda x, y: Dual(_part(x), _dpart(x)) / y,
-    np.power: lambda x, p: Dual(_part(x), _dpart(x)) ** p,
+    np.add: lambda x, y: Dual._raw(_part(x), _dpart(x)) + y,
+    np.subtract: lambda x, y: Dual._raw(_part(x), _dpart(x)) - y,
+    np.multiply: lambda x, y: Dual._raw(_part(x), _dpart(x)) * y,
+    np.true_divide: lambda x, y: Dual._raw(_part(x), _dpart(x)) / y,
+    np.power: lambda x, p: Dual._raw(_part(x), _dpart(x)) ** p,
     np.negative: lambda x: -x,
     np.positive: lambda x: x,
     np.square: lambda x: x * x,

@@ -6,7 +6,9 @@ from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
 from mech.spherical._fourbar_branch import change_gaps, solve_change_point
 from mech._pose import Pose
-from mech._validate import arc as _arc, branch_sign, motion_inputs, nonnegative_int, real_number
+from mech._validate import (
+    arc as _arc, bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_int, real_number, real_tuple,
+)
 from mech.spatial import AssemblyRange
 
 __all__ = ["SphericalFourBar", "SphericalFourBarPose", "ground_frame"]
@@ -23,12 +25,9 @@ _RATE_ORDER = {**{k: 1 for k in ("omega_output", "w_input", "w_coupler", "w_outp
 
 def _rotation(frame, tol=1e-9):
     """Return `frame` as a 3x3 float array after checking it is a proper rotation."""
-    try:
-        R = np.array(frame, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got {frame!r}") from None
-    if R.shape != (3, 3) or not np.all(np.isfinite(R)):
-        raise ValueError(f"Expected `frame` to be a finite 3x3 rotation matrix, got {frame!r}")
+    R = finite_array("frame", frame)
+    if R.shape != (3, 3):
+        raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got shape {R.shape}")
     # entries of a rotation are at most 1 in size: test that first, so that R.T @ R
     # cannot overflow
     if np.max(np.abs(R)) > 1.0 + tol or np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
@@ -159,13 +158,7 @@ class SphericalFourBar:
             raise ValueError(f"Expected `rtol` in [0, 1e-3), got {rtol!r}")
         self._gaps = change_gaps(self._a, self._b, self._c, self._d, rtol)
         self._branch = branch_sign(branch)
-        try:
-            r, gamma = (float(v) for v in coupler)
-        except (TypeError, ValueError):
-            raise ValueError(f"Expected `coupler` to be a pair of numbers (r, gamma), got {coupler!r}") from None
-        if not (np.isfinite(r) and np.isfinite(gamma)):
-            raise ValueError(f"Expected finite `coupler`, got {coupler!r}")
-        self._coupler = (r, gamma)
+        self._coupler = real_tuple("coupler", coupler, 2)
         self._frame = None if frame is None else _rotation(frame)
 
     a = property(lambda self: self._a, doc="Input arc AB.")
@@ -242,6 +235,7 @@ class SphericalFourBar:
         >>> pose.valid.tolist(), pose.aP.shape
         ([True, True], (2, 3))
         """
+        strict = bool_flag("strict", strict)
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size

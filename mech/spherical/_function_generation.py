@@ -12,7 +12,7 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
-from mech._validate import arc as _arc, finite_array, real_number
+from mech._validate import MAX_COUNT, arc as _arc, bool_flag, finite_array, integer, option, real_number
 
 __all__ = [
     "FunctionGenerator",
@@ -162,8 +162,7 @@ def chebyshev_spacing(x0, x1, n):
     x0, x1 = real_number("x0", x0), real_number("x1", x1)
     if not x1 > x0:
         raise ValueError(f"Expected `x1` > `x0`, got x0 = {x0!r}, x1 = {x1!r}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"Expected `n` to be a positive integer, got {n!r}")
+    n = integer("n", n, minimum=1, maximum=MAX_COUNT)
     i = np.arange(1, n + 1)
     return 0.5 * (x0 + x1) - 0.5 * (x1 - x0) * np.cos((2 * i - 1) * np.pi / (2 * n))
 
@@ -396,6 +395,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=None, keep_defective=Fals
     n = x.size
     theta0 = None if theta0 is None else real_number("theta0", theta0)
     psi0 = None if psi0 is None else real_number("psi0", psi0)
+    keep_defective = bool_flag("keep_defective", keep_defective)
     unknown_starts = (theta0 is None) + (psi0 is None)
     if n > 6:
         raise ValueError(f"Expected at most 6 precision pairs (use least_squares for more), got {n}")
@@ -492,8 +492,8 @@ def least_squares(x, y, theta0, psi0, *, kind="structural", fit_start=False, sta
     """
     x, y = _pairs(x, y, 4)
     theta0, psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
-    if kind not in ("structural", "equation"):
-        raise ValueError(f"Expected `kind` 'structural' or 'equation', got {kind!r}")
+    kind = option("kind", kind, ("structural", "equation"))
+    fit_start = bool_flag("fit_start", fit_start)
     if start is None:
         G, h = _rows(theta0 + x, psi0 + y)
         k = np.linalg.lstsq(G, h, rcond=None)[0]

@@ -23,7 +23,7 @@ from types import MappingProxyType
 import numpy as np
 
 from mech._generated import spherical_polygons as _gen
-from mech._validate import arc_array as _arcs, finite_array
+from mech._validate import arc_array as _arcs, finite_array, option
 from mech.spherical._coordinates import _norm
 
 __all__ = [
@@ -403,8 +403,7 @@ class PolygonRelations(Mapping):
 
     def family(self, name):
         """Stack of the residuals of one family ("sine", "sine-cosine", "cosine"), laws last."""
-        if name not in _FAMILIES:
-            raise ValueError(f"Expected `name` in {_FAMILIES}, got {name!r}")
+        option("name", name, _FAMILIES)
         return np.stack([v for key, v in self._residuals.items() if key.split("(")[0] == name], axis=-1)
 
     def worst(self):

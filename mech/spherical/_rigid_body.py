@@ -278,6 +278,7 @@ def turn(a, b, gamma):
     >>> turn([0, 0, 1], [1, 0, 1], np.pi / 2).round(12) + 0.0
     array([0.        , 0.70710678, 0.70710678])
     """
+    a, b, gamma = _vectors("a", a), _vectors("b", b), finite_array("gamma", gamma)
     return rotate_about(b, a, gamma)
 
 

@@ -15,7 +15,7 @@ from mech._generated.spherical_types import (
     isogram_ratios,
     spherical_slider_limits,
 )
-from mech._validate import arc as _arc, branch_sign, finite_array, real_number
+from mech._validate import arc as _arc, bool_flag, branch_sign, finite_array, real_number
 from mech.planar import time_ratio
 from mech.spherical._fourbar import SphericalFourBar
 
@@ -163,6 +163,7 @@ def isogram_output(theta, a, b, *, crossed=False):
     """
     theta = finite_array("theta", theta)
     a, b = _arc("a", a), _arc("b", b)
+    crossed = bool_flag("crossed", crossed)
     if crossed and a == b:
         raise ValueError(f"Expected `a` != `b` for the crossed isogram, got a = b = {a!r}")
     k_par, k_cross = (float(k) for k in isogram_ratios(a, b))

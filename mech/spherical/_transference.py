@@ -83,9 +83,9 @@ def dual_fourbar_output(a_hat, b_hat, c_hat, d_hat, theta_hat, branch=1):
     A, B, C = _abc.spherical_fourbar_abc(*arcs, theta)
     disc = _abc.abc_discriminant(A, B, C)
     ok = disc.real_part >= 0.0
-    root = np.sqrt(Dual(np.where(ok, disc.real_part, 1.0), np.where(ok, disc.dual_part, 0.0)))
+    root = np.sqrt(Dual._raw(np.where(ok, disc.real_part, 1.0), np.where(ok, disc.dual_part, 0.0)))
     psi = _abc.abc_solve(A, B, C, root, sigma)
-    return Dual(np.where(ok, psi.real_part, np.nan), np.where(ok, psi.dual_part, np.nan))
+    return Dual._raw(np.where(ok, psi.real_part, np.nan), np.where(ok, psi.dual_part, np.nan))
 
 
 def _cross(u, v):

@@ -91,7 +91,7 @@ def test_exercises_numbers():
 
 
 def test_get_unknown_number():
-    with pytest.raises(ValueError, match="Expected an exercise number among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, got '2-9'"):
+    with pytest.raises(ValueError, match="Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, got '2-9'"):
         ex.get("2-9")
 
 
@@ -389,7 +389,7 @@ def test_main_unknown_number(capsys):
     with pytest.raises(SystemExit) as info:
         main(["variant", "2-9"])
     assert info.value.code == 2
-    assert "Expected an exercise number among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, got '2-9'" in capsys.readouterr().err
+    assert "Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, got '2-9'" in capsys.readouterr().err
 
 
 def test_main_invalid_values(capsys):

@@ -66,7 +66,7 @@ def test_coupler_dashes_lattice_shapes(shape):
 def test_coupler_dashes_errors():
     with pytest.raises(ValueError, match="Expected `b` > 0"):
         coupler_dashes(1, -2, 2.5, 3, 0j)
-    with pytest.raises(ValueError, match="Expected `n` to be an integer >= 3"):
+    with pytest.raises(ValueError, match="Expected `n` to be an integer in \\[3, 10000000\\]"):
         coupler_dashes(1, 2, 2.5, 3, 0j, n=2)
     with pytest.raises(ValueError, match="Expected finite `coupler`"):
         coupler_dashes(1, 2, 2.5, 3, [0j, np.nan])

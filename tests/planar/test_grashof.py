@@ -333,9 +333,9 @@ def test_kind_intervals_cover_and_agree(vary):
 def test_kind_intervals_bad_input():
     with pytest.raises(ValueError, match="Expected `vary`"):
         kind_intervals((1, 2, 3), "e")
-    with pytest.raises(ValueError, match="Expected `a` > 0"):
+    with pytest.raises(ValueError, match=r"Expected `lengths\[.a.\]` > 0"):
         kind_intervals((-1, 2, 3), "d")
-    with pytest.raises(ValueError, match="Expected `c` > 0"):
+    with pytest.raises(ValueError, match=r"Expected `lengths\[.c.\]` > 0"):
         kind_intervals({"a": 1, "b": 2, "c": 0}, "d")
     with pytest.raises(ValueError, match="Expected 3 fixed lengths"):
         kind_intervals((1, 2), "d")

@@ -255,10 +255,10 @@ def test_linkage_rejects_bad_input():
     lk = Linkage({"A": 0, "D": 35})
     with pytest.raises(ValueError, match=r"Expected `length of crank` > 0, got -1.0"):
         lk.crank("crank", pivot="A", tip="B", length=-1)
-    with pytest.raises(ValueError, match=r"known point, got 'Z'"):
+    with pytest.raises(ValueError, match=r"known point for `pivot`, got 'Z'"):
         lk.crank("crank", pivot="Z", tip="B", length=1)
     lk2 = lk.crank("crank", pivot="A", tip="B", length=10)
-    with pytest.raises(ValueError, match=r"new link name, got 'crank'"):
+    with pytest.raises(ValueError, match=r"new link name for `link`, got 'crank'"):
         lk2.crank("crank", pivot="A", tip="B2", length=1)
     with pytest.raises(ValueError, match=r"branch.*got 0"):
         lk2.rrr(("b", "c"), pins=("B", "D"), joint="C", lengths=(40, 30), branch=0)

@@ -31,7 +31,7 @@ def test_lead_angle_exercise_2_24():
 
 
 def test_lead_angle_bad_starts():
-    with pytest.raises(ValueError, match="positive integer, got 0"):
+    with pytest.raises(ValueError, match=r"Expected `starts` to be an integer in \[1, 1000000\], got 0"):
         lead_angle(4.0, 22.0, starts=0)
 
 

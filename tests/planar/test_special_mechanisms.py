@@ -372,7 +372,7 @@ def test_solve_order_fields():
     (lambda: RotatingGuideBar(0.5, 1.0), "Expected `a` >= `d`"),
     (lambda: RotatingGuideBar(-1.0, 1.0), "Expected `a` > 0"),
     (lambda: EllipticTrammel(0.0), "Expected `L` > 0"),
-    (lambda: EllipticTrammel(1.0, point=(np.nan, 0)), "Expected finite `p`"),
+    (lambda: EllipticTrammel(1.0, point=(np.nan, 0)), "Expected finite `point`"),
     (lambda: EllipticTrammel(1.0, point=3), "Expected `point`"),
     (lambda: EllipticTrammel.from_crank(-2), "Expected `a` > 0"),
     (lambda: ScotchYoke(np.inf), "Expected `a` > 0"),

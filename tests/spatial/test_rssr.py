@@ -227,7 +227,7 @@ def test_solve_invalid_is_nan_and_strict_raises():
     ({"h0": np.nan}, r"Expected finite `h0`, got nan"),
     ({"lam": "x"}, r"Expected `lam` to be a real number"),
     ({"branch": 0}, r"Expected `branch` to be \+1 or -1, got 0"),
-    ({"coupler": (1.0, 2.0)}, r"Expected `coupler` to be three numbers"),
+    ({"coupler": (1.0, 2.0)}, r"Expected `coupler` to be 3 numbers"),
 ])
 def test_rssr_bad_input(kwargs, message):
     args = dict(l1=1.0, l2=4.0, l3=2.0, s0=0.5, s3=0.8, h0=3.0, lam=1.0)

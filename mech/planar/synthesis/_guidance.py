@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import displacement as _gen
-from mech._validate import real_array, real_number
+from mech._validate import real_number
 from mech.planar.synthesis._displacement import complex_array, pose_set
 
 __all__ = ["Dyad", "BurmesterPoints", "dyad_for_circle_point", "dyad_for_centre_point", "burmester"]

@@ -1,0 +1,979 @@
+"""Every public callable rejects every kind of bad input by name (issue 11).
+
+The test walks ``__all__`` of ``mech`` and its subpackages (and the public methods of the
+public classes). Each callable has an entry in ``CASES``: a valid call, and the kind of
+each numeric argument ("slot"). For each slot the valid value is replaced, one at a time,
+by bad values of every kind that makes no sense there (complex, a string of a number, a
+boolean, None, an object, NaN, infinities, lists with a string inside, ragged lists, dicts,
+wrong shapes ...). The call must raise ``ValueError`` or ``TypeError`` (this includes
+``mech.InputTypeError`` and ``mech.AssemblyError``) whose message names the argument in
+backticks and shows the bad value. The valid call must still succeed, so a check that is
+too strict fails too. A completeness check makes every new public callable register here.
+"""
+
+import dataclasses
+import inspect
+import math
+import re
+from types import ModuleType
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import mech
+import mech.exercises as ex
+import mech.planar as pl
+import mech.spatial as sp
+import mech.spherical as sph
+from mech.exercises import chapter2, chapter2_analysis
+
+MODULES = {"mech": mech, "planar": pl, "spatial": sp, "spherical": sph, "exercises": ex,
+           "exercises.chapter2": chapter2, "exercises.chapter2_analysis": chapter2_analysis}
+
+
+# ----------------------------------------------------------------------------- bad values
+class _Opaque:
+    def __repr__(self):
+        return "<opaque object>"
+
+
+#: name -> (value, texts of which the message must show one)
+BAD = {
+    "complex": (0.5 + 2j, ["0.5+2j"]),
+    "complex_array": (np.array([0.5 + 2j]), ["0.5+2"]),
+    "complex_zero_imag": (1 + 0j, ["1+0j", "1.+0.j"]),
+    "numeric_string": ("10", ["'10'"]),
+    "true": (True, ["True"]),
+    "false": (False, ["False"]),
+    "bool_array": (np.array([True, False]), ["True"]),
+    "none": (None, ["None"]),
+    "object": (_Opaque(), ["<opaque object>"]),
+    "nan": (math.nan, ["nan"]),
+    "inf": (math.inf, ["inf"]),
+    "-inf": (-math.inf, ["-inf"]),
+    "complex_nan": (complex(math.nan, 0.0), ["nan"]),
+    "complex_inf": (complex(0.0, math.inf), ["inf"]),
+    "list_with_string": ([1.0, "a"], ["'a'"]),
+    "empty_list": ([], ["[]", "(0,)"]),
+    "ragged": ([[1.0], [1.0, 2.0]], ["[[1.0], [1.0, 2.0]]"]),
+    "dict": ({}, ["{}"]),
+    "short_vector": ([1.0, 2.0], ["[1.0, 2.0]", "(2,)", "[1. 2.]"]),
+    "matrix_4x4": (np.eye(4), ["(4, 4)"]),
+    "float_for_int": (2.5, ["2.5"]),
+    "negative_int": (-1, ["-1"]),
+    "large_int": (10**6, ["1000000"]),
+    "zero_branch": (0, ["0"]),
+    "two_branch": (2, ["2"]),
+    "one_string": ("1", ["'1'"]),
+    "int_for_bool": (1, ["1"]),
+    "bogus_option": ("bogus", ["'bogus'"]),
+}
+
+_NUMERIC = ["complex", "complex_array", "complex_zero_imag", "numeric_string", "true", "false",
+            "bool_array", "none", "object", "nan", "inf", "-inf", "list_with_string", "ragged",
+            "dict"]
+_POINT = ["numeric_string", "true", "false", "bool_array", "none", "object", "nan", "inf",
+          "-inf", "complex_nan", "complex_inf", "list_with_string", "ragged", "dict"]
+
+#: slot kind -> bad kinds tried there
+KINDS = {
+    "real": _NUMERIC,                                   # a real number or array
+    "scalar": _NUMERIC + ["empty_list"],                # exactly one real number
+    "realmap": [b for b in _NUMERIC if b != "dict"],    # real, or a mapping by driver
+    "scalarmap": [b for b in _NUMERIC if b != "dict"] + ["empty_list"],  # one number, or a mapping
+    "point": _POINT,                                    # planar points: complex allowed
+    "point1": _POINT + ["empty_list"],                  # exactly one planar point
+    "point_or_name": _POINT + ["empty_list"],           # one planar point, or a point's name
+    "length_or_name": _NUMERIC + ["empty_list"],        # one length, or a driver's name
+    "vec3": _NUMERIC + ["short_vector", "matrix_4x4"],  # shape (..., 3)
+    "matrix": _NUMERIC + ["short_vector", "matrix_4x4"],  # a fixed shape (3, 3)
+    "int": ["float_for_int", "true", "numeric_string", "none", "object", "complex", "nan",
+            "bool_array", "dict", "empty_list"],
+    "count": ["float_for_int", "negative_int", "true", "numeric_string", "none", "object",
+              "complex", "nan", "dict"],
+    "order": ["float_for_int", "negative_int", "two_branch_over", "true", "numeric_string",
+              "none", "object", "complex"],
+    "bool": ["int_for_bool", "one_string", "none", "object", "bool_array", "float_for_int"],
+    "branch": ["true", "false", "zero_branch", "two_branch", "one_string", "none", "object",
+               "float_for_int", "complex"],
+    "option": ["bogus_option", "int_for_bool", "none", "object"],
+    "seed": ["float_for_int", "true", "numeric_string", "object", "complex", "nan", "dict", "negative_int"],
+}
+BAD["two_branch_over"] = (3, ["3"])
+
+
+# ----------------------------------------------------------------------------- the table
+@dataclasses.dataclass
+class Entry:
+    """A valid call ``get()(**kwargs)`` and the kind of each numeric argument.
+
+    ``slots`` maps an argument name to its kind, or to ``(kind, wrap)`` where ``wrap``
+    puts a bad value where it belongs inside the argument (a tuple, a mapping ...), or to
+    ``(kind, wrap, shown)`` when the message names the argument as ``shown``.
+    """
+
+    get: object
+    kwargs: dict
+    slots: dict = dataclasses.field(default_factory=dict)
+
+    def call(self, **changes):
+        return self.get()(**{**self.kwargs, **changes})
+
+    def slot(self, name):
+        """``(kind, wrap, shown)`` of the argument ``name``."""
+        spec = self.slots[name]
+        if isinstance(spec, str):
+            return spec, (lambda v: v), name
+        if len(spec) == 2:
+            return spec[0], spec[1], name
+        return spec
+
+
+def E(get, slots=None, **kwargs):
+    return Entry(get, kwargs, slots or {})
+
+
+def first(v):
+    return (v, 1.0)
+
+
+def second2(v):
+    return (0.3, v)
+
+
+def _fourbar():
+    return pl.FourBar(10, 40, 30, 35, coupler=(20, 10))
+
+
+def _slider():
+    return pl.SliderCrank(30, 100, 20)
+
+
+def _linkage():
+    return (pl.Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+            .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(40, 30)))
+
+
+def _crank_only():
+    return pl.Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
+
+
+def _fourbar_solution():
+    return pl.as_linkage(pl.FourBar(1, 3, 2.5, 3)).solve(0.5, order=1)
+
+
+def _mechanism_solution():
+    return (pl.Linkage({"A": 0, "D": 80}).crank("crank", pivot="A", tip="B", length=30)
+            .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(70, 60))
+            .solve(1.0, order=1))
+
+
+def _example_2_10():
+    from mech.planar._polygons import example_2_10
+    return example_2_10()
+
+
+def _example_2_9():
+    from mech.planar._polygons import example_2_9
+    return example_2_9()
+
+
+def _motion():
+    return pl.relative_motion(_example_2_10(), "C", base="B", link="2", pivot="D", pivot_link="3")
+
+
+def _centres():
+    return pl.instant_centres(4, {(1, 4): 0j, (1, 2): 3 + 4j, (2, 3): 8 + 0j, (3, 4): pl.prismatic(1)})
+
+
+def _sfb():
+    return sph.SphericalFourBar(0.3, 0.9, 0.7, 1.0, coupler=(0.4, 0.5))
+
+
+def _rssr():
+    return sp.RSSR(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 1.0)
+
+
+def _generator():
+    x = np.radians([10.0, 30.0, 50.0, 70.0])
+    g, = sph.precision_pairs(x, 0.5 * np.sin(x), theta0=np.radians(40.0), psi0=np.radians(80.0))
+    return g
+
+
+def _polygon():
+    return sph.close_polygon(np.random.default_rng(1).normal(size=(5, 3)))
+
+
+_THETA = {"theta": "real"}
+_MOTION = {"theta": "real", "order": "order", "omega": "real", "alpha": "real", "strict": "bool"}
+_MOTION2 = dict(theta=[0.0, 1.0], order=2, omega=1.5, alpha=0.5, strict=False)
+_ABCD = {"a": "scalar", "b": "scalar", "c": "scalar", "d": "scalar"}
+_P3 = [[0.0, 0.0, 1.0], [0.0, 0.6, 0.8]]
+_DUAL = ("real", first, None)
+
+
+def _dual_slot(name):
+    return ("real", lambda v: (v, 0.2), name)
+
+
+CASES = {
+    # ------------------------------------------------------------------------- planar
+    "planar.Cognate.place": E(lambda: pl.cognates(_fourbar()).aegk.place, {"z": "point"}, z=1 + 1j),
+    "planar.Cognate.solve": E(lambda: pl.cognates(_fourbar()).aegk.solve,
+                              {"theta": "real", "branch": "branch?", "strict": "bool"},
+                              theta=[0.5, 1.0], branch=1, strict=False),
+    "planar.Cognates": E(lambda: pl.Cognates, original=_fourbar()),
+    "planar.Cognates.joints": E(lambda: pl.cognates(_fourbar()).joints, _THETA, theta=[0.5, 1.0]),
+    "planar.Cognates.path": E(lambda: pl.cognates(_fourbar()).path, _THETA, theta=[0.5, 1.0]),
+    "planar.Cognates.branches": E(lambda: pl.cognates(_fourbar()).branches, _THETA, theta=[0.5, 1.0]),
+    "planar.CouplerCentrodes.moving_placed": E(
+        lambda: pl.coupler_centrodes(pl.FourBar(10, 40, 30, 35), [0.7, 2.0]).moving_placed,
+        {"index": "int"}, index=1),
+    "planar.CouplerCentrodes.segments": E(
+        lambda: pl.coupler_centrodes(pl.FourBar(10, 40, 30, 35), [0.7, 2.0]).segments,
+        {"limit": "scalar"}, limit=100.0),
+    "planar.EllipticTrammel": E(lambda: pl.EllipticTrammel, {"L": "scalar", "point": ("real", first)},
+                                L=2.0, point=(0.5, 0.0)),
+    "planar.EllipticTrammel.from_crank": E(lambda: pl.EllipticTrammel.from_crank,
+                                           {"a": "scalar", "point": ("real", first)}, a=1.5, point=(0.5, 0.0)),
+    "planar.EllipticTrammel.solve": E(lambda: pl.EllipticTrammel(2.0).solve, _MOTION, **_MOTION2),
+    "planar.EllipticTrammel.path_axes": E(lambda: pl.EllipticTrammel(2.0, point=(0.5, 0.1)).path_axes),
+    "planar.EllipticTrammel.stroke": E(lambda: pl.EllipticTrammel(2.0).stroke),
+    "planar.FourBar": E(lambda: pl.FourBar, {**_ABCD, "branch": "branch", "coupler": ("real", first),
+                                             "rtol": "scalar"},
+                        a=10, b=40, c=30, d=35, branch=1, coupler=(20, 10), rtol=1e-12),
+    "planar.FourBar.solve": E(lambda: _fourbar().solve, _MOTION, **_MOTION2),
+    "planar.FourBar.limit_positions": E(lambda: _fourbar().limit_positions),
+    "planar.FourBar.transmission_angle": E(lambda: _fourbar().transmission_angle, _THETA, theta=[0.0, 1.0]),
+    "planar.FourBar.min_transmission_angle": E(lambda: _fourbar().min_transmission_angle),
+    "planar.Guide": E(lambda: pl.Guide, {"through": "point_or_name", "angle": "scalar"},
+                      link="ground", through=1 + 2j, angle=0.3),
+    "planar.GuideBar": E(lambda: pl.GuideBar, {"a": "scalar", "d": "scalar"}, a=150.0, d=300.0),
+    "planar.GuideBar.from_swing": E(lambda: pl.GuideBar.from_swing, {"d": "scalar", "swing": "scalar"},
+                                    d=300.0, swing=1.0),
+    "planar.GuideBar.solve": E(lambda: pl.GuideBar(150.0, 300.0).solve,
+                               {k: v for k, v in _MOTION.items() if k != "strict"},
+                               theta=[0.0, 1.0], order=2, omega=1.5, alpha=0.5),
+    "planar.GuideBar.swing": E(lambda: pl.GuideBar(150.0, 300.0).swing),
+    "planar.GuideBar.extreme_angle": E(lambda: pl.GuideBar(150.0, 300.0).extreme_angle),
+    "planar.GuideBar.time_ratio": E(lambda: pl.GuideBar(150.0, 300.0).time_ratio),
+    "planar.GuideBar.min_guide_length": E(lambda: pl.GuideBar(150.0, 300.0).min_guide_length),
+    "planar.InstantCentres.pairs": E(lambda: _centres().pairs),
+    "planar.LinkVelocities.point_velocity": E(
+        lambda: pl.centre_velocities(_centres(), frame=4, driver=1, omega=2.0).point_velocity,
+        {"z": "point"}, link=3, z=1 + 1j),
+    "planar.Linkage": E(lambda: pl.Linkage, {"ground": ("point1", lambda v: {"A": v})},
+                        ground={"A": 0, "D": 35}),
+    "planar.Linkage.ground": E(lambda: pl.Linkage().ground, {"at": "point1"}, name="A", at=1 + 1j),
+    "planar.Linkage.point": E(lambda: _crank_only().point, {"at": "point1"}, name="P", link="crank", at=1 + 1j),
+    "planar.Linkage.crank": E(lambda: pl.Linkage({"A": 0}).crank, {"length": "scalar"},
+                              link="crank", pivot="A", tip="B", length=10.0),
+    "planar.Linkage.slider": E(lambda: pl.Linkage({"A": 0}).slider, link="block",
+                               guide=pl.Guide("ground", 0j, 0.0), point="B"),
+    "planar.Linkage.rrr": E(lambda: _crank_only().rrr, {"lengths": ("length_or_name", first), "branch": "branch"},
+                            links=("coupler", "rocker"), pins=("B", "D"), joint="C",
+                            lengths=(40.0, 30.0), branch=1),
+    "planar.Linkage.rrp": E(lambda: _crank_only().rrp, {"length": "scalar", "branch": "branch"},
+                            links=("rod", "block"), pin="B", guide=pl.Guide("ground", 0j, 0.0),
+                            joint="C", length=40.0, branch=1),
+    "planar.Linkage.rpr": E(lambda: _crank_only().rpr, {"offset": "scalar", "branch": "branch"},
+                            links=("guide", "block"), pins=("D", "B"), offset=0.0, branch=1),
+    "planar.Linkage.prp": E(lambda: _crank_only().prp, links=("b1", "b2"),
+                            guides=(pl.Guide("ground", 0j, 0.0), pl.Guide("crank", "B", 1.5)), joint="E"),
+    "planar.Linkage.rpp": E(lambda: _crank_only().rpp, {"angle": "scalar", "offset": "scalar"},
+                            links=("pinned", "sliding"), pin="B", guide=pl.Guide("ground", 0j, 0.0),
+                            angle=1.2, point="Q", offset=0.0),
+    "planar.Linkage.solve": E(lambda: _linkage().solve,
+                              {"inputs": "real", "order": "order", "omega": "realmap", "alpha": "realmap",
+                               "strict": "bool"},
+                              inputs=[0.0, 1.0], order=2, omega=1.5, alpha=0.5, strict=False),
+    "planar.Linkage.assembly_range": E(lambda: _linkage().assembly_range,
+                                       {"start": "scalar", "end": "scalar", "samples": "count"},
+                                       start=-3.0, end=3.0, samples=101),
+    "planar.LinkageSolution.instant_centres": E(lambda: _fourbar_solution().instant_centres),
+    "planar.LinkageSolution.direction": E(lambda: _example_2_10().direction, link="2"),
+    "planar.OldhamCoupling": E(lambda: pl.OldhamCoupling, {"e0": "scalar"}, e0=0.1),
+    "planar.OldhamCoupling.solve": E(lambda: pl.OldhamCoupling(0.1).solve, _MOTION, **_MOTION2),
+    "planar.OldhamCoupling.inertia_force": E(lambda: pl.OldhamCoupling(0.1).inertia_force,
+                                             {"m": "real", "omega": "real"}, m=2.0, omega=10.0),
+    "planar.Polygon.segment": E(lambda: pl.velocity_polygon([_motion()]).segment, tail="p", head="c"),
+    "planar.Polygon.lengths": E(lambda: pl.velocity_polygon([_motion()]).lengths, {"mu": "scalar"}, mu=50.0),
+    "planar.RotatingGuideBar": E(lambda: pl.RotatingGuideBar, {"a": "scalar", "d": "scalar"}, a=2.0, d=1.0),
+    "planar.RotatingGuideBar.solve": E(lambda: pl.RotatingGuideBar(2.0, 1.0).solve, _MOTION, **_MOTION2),
+    "planar.RotatingGuideBar.guide_turns_per_crank_turn": E(
+        lambda: pl.RotatingGuideBar(1.0, 1.0).guide_turns_per_crank_turn),
+    "planar.ScotchYoke": E(lambda: pl.ScotchYoke, {"a": "scalar"}, a=2.0),
+    "planar.ScotchYoke.solve": E(lambda: pl.ScotchYoke(2.0).solve, _MOTION, **_MOTION2),
+    "planar.ScotchYoke.stroke": E(lambda: pl.ScotchYoke(2.0).stroke),
+    "planar.ScrewJack": E(lambda: pl.ScrewJack,
+                          {"d2": "scalar", "pitch": "scalar", "mu": "scalar", "starts": "int",
+                           "flank_angle": "scalar", "collar": ("scalar", lambda v: (50.0, v)),
+                           "mu_collar": "scalar?", "collar_condition": "option"},
+                          d2=22.0, pitch=4.0, mu=0.1, starts=1, flank_angle=0.2, collar=(50.0, 42.0),
+                          mu_collar=0.12, collar_condition="run-in"),
+    "planar.ScrewJack.solve": E(lambda: pl.ScrewJack(22.0, 4.0, 0.1, collar=(50.0, 42.0)).solve,
+                                {"Q": "real"}, Q=1.0),
+    "planar.SliderCrank": E(lambda: pl.SliderCrank, {"a": "scalar", "b": "scalar", "e": "scalar",
+                                                     "branch": "branch"}, a=30, b=100, e=20, branch=1),
+    "planar.SliderCrank.solve": E(lambda: _slider().solve, _MOTION, **_MOTION2),
+    "planar.SliderCrank.limit_positions": E(lambda: _slider().limit_positions),
+    "planar.SliderCrank.stroke": E(lambda: _slider().stroke),
+    "planar.SliderCrank.extreme_angle": E(lambda: _slider().extreme_angle),
+    "planar.SliderCrank.time_ratio": E(lambda: _slider().time_ratio),
+    "planar.SliderCrank.transmission_angle": E(lambda: _slider().transmission_angle, _THETA, theta=[0.0, 1.0]),
+    "planar.SliderCrank.min_transmission_angle": E(lambda: _slider().min_transmission_angle),
+    "planar.SliderCrank.approximate": E(lambda: pl.SliderCrank(30, 100).approximate, {"theta": "real", "omega": "real"},
+                                        theta=[0.0, 1.0], omega=2.0),
+    "planar.SwingingBlock": E(lambda: pl.SwingingBlock, {"a": "scalar", "d": "scalar"}, a=1.0, d=2.0),
+    "planar.SwingingBlock.solve": E(lambda: pl.SwingingBlock(1.0, 2.0).solve, _MOTION, **_MOTION2),
+    "planar.SwingingBlock.swing": E(lambda: pl.SwingingBlock(1.0, 2.0).swing),
+    "planar.TangentMechanism": E(lambda: pl.TangentMechanism, {"L": "scalar"}, L=2.0),
+    "planar.TangentMechanism.solve": E(lambda: pl.TangentMechanism(2.0).solve, _MOTION, **_MOTION2),
+    "planar.TriadSixBar": E(lambda: pl.TriadSixBar,
+                            {"a": "scalar", "b": "scalar", "cd": "scalar", "ce": "scalar", "angle": "scalar",
+                             "g": "scalar", "f": "scalar", "G": "point1", "F": "point1"},
+                            a=10, b=60, cd=36, ce=36, angle=-np.pi / 2, g=40, f=40, G=118 + 41j, F=91 - 48j),
+    "planar.TriadSixBar.solve": E(
+        lambda: pl.TriadSixBar(10, 60, 36, 36, -np.pi / 2, 40, 40, 118 + 41j, 91 - 48j).solve,
+        {"theta": "real", "start": ("point1", lambda v: (v, np.pi / 3), "start"), "omega": "real",
+         "tol": "scalar", "max_iter": "count", "strict": "bool"},
+        theta=np.pi / 2, start=(60 + 10j, np.pi / 3), omega=1.0, tol=1e-14, max_iter=50, strict=False),
+    "planar.acceleration_image": E(lambda: pl.acceleration_image, sol=_example_2_10(), link="3", base="D",
+                                   points=["C", "D", "E"]),
+    "planar.acceleration_polygon": E(lambda: pl.acceleration_polygon, motions=[_motion()]),
+    "planar.as_linkage": E(lambda: pl.as_linkage, mechanism=pl.FourBar(1, 3, 2.5, 3)),
+    "planar.centre_count": E(lambda: pl.centre_count, {"n": "count"}, n=4),
+    "planar.centre_velocities": E(lambda: pl.centre_velocities, {"omega": "real"},
+                                  centres=_centres(), frame=4, driver=1, omega=2.0),
+    "planar.cognates": E(lambda: pl.cognates, fourbar=_fourbar()),
+    "planar.coincident_motion": E(lambda: pl.coincident_motion, sol=_example_2_9(), point="B",
+                                  carrier="2", link="3", pivot="C"),
+    "planar.collar_friction_radius": E(lambda: pl.collar_friction_radius,
+                                       {"r_out": "real", "r_in": "real", "condition": "option"},
+                                       r_out=25.0, r_in=21.0, condition="new"),
+    "planar.coupler_centrodes": E(lambda: pl.coupler_centrodes, {"theta": "real"},
+                                  fourbar=pl.FourBar(10, 40, 30, 35), theta=[0.7, 2.0]),
+    "planar.coupler_dashes": E(lambda: pl.coupler_dashes,
+                               {**_ABCD, "coupler": "point", "n": "count", "branch": "branch", "start": "scalar"},
+                               a=1, b=2, c=2.5, d=3, coupler=[0.5 + 0.5j, 1 + 1j], n=12, branch=1, start=0.0),
+    "planar.curved_contact_mu": E(lambda: pl.curved_contact_mu, {"mu": "real", "k": "real"}, mu=0.1, k=1.2),
+    "planar.design_check": E(lambda: pl.design_check, {"gamma_min": "scalar", "high_speed": "bool"},
+                             gamma_min=0.8, high_speed=False),
+    "planar.eccentric_clamp_locks": E(lambda: pl.eccentric_clamp_locks,
+                                      {"alpha": "real", "e": "real", "r_disc": "real", "rho_pin": "real",
+                                       "phi": "real"},
+                                      alpha=[0.7, 1.0], e=10.0, r_disc=40.0, rho_pin=1.0, phi=0.15),
+    "planar.eccentric_clamp_max_angle": E(lambda: pl.eccentric_clamp_max_angle,
+                                          {"e": "real", "r_disc": "real", "rho_pin": "real", "phi": "real"},
+                                          e=10.0, r_disc=40.0, rho_pin=1.0, phi=0.15),
+    "planar.efficiency": E(lambda: pl.efficiency, {"useful": "real", "driving": "real"}, useful=80.0, driving=100.0),
+    "planar.efficiency_from_drive": E(lambda: pl.efficiency_from_drive, {"ideal": "real", "actual": "real"},
+                                      ideal=30.0, actual=40.0),
+    "planar.efficiency_from_resistance": E(lambda: pl.efficiency_from_resistance,
+                                           {"actual": "real", "ideal": "real"}, actual=45.0, ideal=50.0),
+    "planar.extreme_angle": E(lambda: pl.extreme_angle, {"time_ratio": "real"}, time_ratio=[1.0, 1.4]),
+    "planar.fourbar_dead_points": E(lambda: pl.fourbar_dead_points, {**_ABCD, "branch": "branch"},
+                                    a=10, b=40, c=30, d=35, branch=1),
+    "planar.fourbar_mechanical_advantage": E(lambda: pl.fourbar_mechanical_advantage,
+                                             {**_ABCD, "theta": "real", "branch": "branch", "driver": "option"},
+                                             a=30, b=70, c=60, d=80, theta=1.0, branch=1, driver="crank"),
+    "planar.fourbar_pressure_angle": E(lambda: pl.fourbar_pressure_angle, {**_ABCD, "theta": "real"},
+                                       a=30, b=70, c=60, d=80, theta=[0.0, 1.0]),
+    "planar.friction_angle": E(lambda: pl.friction_angle, {"mu": "real"}, mu=0.1),
+    "planar.friction_circle": E(lambda: pl.friction_circle, {"mu0": "real", "r": "real"}, mu0=0.2, r=12.5),
+    "planar.grashof": E(lambda: pl.grashof, {**_ABCD, "rtol": "scalar"}, a=10, b=40, c=30, d=35, rtol=1e-12),
+    "planar.guide_bar_pressure_angle": E(lambda: pl.guide_bar_pressure_angle, {"s": "real", "e": "real"},
+                                         s=[10.0, 200.0], e=10.0),
+    "planar.hand_press": E(lambda: pl.hand_press,
+                           {"lever": "scalar", "handle": "scalar", "pivot": "point1", "link2": "scalar",
+                            "link3": "scalar", "link4": "scalar"},
+                           lever=25.0, handle=250.0, pivot=70 - 75j, link2=70.0, link3=50.0, link4=50.0),
+    "planar.higher_pair": E(lambda: pl.higher_pair, {"contact": "point", "normal": "point"},
+                            contact=1 + 1j, normal=1j),
+    "planar.incline_forces": E(lambda: pl.incline_forces,
+                               {"Q": "real", "incline": "real", "mu": "real", "push_angle": "real?"},
+                               Q=100.0, incline=0.5, mu=0.2, push_angle=0.1),
+    "planar.instant_centres": E(lambda: pl.instant_centres,
+                                {"links": "count", "direct": ("point", lambda v: {(1, 4): 0j, (1, 2): v,
+                                                                                    (2, 3): 10 + 6j,
+                                                                                    (3, 4): 8 + 0j})},
+                                links=4, direct={(1, 4): 0j, (1, 2): 3 + 4j, (2, 3): 10 + 6j, (3, 4): 8 + 0j}),
+    "planar.is_self_locking": E(lambda: pl.is_self_locking, {"eta": "real"}, eta=[-0.1, 0.0, 0.4]),
+    "planar.jansen_linkage": E(lambda: pl.jansen_linkage, {"a": "scalar"}, a=50.0),
+    "planar.jaw_crusher": E(lambda: pl.jaw_crusher,
+                            {"crank": "scalar", "pitman": "scalar", "toggle_back": "scalar",
+                             "toggle_front": "scalar", "jaw": "scalar", "back_pivot": "point1",
+                             "jaw_pivot": "point1"},
+                            crank=12.0, pitman=250.0, toggle_back=90.0, toggle_front=90.0, jaw=300.0,
+                            back_pivot=88 - 268j, jaw_pivot=-100 + 32j),
+    "planar.joint_transmission_angle": E(lambda: pl.joint_transmission_angle,
+                                         solution=pl.watt_six_bar().solve(0.0), joint="C", force="B", pivot="D"),
+    "planar.journal_mu": E(lambda: pl.journal_mu, {"mu": "real", "condition": "option"}, mu=0.1, condition="new"),
+    "planar.journal_state": E(lambda: pl.journal_state, {"h": "real", "rho": "real"}, h=[1.0, 2.5, 3.0], rho=2.5),
+    "planar.kind_intervals": E(lambda: pl.kind_intervals,
+                               {"lengths": ("scalar", lambda v: (20, v, 40)), "vary": "option",
+                                "rtol": "scalar"},
+                               lengths=(20, 50, 40), vary="d", rtol=1e-12),
+    "planar.lead_angle": E(lambda: pl.lead_angle, {"pitch": "real", "d2": "real", "starts": "int"},
+                           pitch=4.0, d2=22.0, starts=1),
+    "planar.limit_positions": E(lambda: pl.limit_positions, {**_ABCD, "branch": "branch"},
+                                a=10, b=40, c=30, d=35, branch=1),
+    "planar.mechanical_advantage": E(lambda: pl.mechanical_advantage, {"method": "option"},
+                                     solution=_mechanism_solution(), input="crank", output="rocker",
+                                     method="velocities"),
+    "planar.min_transmission_angle": E(lambda: pl.min_transmission_angle, _ABCD, a=30, b=70, c=60, d=80),
+    "planar.omega_ratio": E(lambda: pl.omega_ratio, centres=_centres(), i=3, j=1, frame=4),
+    "planar.parallel_efficiency": E(lambda: pl.parallel_efficiency, {"etas": "real", "powers": "real"},
+                                    etas=[0.9, 0.6], powers=[3.0, 1.0]),
+    "planar.pressure_angle": E(lambda: pl.pressure_angle, solution=_mechanism_solution(), joint="C", force="B"),
+    "planar.prismatic": E(lambda: pl.prismatic, {"direction": "point"}, direction=1 + 1j),
+    "planar.push_rod": E(lambda: pl.push_rod, {"mu": "real", "offset": "real", "length": "real"},
+                         mu=0.2, offset=100.0, length=80.0),
+    "planar.quick_return_crank_rocker": E(lambda: pl.quick_return_crank_rocker,
+                                          {"crank": "scalar", "coupler": "scalar", "rocker": "scalar",
+                                           "frame": "scalar", "lever": "scalar", "lever_angle": "scalar",
+                                           "rod": "scalar", "height": "scalar?"},
+                                          crank=60.0, coupler=120.0, rocker=180.0, frame=160.0, lever=400.0,
+                                          lever_angle=-0.8552113334772214, rod=150.0, height=None),
+    "planar.quick_return_guide_bar": E(lambda: pl.quick_return_guide_bar,
+                                       {"crank": "scalar", "frame": "scalar", "bar": "scalar", "rod": "scalar"},
+                                       crank=124.0, frame=400.0, bar=485.0, rod=120.0),
+    "planar.quick_return_slider_crank": E(lambda: pl.quick_return_slider_crank,
+                                          {"crank": "scalar", "rod": "scalar", "offset": "scalar"},
+                                          crank=129.0, rod=280.0, offset=120.0),
+    "planar.ram_stroke": E(lambda: pl.ram_stroke, {"direction": "point1", "samples": "count"},
+                           linkage=pl.quick_return_slider_crank(), point="F", direction=1 + 0j, samples=360),
+    "planar.relative_motion": E(lambda: pl.relative_motion, sol=_example_2_10(), point="C", base="B", link="2",
+                                pivot="D", pivot_link="3"),
+    "planar.revolute": E(lambda: pl.revolute, {"point": "point"}, point=1 + 1j),
+    "planar.rolling_mill_max_thickness": E(lambda: pl.rolling_mill_max_thickness,
+                                           {"diameter": "real", "gap": "real", "mu": "real"},
+                                           diameter=1200.0, gap=25.0, mu=0.3),
+    "planar.screw_efficiency": E(lambda: pl.screw_efficiency,
+                                 {"Q": "real", "d2": "real", "lam": "real", "phi_v": "real", "mu_c": "real",
+                                  "r_c": "real"},
+                                 Q=1.0, d2=22.0, lam=0.06, phi_v=0.1, mu_c=0.1, r_c=20.0),
+    "planar.series_efficiency": E(lambda: pl.series_efficiency, {"etas": "real"}, etas=[0.95, 0.9, 0.8]),
+    "planar.shaper_stephenson": E(lambda: pl.shaper_stephenson,
+                                  {"crank": "scalar", "frame": "scalar", "bar": "scalar", "rod": "scalar",
+                                   "height": "scalar?"},
+                                  crank=120.0, frame=300.0, bar=600.0, rod=400.0, height=None),
+    "planar.shaper_watt": E(lambda: pl.shaper_watt,
+                            {"crank": "scalar", "frame": "scalar", "bar": "scalar", "rod": "scalar",
+                             "height": "scalar?"},
+                            crank=124.0, frame=400.0, bar=485.0, rod=120.0, height=None),
+    "planar.slider_crank_dead_points": E(lambda: pl.slider_crank_dead_points,
+                                         {"a": "scalar", "b": "scalar", "e": "scalar", "branch": "branch"},
+                                         a=30, b=100, e=10, branch=1),
+    "planar.slider_crank_mechanical_advantage": E(
+        lambda: pl.slider_crank_mechanical_advantage,
+        {"a": "scalar", "b": "scalar", "e": "scalar", "theta": "real", "branch": "branch", "driver": "option"},
+        a=30, b=100, e=0, theta=1.0, branch=1, driver="crank"),
+    "planar.slider_crank_min_transmission_angle": E(lambda: pl.slider_crank_min_transmission_angle,
+                                                    {"a": "scalar", "b": "scalar", "e": "scalar"},
+                                                    a=30, b=100, e=20),
+    "planar.slider_crank_pressure_angle": E(lambda: pl.slider_crank_pressure_angle,
+                                            {"a": "scalar", "b": "scalar", "e": "scalar", "theta": "real"},
+                                            a=30, b=100, e=20, theta=[0.0, 1.0]),
+    "planar.slider_state": E(lambda: pl.slider_state, {"alpha": "real", "phi": "real"}, alpha=[0.05, 0.2], phi=0.1),
+    "planar.spreading_wedge_force": E(lambda: pl.spreading_wedge_force,
+                                      {"Q": "real", "theta": "real", "phi": "real", "base_friction": "bool"},
+                                      Q=1000.0, theta=0.26, phi=0.2, base_friction=True),
+    "planar.static_forces": E(lambda: pl.static_forces,
+                              {"forces": ("point", lambda v: {"C": v}), "rho": "scalarmap", "mu": "scalarmap",
+                               "tol": "scalar", "max_iter": "count"},
+                              solution=_fourbar_solution(), forces={"C": -10}, couples=None, rho=0.0, mu=0.0,
+                              tol=1e-12, max_iter=60),
+    "planar.step_ratio": E(lambda: pl.step_ratio, {"axis": "int"},
+                           solution=pl.jansen_linkage().solve(np.linspace(0, 6, 61)), axis=-1),
+    "planar.stephenson_six_bar": E(lambda: pl.stephenson_six_bar,
+                                   {"crank": "scalar", "coupler": "scalar", "rocker": "scalar", "frame": "scalar",
+                                    "point": "point1", "pivot": "point1", "link5": "scalar", "output": "scalar"},
+                                   crank=20.0, coupler=50.0, rocker=45.0, frame=50.0, point=55 + 15j,
+                                   pivot=54 - 27j, link5=82.3, output=8.0),
+    "planar.thread_friction_angle": E(lambda: pl.thread_friction_angle, {"mu": "real", "flank_angle": "real"},
+                                      mu=0.1, flank_angle=0.5),
+    "planar.thrust_friction_moment": E(lambda: pl.thrust_friction_moment,
+                                       {"Q": "real", "mu": "real", "r_out": "real", "r_in": "real",
+                                        "condition": "option", "cone_half_angle": "real"},
+                                       Q=1.0, mu=0.3, r_out=100.0, r_in=50.0, condition="run-in",
+                                       cone_half_angle=1.2),
+    "planar.time_ratio": E(lambda: pl.time_ratio, {"extreme_angle": "real"}, extreme_angle=[0.0, 0.5]),
+    "planar.total_reaction": E(lambda: pl.total_reaction,
+                               {"normal": "point", "velocity": "point", "mu": "real", "normal_force": "real?"},
+                               normal=1j, velocity=1.0, mu=0.1, normal_force=50.0),
+    "planar.transmission_angle": E(lambda: pl.transmission_angle, {**_ABCD, "theta": "real"},
+                                   a=30, b=70, c=60, d=80, theta=[0.0, 1.0]),
+    "planar.transmission_extremes": E(lambda: pl.transmission_extremes, _ABCD, a=30, b=70, c=60, d=80),
+    "planar.two_force_tilt_angle": E(lambda: pl.two_force_tilt_angle,
+                                     {"length": "real", "rho_a": "real", "rho_b": "real", "cross": "bool"},
+                                     length=100.0, rho_a=2.5, rho_b=2.5, cross=True),
+    "planar.velocity_image": E(lambda: pl.velocity_image, sol=_example_2_10(), link="2", base="B",
+                               points=["B", "C"]),
+    "planar.velocity_polygon": E(lambda: pl.velocity_polygon, motions=[_motion()]),
+    "planar.vgroove_mu": E(lambda: pl.vgroove_mu, {"mu": "real", "half_angle": "real"}, mu=0.1, half_angle=0.5),
+    "planar.watt_six_bar": E(lambda: pl.watt_six_bar,
+                             {"crank": "scalar", "coupler": "scalar", "rocker": "scalar", "frame": "scalar",
+                              "lever": "scalar", "lever_angle": "scalar", "pivot": "point1", "link5": "scalar",
+                              "output": "scalar"},
+                             crank=20.0, coupler=50.0, rocker=45.0, frame=50.0, lever=44.0,
+                             lever_angle=-2.6179938779914944, pivot=68 - 9j, link5=24.0, output=18.0),
+    "planar.watt_transmission_angles": E(lambda: pl.watt_transmission_angles,
+                                         solution=pl.watt_six_bar().solve(0.0)),
+    "planar.wedge_press": E(lambda: pl.wedge_press, {"lam": "real", "phi": "real"}, lam=0.17, phi=0.1),
+    "planar.static_forces#couples": E(lambda: pl.static_forces, {"couples": ("real", lambda v: {"rocker": v})},
+                                      solution=_fourbar_solution(), forces={"C": -10}, couples={"rocker": 1.0}),
+    "planar.pressure_angle#direction": E(lambda: pl.pressure_angle, {"force": "point"},
+                                         solution=_mechanism_solution(), joint="C", force=1 + 1j),
+    "planar.joint_transmission_angle#direction": E(lambda: pl.joint_transmission_angle, {"force": "point"},
+                                                   solution=pl.watt_six_bar().solve(0.0, order=1), joint="C",
+                                                   force=1 + 1j, pivot="D"),
+    # ------------------------------------------------------------------------- spatial
+    "spatial.AssemblyRange.contains": E(lambda: sp.RSSR(2.0, 2.5, 1.5, 0.3, -0.4, 1.5, 0.8).assembly_range().contains,
+                                        {"phi01": "real"}, phi01=[0.0, 1.0]),
+    "spatial.DoubleUniversalJoint": E(lambda: sp.DoubleUniversalJoint,
+                                      {"alpha1": "scalar", "alpha2": "scalar", "phase": "scalar"},
+                                      alpha1=0.5, alpha2=0.5, phase=0.1),
+    "spatial.DoubleUniversalJoint.solve": E(lambda: sp.DoubleUniversalJoint(0.5, 0.4).solve,
+                                            {"theta1": "real", "order": "order", "omega": "real",
+                                             "epsilon": "real"},
+                                            theta1=[0.0, 1.0], order=2, omega=1.5, epsilon=0.5),
+    "spatial.DoubleUniversalJoint.ratio_range": E(lambda: sp.DoubleUniversalJoint(0.5, 0.4).ratio_range),
+    "spatial.Joint": E(lambda: sp.Joint,
+                       {"kind": "option", "phi": "scalar", "lam": "scalar", "s": "scalar", "h": "scalar",
+                        "pitch": "scalar"},
+                       kind="H", phi=0.1, lam=0.2, s=0.3, h=0.4, pitch=0.5),
+    "spatial.OpenChain": E(lambda: sp.OpenChain, joints=[sp.Joint("R", h=1.0), sp.Joint("R", h=1.0)]),
+    "spatial.OpenChain.solve": E(lambda: sp.OpenChain([sp.Joint("R", h=1.0), sp.Joint("P", h=1.0)]).solve,
+                                 {"q": "real", "order": "order", "qdot": "real?", "qddot": "real?",
+                                  "point": ("real", lambda v: (v, 0.0, 0.0), "point")},
+                                 q=[0.3, 0.5], order=2, qdot=[1.0, 0.5], qddot=[0.1, 0.2], point=(1.0, 0.0, 0.0)),
+    "spatial.OpenChain.frames": E(lambda: sp.example_2_25_manipulator(0.5).frames, {"q": "real"},
+                                  q=[0.1, 0.2, 0.3, 0.4]),
+    "spatial.OpenChain.pose": E(lambda: sp.example_2_25_manipulator(0.5).pose,
+                                {"q": "real", "point": ("real", lambda v: (v, 0.0, 0.0), "point")},
+                                q=[0.1, 0.2, 0.3, 0.4], point=(1.0, 0.0, 0.0)),
+    "spatial.RCCC": E(lambda: sp.RCCC,
+                      {"a": ("scalar", first), "b": ("scalar", first), "c": ("scalar", first),
+                       "d": ("scalar", first), "s1": "scalar", "branch": "branch"},
+                      a=(0.6, 0.2), b=(1.2, 0.5), c=(1.0, 0.1), d=(1.3, 0.4), s1=0.3, branch=1),
+    "spatial.RCCC.solve": E(lambda: sp.RCCC((0.6, 0.2), (1.2, 0.5), (1.0, 0.1), (1.3, 0.4)).solve,
+                            {"theta": "real", "order": "order", "omega": "real", "strict": "bool"},
+                            theta=[0.0, 1.0], order=1, omega=1.5, strict=False),
+    "spatial.RSSR": E(lambda: sp.RSSR,
+                      {"l1": "scalar", "l2": "scalar", "l3": "scalar", "s0": "scalar", "s3": "scalar",
+                       "h0": "scalar", "lam": "scalar", "branch": "branch",
+                       "coupler": ("scalar", lambda v: (v, 0.0, 0.0))},
+                      l1=1.0, l2=4.0, l3=2.0, s0=0.5, s3=0.8, h0=3.0, lam=1.0, branch=1, coupler=(0.1, 0.2, 0.3)),
+    "spatial.RSSR.coefficients": E(lambda: _rssr().coefficients, {"phi01": "real"}, phi01=[0.0, 1.0]),
+    "spatial.RSSR.points": E(lambda: _rssr().points, {"phi01": "real", "phi03": "real"}, phi01=[0.0, 1.0],
+                             phi03=0.5),
+    "spatial.RSSR.discriminant": E(lambda: _rssr().discriminant, {"phi01": "real"}, phi01=[0.0, 1.0]),
+    "spatial.RSSR.solve": E(lambda: _rssr().solve,
+                            {"phi01": "real", "order": "order", "omega": "real", "alpha": "real", "strict": "bool"},
+                            phi01=[0.0, 1.0], order=2, omega=1.5, alpha=0.5, strict=False),
+    "spatial.RSSR.assembly_range": E(lambda: _rssr().assembly_range),
+    "spatial.example_2_25_manipulator": E(lambda: sp.example_2_25_manipulator, {"s0": "scalar"}, s0=0.5),
+    "spatial.example_2_25_pose": E(lambda: sp.example_2_25_pose,
+                                   {"phi01": "real", "phi12": "real", "s2": "real", "phi34": "real", "s0": "real",
+                                    "p": "real"},
+                                   phi01=0.0, phi12=np.pi / 2, s2=0.3, phi34=0.0, s0=0.5, p=0.1),
+    "spatial.example_2_25_reach": E(lambda: sp.example_2_25_reach,
+                                    {"phi12": "real", "s2": "real", "s0": "real", "p": "real"},
+                                    phi12=np.pi / 2, s2=0.2, s0=0.3, p=0.2),
+    "spatial.hd": E(lambda: sp.hd, {"phi": "real", "lam": "real", "s": "real", "h": "real"},
+                    phi=0.5, lam=0.3, s=1.0, h=2.0),
+    "spatial.hd_inv": E(lambda: sp.hd_inv, {"phi": "real", "lam": "real", "s": "real", "h": "real"},
+                        phi=0.5, lam=0.3, s=1.0, h=2.0),
+    "spatial.homogeneous": E(lambda: sp.homogeneous, {"R": "matrix", "p": "vec3"}, R=np.eye(3), p=[1.0, 2.0, 3.0]),
+    "spatial.hooke_acceleration": E(lambda: sp.hooke_acceleration,
+                                    {"theta1": "real", "alpha": "real", "omega": "real", "epsilon": "real"},
+                                    theta1=[0.0, 1.0], alpha=0.5, omega=10.0, epsilon=0.5),
+    "spatial.hooke_output": E(lambda: sp.hooke_output, {"theta1": "real", "alpha": "real"},
+                              theta1=[0.0, 1.0], alpha=0.5),
+    "spatial.hooke_ratio": E(lambda: sp.hooke_ratio, {"theta1": "real", "alpha": "real"},
+                             theta1=[0.0, 1.0], alpha=0.5),
+    "spatial.mobility": E(lambda: sp.mobility, {"moving_links": "count", "pairs": "option"}, moving_links=3,
+                          pairs="RSSR"),
+    "spatial.rot_x": E(lambda: sp.rot_x, {"lam": "real"}, lam=[0.5, 1.5]),
+    "spatial.rot_z": E(lambda: sp.rot_z, {"phi": "real"}, phi=[0.5, 1.5]),
+    # ------------------------------------------------------------------------- spherical
+    "spherical.Circle.residual": E(lambda: sph.circle_through([1, 0, 0], [0, 1, 0], [0, 0, 1]).residual,
+                                   {"p": "vec3"}, p=_P3),
+    "spherical.Dual": E(lambda: sph.Dual, {"real": "real", "dual": "real"}, real=0.5, dual=1.0),
+    "spherical.FunctionGenerator.output": E(lambda: _generator().output, {"x": "real"}, x=[0.3, 0.5]),
+    "spherical.FunctionGenerator.structural_error": E(lambda: _generator().structural_error,
+                                                      {"x": "real", "y": "real"}, x=[0.3, 0.5], y=[0.1, 0.2]),
+    "spherical.FunctionGenerator.points": E(lambda: _generator().points, {"x": "real"}, x=[0.3, 0.5]),
+    "spherical.PolygonRelations.family": E(lambda: sph.polygon_relations(_polygon().arcs, _polygon().angles).family,
+                                           {"name": "option"}, name="cosine"),
+    "spherical.PolygonRelations.worst": E(lambda: sph.polygon_relations(_polygon().arcs, _polygon().angles).worst),
+    "spherical.SphericalFourBar": E(lambda: sph.SphericalFourBar,
+                                    {**_ABCD, "branch": "branch", "coupler": ("scalar", first),
+                                     "frame": "matrix?"},
+                                    a=0.3, b=0.9, c=0.7, d=1.0, branch=1, coupler=(0.4, 0.5), frame=np.eye(3)),
+    "spherical.SphericalFourBar.solve": E(lambda: _sfb().solve, _MOTION, **_MOTION2),
+    "spherical.SphericalFourBar.assembly_range": E(lambda: _sfb().assembly_range),
+    "spherical.SphericalFourBar.coupler_curve": E(lambda: _sfb().coupler_curve, {"n": "count"}, n=50),
+    "spherical.SphericalPolygon.relations": E(lambda: _polygon().relations),
+    "spherical.angle_at": E(lambda: sph.angle_at, {"a": "vec3", "b": "vec3", "c": "vec3"},
+                            a=[0, 0, 1], b=[1, 0, 0], c=[0, 1, 0]),
+    "spherical.angle_between": E(lambda: sph.angle_between, {"pole1": "vec3", "pole2": "vec3"},
+                                 pole1=[0, 0, 1], pole2=[0, 1, 0]),
+    "spherical.antipode_reduction": E(lambda: sph.antipode_reduction, _ABCD, a=2.5, b=2.0, c=0.7, d=1.0),
+    "spherical.arcs_from_coefficients": E(lambda: sph.arcs_from_coefficients,
+                                          {"k1": "scalar", "k2": "scalar", "k3": "scalar", "k4": "scalar"},
+                                          **dict(zip(("k1", "k2", "k3", "k4"),
+                                                     (float(v) for v in sph.freudenstein_coefficients(0.4, 0.9, 0.7, 1.0))))),
+    "spherical.bisector": E(lambda: sph.bisector, {"a": "vec3", "b": "vec3"}, a=[1, 0, 0], b=[0, 1, 0]),
+    "spherical.chain_components": E(lambda: sph.chain_components, {"arcs": "real", "angles": "real"},
+                                    arcs=[np.pi / 2, np.pi / 2], angles=[np.pi / 2]),
+    "spherical.chebyshev_spacing": E(lambda: sph.chebyshev_spacing, {"x0": "scalar", "x1": "scalar", "n": "count"},
+                                     x0=1.0, x1=10.0, n=3),
+    "spherical.circle_through": E(lambda: sph.circle_through, {"a": "vec3", "b": "vec3", "c": "vec3"},
+                                  a=[1, 0, 0], b=[0, 1, 0], c=[0, 0, 1]),
+    "spherical.classify": E(lambda: sph.classify, {**_ABCD, "tol": "scalar"}, a=0.3, b=0.9, c=0.7, d=1.0, tol=1e-12),
+    "spherical.close_polygon": E(lambda: sph.close_polygon, {"axes": "vec3"}, axes=np.eye(3)),
+    "spherical.collinearity": E(lambda: sph.collinearity, {"a": "vec3", "b": "vec3", "c": "vec3"},
+                                a=[1, 0, 0], b=[0, 1, 0], c=[0, 0.6, 0.8]),
+    "spherical.cosine_law": E(lambda: sph.cosine_law, {"arcs": "real", "angles": "real", "j": "int", "k": "int"},
+                              arcs=_polygon().arcs, angles=_polygon().angles, j=2, k=4),
+    "spherical.deltoid": E(lambda: sph.deltoid, {"a": "scalar", "b": "scalar", "branch": "branch"},
+                           a=0.3, b=0.8, branch=1),
+    "spherical.deltoid_input": E(lambda: sph.deltoid_input, {"psi": "real", "a": "scalar", "b": "scalar"},
+                                 psi=[0.5, 1.0], a=0.3, b=0.8),
+    "spherical.distance": E(lambda: sph.distance, {"p": "vec3", "q": "vec3"}, p=[0, 0, 1], q=_P3),
+    "spherical.distance_lonlat": E(lambda: sph.distance_lonlat,
+                                   {"lon1": "real", "lat1": "real", "lon2": "real", "lat2": "real"},
+                                   lon1=0.0, lat1=0.0, lon2=[1e-9, np.pi], lat2=0.0),
+    "spherical.distance_to_great_circle": E(lambda: sph.distance_to_great_circle, {"p": "vec3", "pole": "vec3"},
+                                            p=_P3, pole=[0, 0, 1]),
+    "spherical.dual": E(lambda: sph.dual, {"real": "real", "dual": "real"}, real=0.5, dual=2.0),
+    "spherical.dual_fourbar_joints": E(lambda: sph.dual_fourbar_joints,
+                                       {n: _dual_slot(n) for n in ("a_hat", "c_hat", "d_hat", "theta_hat",
+                                                                   "psi_hat")},
+                                       a_hat=(0.6, 0.2), c_hat=(1.0, 0.1), d_hat=(1.3, 0.4), theta_hat=(0.5, 0.3),
+                                       psi_hat=sph.dual_fourbar_output((0.6, 0.2), (1.2, 0.5), (1.0, 0.1),
+                                                                       (1.3, 0.4), (0.5, 0.3))),
+    "spherical.dual_fourbar_output": E(lambda: sph.dual_fourbar_output,
+                                       {**{n: _dual_slot(n) for n in ("a_hat", "b_hat", "c_hat", "d_hat",
+                                                                      "theta_hat")}, "branch": "branch"},
+                                       a_hat=(0.6, 0.2), b_hat=(1.2, 0.5), c_hat=(1.0, 0.1), d_hat=(1.3, 0.4),
+                                       theta_hat=(0.5, 0.3), branch=1),
+    "spherical.freudenstein_coefficients": E(lambda: sph.freudenstein_coefficients, _ABCD,
+                                             a=0.4, b=0.9, c=0.7, d=1.0),
+    "spherical.from_xyz": E(lambda: sph.from_xyz, {"v": "vec3"}, v=_P3),
+    "spherical.great_circle_at": E(lambda: sph.great_circle_at, {"a": "vec3", "inclination": "real"},
+                                   a=[0, 0, 1], inclination=0.5),
+    "spherical.great_circle_through": E(lambda: sph.great_circle_through, {"a": "vec3", "b": "vec3"},
+                                        a=[1, 0, 0], b=[0, 1, 0]),
+    "spherical.ground_frame": E(lambda: sph.ground_frame, {"lon": "scalar", "lat": "scalar", "heading": "scalar"},
+                                lon=0.3, lat=0.2, heading=1.0),
+    "spherical.inclination": E(lambda: sph.inclination, {"a": "vec3", "b": "vec3"}, a=[0, 0, 1], b=[0, 1, 1]),
+    "spherical.intersect": E(lambda: sph.intersect, {"pole1": "vec3", "pole2": "vec3"},
+                             pole1=[0, 0, 1], pole2=[1, 0, 0]),
+    "spherical.inversions": E(lambda: sph.inversions, {**_ABCD, "tol": "scalar"}, a=0.3, b=0.9, c=0.7, d=1.0,
+                              tol=1e-12),
+    "spherical.isogram": E(lambda: sph.isogram, {"a": "scalar", "b": "scalar", "branch": "branch"},
+                           a=0.4, b=0.9, branch=1),
+    "spherical.isogram_output": E(lambda: sph.isogram_output,
+                                  {"theta": "real", "a": "scalar", "b": "scalar", "crossed": "bool"},
+                                  theta=[0.5, 1.0], a=0.4, b=0.9, crossed=False),
+    "spherical.law_count": E(lambda: sph.law_count, {"n": "count"}, n=4),
+    "spherical.least_squares": E(lambda: sph.least_squares,
+                                 {"x": "real", "y": "real", "theta0": "scalar", "psi0": "scalar",
+                                  "kind": "option", "fit_start": "bool"},
+                                 x=np.linspace(0.0, 1.0, 11), y=0.5 * np.sin(np.linspace(0.0, 1.0, 11)),
+                                 theta0=0.7, psi0=1.4, kind="structural", fit_start=False),
+    "spherical.local_frame": E(lambda: sph.local_frame, {"p": "vec3"}, p=_P3),
+    "spherical.open_chain_axes": E(lambda: sph.open_chain_axes,
+                                   {"arcs": "real", "angles": "real", "frame": "matrix?"},
+                                   arcs=[np.pi / 2] * 3, angles=[np.pi / 2] * 2, frame=np.eye(3)),
+    "spherical.point_at": E(lambda: sph.point_at, {"a": "vec3", "arc": "real", "inclination": "real"},
+                            a=[1, 0, 0], arc=[0.1, 0.2], inclination=0.0),
+    "spherical.polygon_relations": E(lambda: sph.polygon_relations, {"arcs": "real", "angles": "real"},
+                                     arcs=_polygon().arcs, angles=_polygon().angles),
+    "spherical.precision_pairs": E(lambda: sph.precision_pairs,
+                                   {"x": "real", "y": "real", "theta0": "scalar?", "psi0": "scalar?",
+                                    "keep_defective": "bool"},
+                                   x=np.radians([10.0, 30.0, 50.0, 70.0]),
+                                   y=0.5 * np.sin(np.radians([10.0, 30.0, 50.0, 70.0])),
+                                   theta0=np.radians(40.0), psi0=np.radians(80.0), keep_defective=False),
+    "spherical.rotate_about": E(lambda: sph.rotate_about, {"p": "vec3", "axis": "vec3", "angle": "real"},
+                                p=_P3, axis=[1, 0, 0], angle=0.5),
+    "spherical.rotation_matrix": E(lambda: sph.rotation_matrix, {"axis": "vec3", "angle": "real"},
+                                   axis=[0, 0, 1], angle=0.5),
+    "spherical.rssr_from_transference": E(lambda: sph.rssr_from_transference,
+                                          {"l1": "scalar", "l2": "scalar", "l3": "scalar", "s0": "scalar",
+                                           "s3": "scalar", "h0": "scalar", "lam": "scalar", "phi01": "real",
+                                           "branch": "branch"},
+                                          l1=1.0, l2=4.0, l3=2.0, s0=0.5, s3=0.8, h0=3.0, lam=1.0,
+                                          phi01=[0.0, 1.0], branch=1),
+    "spherical.sine_cosine_law": E(lambda: sph.sine_cosine_law,
+                                   {"arcs": "real", "angles": "real", "j": "int", "k": "int"},
+                                   arcs=_polygon().arcs, angles=_polygon().angles, j=2, k=4),
+    "spherical.sine_law": E(lambda: sph.sine_law, {"arcs": "real", "angles": "real", "j": "int", "k": "int"},
+                            arcs=_polygon().arcs, angles=_polygon().angles, j=2, k=4),
+    "spherical.slider_crank_stroke": E(lambda: sph.slider_crank_stroke, {"a": "scalar", "b": "scalar", "e": "scalar"},
+                                       a=0.3, b=0.8, e=0.1),
+    "spherical.spherical_slider_crank": E(lambda: sph.spherical_slider_crank,
+                                          {"a": "scalar", "b": "scalar", "e": "scalar", "branch": "branch"},
+                                          a=0.3, b=0.8, e=0.1, branch=1),
+    "spherical.tangent": E(lambda: sph.tangent, {"a": "vec3", "b": "vec3"}, a=[0, 0, 1], b=[0, 1, 1]),
+    "spherical.to_xyz": E(lambda: sph.to_xyz, {"lon": "real", "lat": "real"}, lon=[0.0, 1.0], lat=0.5),
+    "spherical.triangle_point": E(lambda: sph.triangle_point,
+                                  {"a": "vec3", "b": "vec3", "gamma": "real", "arc": "real"},
+                                  a=[0, 0, 1], b=[1, 0, 0], gamma=0.5, arc=0.7),
+    "spherical.turn": E(lambda: sph.turn, {"a": "vec3", "b": "vec3", "gamma": "real"},
+                        a=[0, 0, 1], b=[1, 0, 1], gamma=0.5),
+    "spherical.universal_joint": E(lambda: sph.universal_joint, {"shaft_angle": "scalar"}, shaft_angle=0.5),
+    "spherical.velocity": E(lambda: sph.velocity, {"omega": "vec3", "p": "vec3"}, omega=[0, 0, 2.0], p=[1, 0, 0]),
+    "spherical.precision_pairs#three": E(lambda: sph.precision_pairs,
+                                         {"x": "real", "y": "real", "theta0": "scalar?", "psi0": "scalar?",
+                                          "d": "scalar"},
+                                         x=np.radians([10.0, 30.0, 50.0]), y=0.5 * np.sin(np.radians([10.0, 30.0, 50.0])),
+                                         theta0=0.7, psi0=1.4, d=1.0),
+    # ------------------------------------------------------------------------- exercises
+    "exercises.Exercise.params": E(lambda: ex.get("2-3").params, {"AB": "scalar"}, AB=28.0),
+    "exercises.Exercise.statement_text": E(lambda: ex.get("2-3").statement_text, {"AB": "scalar"}, AB=28.0),
+    "exercises.Exercise.solve": E(lambda: ex.get("2-3").solve, {"AB": "scalar"}, AB=28.0),
+    "exercises.Exercise.variant": E(lambda: ex.get("2-3").variant, {"max_tries": "count", "rng": "seed"},
+                                    rng=7, max_tries=100),
+    "exercises.Exercise.params#dict": E(lambda: ex.get("2-3").params, {"params": ("scalar", lambda v: {"AB": v}, "AB")},
+                                        params={"AB": 28.0}),
+    "exercises.Exercise.solve#dict": E(lambda: ex.get("2-3").solve, {"params": ("scalar", lambda v: {"AB": v}, "AB")},
+                                       params={"AB": 28.0}),
+    "exercises.Result.as_markdown": E(lambda: ex.get("2-3").solve().results()[0].as_markdown),
+    "exercises.Solution.results": E(lambda: ex.get("2-3").solve().results),
+    "exercises.Solution.values": E(lambda: ex.get("2-3").solve().values),
+    "exercises.Solution.as_markdown": E(lambda: ex.get("2-3").solve().as_markdown, {"heading_level": "count?"},
+                                        heading_level=2),
+    "exercises.get": E(lambda: ex.get, {"number": "option"}, number="2-3"),
+    "exercises.chapter2.merge_intervals": E(lambda: chapter2.merge_intervals,
+                                            intervals=[ex.Interval(0.0, 1.0), ex.Interval(1.0, 2.0, True)]),
+    "exercises.chapter2_analysis.cam_2_10": E(lambda: chapter2_analysis.cam_2_10, {"side": "branch"}, side=-1),
+    "exercises.chapter2_analysis.linkage_2_4": E(lambda: chapter2_analysis.linkage_2_4, {"h": "scalar?"}, h=5.0),
+    "exercises.chapter2_analysis.linkage_2_4#dict": E(lambda: chapter2_analysis.linkage_2_4,
+                                                      {"params": ("scalar", lambda v: {"AB": v}, "AB")},
+                                                      params={"AB": 30.0}),
+    "exercises.chapter2_analysis.linkage_2_5": E(lambda: chapter2_analysis.linkage_2_5, {"y": "scalar"}, y=10.0),
+    "exercises.chapter2_analysis.linkage_2_7": E(lambda: chapter2_analysis.linkage_2_7, {"bc": "scalar?"}, bc=80.0),
+}
+
+#: Public classes whose constructors are not walked, and why: the package builds them (result
+#: records and exception types); the user reads them and never feeds numbers into them.
+RECORDS = {
+    "mech.AssemblyError": "exception type",
+    "mech.InputTypeError": "exception type",
+    "planar.AssemblyError": "exception type",
+    **{f"planar.{n}": "result record built by the package" for n in (
+        "AssemblyInterval", "Centre", "CentrodeSegment", "Cognate", "CognatePose", "CouplerCentrodes",
+        "CouplerDashes", "DeadPoints", "Equation", "FourBarPose", "GrashofResult", "GuideBarPose", "Image",
+        "InclineForces", "InstantCentres", "KindInterval", "LimitPositions", "LinkVelocities",
+        "LinkageSolution", "OldhamPose", "Polygon", "RelativeMotion", "RotatingGuideBarPose",
+        "ScotchYokePose", "ScrewResult", "Slide", "SliderCrankLimits", "SliderCrankPose",
+        "SliderCrankSeries", "StaticForces", "Stroke", "TangentPose", "TenBarPose", "Term", "TrammelPose",
+        "TransmissionExtremes", "TriadPose", "WedgePress")},
+    **{f"spatial.{n}": "result record built by the package" for n in (
+        "AssemblyRange", "ChainPose", "DoubleJointPose", "RCCCPose", "RSSRPose")},
+    **{f"spherical.{n}": "result record built by the package" for n in (
+        "Circle", "Collinearity", "FunctionGenerator", "Intersection", "PolygonRelations", "SliderStroke",
+        "SphericalFourBarPose", "SphericalPolygon", "SphericalType")},
+    **{f"exercises.{n}": "record of the exercise catalogue built by the package" for n in (
+        "Exercise", "Interval", "Parameter", "Part", "Result", "Solution")},
+}
+
+
+# ----------------------------------------------------------------------------- the walk
+def _public_callables():
+    """Qualified names of every public function, class and public method of a public class."""
+    found = set()
+    for prefix, module in MODULES.items():
+        for name in module.__all__:
+            obj = getattr(module, name)
+            key = f"{prefix}.{name}" if prefix != "mech" else f"mech.{name}"
+            if isinstance(obj, ModuleType) or not callable(obj):
+                continue
+            found.add(key)
+            if inspect.isclass(obj):
+                for attr, value in vars(obj).items():
+                    func = value.__func__ if isinstance(value, (classmethod, staticmethod)) else value
+                    if not attr.startswith("_") and inspect.isfunction(func):
+                        found.add(f"{key}.{attr}")
+    return found
+
+
+def test_every_public_callable_is_registered():
+    registered = {k.split("#")[0] for k in CASES} | set(RECORDS)
+    missing = sorted(_public_callables() - registered)
+    assert not missing, f"register these public callables in CASES or RECORDS: {missing}"
+    stale = sorted(registered - _public_callables())
+    assert not stale, f"these entries name nothing public: {stale}"
+
+
+def _name_pattern(shown):
+    # The argument in backticks, maybe followed by an index or a qualifier
+    # (`lengths[1] ...`, `at.real`, `length of crank`).
+    return re.compile("`" + re.escape(shown) + r"[`\[ .]")
+
+
+def _check(key, slot, bad_name, value=None, texts=None):
+    entry = CASES[key]
+    kind, wrap, shown = entry.slot(slot)
+    if value is None and texts is None:
+        value, texts = BAD[bad_name]
+    try:
+        entry.call(**{slot: wrap(value)})
+    except (ValueError, TypeError) as exc:
+        msg = str(exc)
+        problems = []
+        if not _name_pattern(shown).search(msg):
+            problems.append(f"does not name `{shown}`")
+        if not any(t in msg for t in texts):
+            problems.append(f"does not show the value (one of {texts})")
+        if problems:
+            return f"{key}({slot}={bad_name}): {type(exc).__name__} {', '.join(problems)}: {msg!r}"
+        return None
+    except Exception as exc:  # noqa: BLE001 - the point is to report any other exception
+        return f"{key}({slot}={bad_name}): bare {type(exc).__name__}: {exc}"
+    return f"{key}({slot}={bad_name}): accepted {value!r}"
+
+
+def bad_kinds(kind):
+    """The bad kinds for a slot kind; a trailing "?" means None is a valid value there."""
+    if kind.endswith("?"):
+        return [b for b in KINDS[kind[:-1]] if b != "none"]
+    return KINDS[kind]
+
+
+def _all_cases():
+    for key, entry in CASES.items():
+        for slot in entry.slots:
+            for bad_name in bad_kinds(entry.slot(slot)[0]):
+                yield key, slot, bad_name
+
+
+@pytest.mark.parametrize("key", sorted(CASES))
+def test_valid_call_succeeds(key):
+    CASES[key].call()
+
+
+@pytest.mark.parametrize("key", sorted(k for k in CASES if CASES[k].slots))
+def test_bad_values_rejected_by_name(key):
+    failures = [f for k, slot, bad in _all_cases() if k == key for f in [_check(k, slot, bad)] if f]
+    assert not failures, "\n".join(failures)
+
+
+def test_table_size():
+    """The walk is as wide as reported (callables, slots, bad kinds, cases)."""
+    slots = sum(len(e.slots) for e in CASES.values())
+    cases = sum(1 for _ in _all_cases())
+    assert len({k.split("#")[0] for k in CASES}) + len(RECORDS) == len(_public_callables())
+    assert slots > 300 and cases > 3000
+
+
+# ----------------------------------------------------------------------------- Hypothesis
+_SLOTTED = sorted((k, s) for k, e in CASES.items() for s in e.slots)
+_finite = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e6, max_value=1e6)
+
+
+def _random_bad(kind):
+    """Random bad values for a slot kind, with the texts the message must show."""
+    strategies = [
+        st.sampled_from(bad_kinds(kind)).map(lambda n: (n, *BAD[n])),
+        st.sampled_from([math.nan, math.inf, -math.inf]).map(lambda x: ("nonfinite", x, [repr(x)])),
+    ]
+    if kind not in ("option", "point_or_name", "length_or_name"):     # there a string is a name
+        strategies.append(st.text(alphabet="0123456789.-e", min_size=1, max_size=8).map(
+            lambda s: ("str", s, [repr(s)])))
+    kind = kind.rstrip("?")
+    if kind not in ("point", "point1", "point_or_name", "int", "count", "order", "bool", "branch", "option"):
+        strategies.append(st.tuples(_finite, _finite.filter(lambda y: y != 0.0)).map(
+            lambda t: ("complex", complex(*t), [repr(complex(*t)).strip("()")])))
+        strategies.append(st.lists(st.booleans(), min_size=1, max_size=4).map(
+            lambda b: ("bools", np.array(b), [str(b[0])])))
+    if kind in ("real", "scalar", "realmap", "scalarmap", "point", "point1", "point_or_name",
+                "length_or_name", "vec3", "matrix"):
+        strategies.append(st.tuples(st.lists(_finite, max_size=3), st.text(min_size=1, max_size=4)).map(
+            lambda t: ("list+str", [*t[0], t[1]], [repr(t[1])])))
+    return st.one_of(strategies)
+
+
+@settings(max_examples=1500, deadline=None)
+@given(data=st.data())
+def test_random_bad_values_rejected_by_name(data):
+    key, slot = data.draw(st.sampled_from(_SLOTTED), label="slot")
+    kind = CASES[key].slot(slot)[0]
+    label, value, texts = data.draw(_random_bad(kind), label="bad value")
+    failure = _check(key, slot, label, value, texts)
+    assert failure is None, failure
+
+
+# ----------------------------------------------------------------------------- the reported cases
+def test_fourbar_strings_and_booleans_rejected():
+    """Issue 11, item 9: ``FourBar("10", "40", "30", True)`` built a four-bar with d = 1."""
+    with pytest.raises(mech.InputTypeError, match="Expected `a`.*'10'"):
+        pl.FourBar("10", 40, 30, 35)
+    with pytest.raises(mech.InputTypeError, match="Expected `d`.*True"):
+        pl.FourBar(10, 40, 30, True)
+    with pytest.raises(mech.InputTypeError, match="Expected `coupler`.*True"):
+        pl.FourBar(10, 40, 30, 35, coupler=(True, 0.0))
+
+
+def test_friction_angle_complex_named():
+    """Issue 11, item 8: ``friction_angle(1+1j)`` leaked "float() argument must be ..."."""
+    with pytest.raises(mech.InputTypeError, match=r"Expected `mu`.*\(1\+1j\)"):
+        pl.friction_angle(1 + 1j)
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, complex(math.nan, 0.0), complex(0.0, -math.inf)])
+def test_linkage_ground_rejects_nonfinite(bad):
+    """Issue 11, item 7: NaN or infinite ground points were accepted."""
+    with pytest.raises(ValueError, match=r"Expected finite `ground\['D'\]`"):
+        pl.Linkage({"A": 0, "D": bad})
+    with pytest.raises(ValueError, match="Expected finite `at`"):
+        pl.Linkage({"A": 0}).ground("D", bad)
+
+
+@pytest.mark.parametrize("make", [sph.Dual, sph.dual])
+@pytest.mark.parametrize("real, dual, name", [(math.nan, 0.0, "real"), (0.5, math.inf, "dual"),
+                                              (0.5, -math.inf, "dual")])
+def test_dual_rejects_nonfinite(make, real, dual, name):
+    """Issue 11, item 7: NaN or infinite parts of `Dual` and `dual` were accepted."""
+    with pytest.raises(ValueError, match=f"Expected finite `{name}`"):
+        make(real, dual)
+
+
+@pytest.mark.parametrize("bad", ["0.5", True, 0.5 + 0j, None])
+def test_dual_rejects_wrong_types(bad):
+    with pytest.raises(mech.InputTypeError, match="Expected `real`"):
+        sph.Dual(bad, 1.0)
+    with pytest.raises(mech.InputTypeError, match="Expected `dual`"):
+        sph.dual(0.5, bad)
+
+
+def test_dual_arithmetic_still_carries_nan():
+    """The check is on the user's parts only: arithmetic may still produce NaN (0/0)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q = sph.Dual(0.0, 1.0) / sph.Dual(0.0, 0.0)
+    assert np.isnan(q.real_part)
+
+
+def test_planar_point_accepts_real_and_complex():
+    from mech._validate import planar_point, planar_points
+
+    assert planar_point("at", 3) == 3 + 0j
+    assert planar_point("at", np.float64(2.5)) == 2.5 + 0j
+    assert planar_point("at", 1 - 2j) == 1 - 2j
+    np.testing.assert_array_equal(planar_points("at", [1, 2j, 3 + 4j]), np.array([1, 2j, 3 + 4j]))
+    with pytest.raises(mech.InputTypeError, match="Expected `at`.*True"):
+        planar_points("at", [1.0, True])
+    with pytest.raises(ValueError, match="Expected `at` to be a single point"):
+        planar_point("at", [1, 2])
+
+
+@pytest.mark.parametrize("value, message", [(1, "1"), (1.0, "1.0"), ("yes", "'yes'"), (None, "None")])
+def test_strict_must_be_a_bool(value, message):
+    with pytest.raises(mech.InputTypeError, match=f"Expected `strict` to be True or False, got {message}"):
+        pl.FourBar(10, 40, 30, 35).solve(0.5, strict=value)
