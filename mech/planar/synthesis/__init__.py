@@ -34,3 +34,24 @@ __all__ = [
     "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
     "least_squares", "lengths_from_coefficients", "precision_pairs",
 ]
+
+# optimisation design (section 4.5, Examples 2-23 and 2-24)
+from mech.planar.synthesis._optimisation import (
+    DesignModel,
+    OptimisationResult,
+    grid_search,
+    penalty_method,
+    scipy_minimize,
+)
+
+__all__ += ["DesignModel", "OptimisationResult", "grid_search", "penalty_method", "scipy_minimize"]
+from mech.planar.synthesis._optimisation_examples import (
+    PATH_VARIABLES,
+    CouplerPathDesign,
+    SteeringTrapezoid,
+    path_synthesis_model,
+    steering_trapezoid_model,
+)
+
+__all__ += ["PATH_VARIABLES", "CouplerPathDesign", "SteeringTrapezoid", "path_synthesis_model",
+            "steering_trapezoid_model"]
