@@ -201,12 +201,27 @@ def _result(model, x, evaluations, history, method, message):
                               np.array(history, dtype=float).reshape(-1, 2), method, message, model.names)
 
 
+class _NoBar:
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def update(self, n=1):
+        pass
+
+
 def _bar(progress, total, initial, desc):
-    """A tqdm bar on standard output (never standard error, which fails a book build)."""
+    """A tqdm bar on standard output (never standard error, which fails a book build).
+
+    tqdm is imported only when a bar is asked for, so the searches run without it.
+    """
+    if not progress:
+        return _NoBar()
     from tqdm import tqdm
 
-    return tqdm(total=total, initial=initial, desc=desc, disable=not progress, file=sys.stdout,
-                leave=False)
+    return tqdm(total=total, initial=initial, desc=desc, file=sys.stdout, leave=False)
 
 
 def _load(checkpoint, kind, fingerprint):
@@ -300,8 +315,9 @@ def grid_search(model, *, points=11, levels=40, shrink=0.5, max_points=1_000_000
         raise ValueError(f"Expected `points` odd and >= 3, got {points}")
     levels = nonnegative_int("levels", levels, 10**6)
     every = nonnegative_int("every", every, 10**9)
-    if levels < 1 or every < 1:
-        raise ValueError(f"Expected `levels` >= 1 and `every` >= 1, got {levels} and {every}")
+    for name, value in (("levels", levels), ("every", every)):
+        if value < 1:
+            raise ValueError(f"Expected `{name}` >= 1, got {value}")
     shrink = real_number("shrink", shrink)
     if not 0.0 < shrink < 1.0:
         raise ValueError(f"Expected `shrink` in (0, 1), got {shrink}")
@@ -461,16 +477,21 @@ def penalty_method(model, x0, *, r0=None, factor=0.1, stages=8, iterations=2000,
         raise ValueError(f"Expected `x0` strictly inside the box and g < 0 with f finite, got x0 = "
                          f"{x0.tolist()} (g = {model.g(x0).tolist()}, f = {float(f0)})")
     factor = real_number("factor", factor)
+    if not 0.0 < factor < 1.0:
+        raise ValueError(f"Expected `factor` in (0, 1), got {factor}")
     step = real_number("step", step)
+    if not step > 0.0:
+        raise ValueError(f"Expected `step` > 0, got {step}")
     ftol, xtol = real_number("ftol", ftol), real_number("xtol", xtol)
-    if not 0.0 < factor < 1.0 or not step > 0.0 or ftol < 0.0 or xtol < 0.0:
-        raise ValueError(f"Expected 0 < `factor` < 1, `step` > 0, `ftol`, `xtol` >= 0, got "
-                         f"{factor}, {step}, {ftol}, {xtol}")
+    for name, value in (("ftol", ftol), ("xtol", xtol)):
+        if not value >= 0.0:
+            raise ValueError(f"Expected `{name}` >= 0, got {value}")
     stages = nonnegative_int("stages", stages, 10**4)
     iterations = nonnegative_int("iterations", iterations, 10**9)
     every = nonnegative_int("every", every, 10**9)
-    if stages < 1 or iterations < 1 or every < 1:
-        raise ValueError(f"Expected `stages`, `iterations` and `every` >= 1, got {stages}, {iterations}, {every}")
+    for name, value in (("stages", stages), ("iterations", iterations), ("every", every)):
+        if value < 1:
+            raise ValueError(f"Expected `{name}` >= 1, got {value}")
     if r0 is None:
         with np.errstate(all="ignore"):
             barrier = phi0 - f0 - np.sum(model.h(x0) ** 2)
@@ -574,7 +595,7 @@ def scipy_minimize(model, x0, *, method="SLSQP", options=None):
     ...     return (73*x1**2 + 52*x2**2 + 72*x1*x2 - 356*x1 - 292*x2 + 433)[..., None]
     >>> model = DesignModel(lambda x: ((x - 2.0) ** 2).sum(-1), [(0, 3), (0, 3)],
     ...                     inequality=lambda x: (x**2).sum(-1, keepdims=True) - 4.0, equality=h)
-    >>> scipy_minimize(model, [1.0, 1.0]).x.round(6).tolist()
+    >>> scipy_minimize(model, [1.0, 1.0], options={"maxiter": 1000}).x.round(4).tolist()
     [0.8, 1.1]
     """
     from scipy.optimize import Bounds, NonlinearConstraint, minimize

@@ -168,6 +168,8 @@ class SteeringTrapezoid:
                              f"got l1 = {self.l1}, phi0 = {self.phi0}, a = {self.a}")
         # C is to the left of B->D in the drawn trapezoid: branch +1 (see the derivation page)
         self.fourbar = FourBar(self.l1, self.l2, self.l1, self.a, branch=1)
+        # solved in units of the track: FourBar's solve overflows near 1e300 on this branch
+        self._unit = FourBar(self.l1 / self.a, self.l2 / self.a, self.l1 / self.a, 1.0, branch=1)
 
     def __repr__(self):
         return f"SteeringTrapezoid(l1={self.l1!r}, phi0={self.phi0!r}, a={self.a!r}, h={self.h!r})"
@@ -189,12 +191,12 @@ class SteeringTrapezoid:
         if steps < 1 or not 0.0 < theta_max < np.pi / 2:
             raise ValueError(f"Expected `steps` >= 1 and `theta_max` in (0, pi/2), got {steps}, {theta_max}")
         theta = np.linspace(0.0, theta_max, steps + 1)
-        sol = self.fourbar.solve(self.phi0 + theta)
+        sol = self._unit.solve(self.phi0 + theta)
         beta = _wrap(sol.psi - np.pi + self.phi0)
         ideal = self.beta_ideal(theta)
         weight = _trapezoid_weights(steps) * (theta_max / steps)
         with np.errstate(invalid="ignore"):
-            gamma = self.fourbar.transmission_angle(self.phi0 + theta)
+            gamma = self._unit.transmission_angle(self.phi0 + theta)
         return SteeringProof(theta, beta, ideal, float(np.max(np.abs(beta - self.beta(theta)))),
                              float(np.sum(weight * (ideal - beta) ** 2)), float(np.max(np.abs(ideal - beta))),
                              float(np.min(gamma)), bool(np.all(sol.valid)))
@@ -213,12 +215,15 @@ def _points(points):
 def _coupler_model(x, n):
     """Coupler points of (2-58) for designs x (..., 10) at n equal crank steps: shape (..., n)."""
     l1, l2, l3, l4, l5, xa, ya, alpha, phi4, theta0 = (x[..., i:i + 1] for i in range(10))
+    # angles from ratios to the longest link: no overflow or underflow in squares at any scale
+    s = np.maximum(np.maximum(l1, l2), np.maximum(l3, l4))
+    l1, l2, l3, l4 = l1 / s, l2 / s, l3 / s, l4 / s
     phi1 = theta0 + 2.0 * np.pi * np.arange(n) / n
     d = np.sqrt(l1 * l1 + l4 * l4 - 2.0 * l1 * l4 * np.cos(phi1))
     # beta of the text, arcsin(l1 sin(phi1) / d), in atan2 form (the same for l1 < l4)
     beta = np.arctan2(l1 * np.sin(phi1), l4 - l1 * np.cos(phi1))
     delta = np.arccos((l2 * l2 + d * d - l3 * l3) / (2.0 * l2 * d)) - beta
-    return (xa + 1j * ya + l1 * np.exp(1j * (phi4 + phi1)) + l5 * np.exp(1j * (alpha + delta + phi4)))
+    return xa + 1j * ya + s * l1 * np.exp(1j * (phi4 + phi1)) + l5 * np.exp(1j * (alpha + delta + phi4))
 
 
 def path_synthesis_model(points, *, gamma_min=np.radians(30.0), bounds=None):
@@ -281,10 +286,13 @@ def path_synthesis_model(points, *, gamma_min=np.radians(30.0), bounds=None):
 
     def inequality(x):
         l1, l2, l3, l4 = (x[..., i] for i in range(4))
+        s = np.maximum(np.maximum(l1, l2), np.maximum(l3, l4))
         with np.errstate(all="ignore"):
+            l1, l2, l3, l4 = l1 / s, l2 / s, l3 / s, l4 / s     # the cosines from ratios (no overflow)
             g5 = gamma_min - np.arccos((l2**2 + l3**2 - (l4 - l1) ** 2) / (2 * l2 * l3))
             g6 = gamma_min - (np.pi - np.arccos((l2**2 + l3**2 - (l4 + l1) ** 2) / (2 * l2 * l3)))
-        return np.stack([l1 + l4 - l2 - l3, l1 + l3 - l2 - l4, l1 + l2 - l3 - l4, -l1, g5, g6], axis=-1)
+        return np.stack([s * (l1 + l4 - l2 - l3), s * (l1 + l3 - l2 - l4), s * (l1 + l2 - l3 - l4), -s * l1, g5, g6],
+                        axis=-1)
 
     return DesignModel(objective, bounds, inequality=inequality, names=PATH_VARIABLES)
 
@@ -345,6 +353,11 @@ class CouplerPathDesign:
         self.points = _points(points)
         l1, l2, l3, l4, l5, xa, ya, alpha, phi4, theta0 = (float(v) for v in x)
         self.fourbar = FourBar(l1, l2, l3, l4, branch=1, coupler=(l5 * np.cos(alpha), l5 * np.sin(alpha)))
+        # The same linkage in units of its longest length, solved by `prove`: FourBar's solve
+        # overflows for lengths near 1e300 on this branch (issue 11 fixes it on main).
+        self._scale = max(l1, l2, l3, l4, l5)
+        u = np.array([l1, l2, l3, l4, l5]) / self._scale
+        self._unit = FourBar(*u[:4], branch=1, coupler=(u[4] * np.cos(alpha), u[4] * np.sin(alpha)))
         self.origin, self.rotation = complex(xa, ya), phi4
         self.theta = theta0 + 2.0 * np.pi * np.arange(self.points.size) / self.points.size
 
@@ -360,14 +373,14 @@ class CouplerPathDesign:
         samples = nonnegative_int("samples", samples, 10**8)
         if samples < 3:
             raise ValueError(f"Expected `samples` >= 3, got {samples}")
-        sol = self.fourbar.solve(self.theta)
-        P = self.place(sol.P)
+        sol = self._unit.solve(self.theta)
+        P = self.place(self._scale * sol.P)
         d = np.abs(P - self.points)
-        turn = self.fourbar.solve(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
-        curve = self.place(turn.P[turn.valid])
+        turn = self._unit.solve(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
+        curve = self.place(self._scale * turn.P[turn.valid])
         nearest = np.min(np.abs(curve[:, None] - self.points[None, :]), axis=0) if curve.size else \
             np.full(self.points.size, np.inf)
         from mech.planar import grashof
 
-        return PathProof(P, d, float(np.sum(d)), nearest, float(self.fourbar.min_transmission_angle()[0]),
+        return PathProof(P, d, float(np.sum(d)), nearest, float(self._unit.min_transmission_angle()[0]),
                          grashof(*self.x[:4]).kind, bool(np.all(sol.valid)))
