@@ -119,9 +119,9 @@ def test_penalty_method_textbook_example_one_stage():
 
 def test_penalty_method_converges_to_constrained_optimum():
     """Point B of Fig. 2-110 from inside, and C with the exterior term for h."""
-    b = penalty_method(_qp(equality=False), [0.5, 0.5], stages=10)
+    b = penalty_method(_qp(equality=False), [0.5, 0.5], factor=0.1, stages=10)
     assert np.allclose(b.x, np.sqrt(2), atol=1e-4) and np.all(b.g < 0)
-    c = penalty_method(_qp(), [0.5, 0.5], r0=1e-2, stages=8)
+    c = penalty_method(_qp(), [0.5, 0.5], r0=1e-2, factor=0.1, stages=8)
     assert np.allclose(c.x, [0.8, 1.1], atol=1e-3)
 
 
@@ -149,7 +149,7 @@ def test_example_2_23_grid_optimum():
 def test_example_2_23_methods_agree():
     model = steering_trapezoid_model()
     grid = grid_search(model, points=21, levels=40)
-    pen = penalty_method(model, [300.0, 1.4], stages=10)
+    pen = penalty_method(model, [300.0, 1.4], factor=0.1, stages=10)
     sq = scipy_minimize(model, [300.0, 1.4], options={"ftol": 1e-14})
     for res in (pen, sq):
         assert np.all(res.g <= 1e-9) and abs(res.fun - grid.fun) < 1e-4 * grid.fun

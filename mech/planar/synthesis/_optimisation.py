@@ -380,12 +380,19 @@ def _barrier(model, X, r):
 
 
 def _nelder_mead_step(model, r, S, Phi, Fv):
-    """One Nelder-Mead iteration on a sorted simplex; returns the new simplex and the evaluations spent."""
+    """One Nelder-Mead iteration on a sorted simplex, in place; returns the evaluations spent.
+
+    The expansion, contraction and shrink coefficients adapt to the dimension n (Gao and Han,
+    2012: 1 + 2/n, 3/4 - 1/(2n), 1 - 1/n); for n = 2 they are the classic 2, 1/2, 1/2, and
+    for larger n they keep the simplex from collapsing early.
+    """
+    n = S.shape[1]
+    expand, contract, shrink = 1.0 + 2.0 / n, 0.75 - 0.5 / n, 1.0 - 1.0 / max(n, 2)
     c = S[:-1].mean(axis=0)
     xr = c + (c - S[-1])
     (pr,), (fr,) = _barrier(model, xr[None], r)
     if pr < Phi[0]:
-        xe = c + 2.0 * (c - S[-1])
+        xe = c + expand * (c - S[-1])
         (pe,), (fe,) = _barrier(model, xe[None], r)
         S[-1], Phi[-1], Fv[-1] = (xe, pe, fe) if pe < pr else (xr, pr, fr)
         return 2
@@ -393,17 +400,17 @@ def _nelder_mead_step(model, r, S, Phi, Fv):
         S[-1], Phi[-1], Fv[-1] = xr, pr, fr
         return 1
     outside = pr < Phi[-1]
-    xc = c + 0.5 * (xr - c) if outside else c + 0.5 * (S[-1] - c)
+    xc = c + contract * (xr - c) if outside else c + contract * (S[-1] - c)
     (pc,), (fc,) = _barrier(model, xc[None], r)
     if (pc <= pr) if outside else (pc < Phi[-1]):
         S[-1], Phi[-1], Fv[-1] = xc, pc, fc
         return 2
-    S[1:] = S[0] + 0.5 * (S[1:] - S[0])
+    S[1:] = S[0] + shrink * (S[1:] - S[0])
     Phi[1:], Fv[1:] = _barrier(model, S[1:], r)
     return 2 + S.shape[0] - 1
 
 
-def penalty_method(model, x0, *, r0=None, factor=0.1, stages=8, iterations=2000, step=0.05,
+def penalty_method(model, x0, *, r0=None, factor=0.3, stages=12, iterations=2000, step=0.05,
                    ftol=1e-13, xtol=1e-11, progress=False, checkpoint=None, every=200):
     """Minimise a design model by the interior penalty (barrier) method of the textbook (F50).
 
@@ -464,7 +471,7 @@ def penalty_method(model, x0, *, r0=None, factor=0.1, stages=8, iterations=2000,
 
     >>> from mech.planar.synthesis import DesignModel, penalty_method
     >>> model = DesignModel(lambda x: x[..., 0], [(-5, 5)], inequality=lambda x: 1.0 - x)
-    >>> round(float(penalty_method(model, [3.0], r0=1.0, stages=10).x[0]), 4)
+    >>> round(float(penalty_method(model, [3.0], r0=1.0, factor=0.1, stages=10).x[0]), 4)
     1.0
     """
     if not isinstance(model, DesignModel):
