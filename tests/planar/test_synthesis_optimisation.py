@@ -332,3 +332,20 @@ def test_solvers_reject_bad_input():
         SteeringTrapezoid(1000.0, 0.2)
     with pytest.raises(ValueError, match="Expected `x`"):
         CouplerPathDesign(START_2_24[:9], POINTS_2_24)
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e300])
+def test_grid_search_scale_invariant(scale):
+    """The grid method on Example 2-23 in any unit of length finds the same design."""
+    ref = grid_search(steering_trapezoid_model(), points=11, levels=30)
+    got = grid_search(steering_trapezoid_model(1480 * scale, 2960 * scale), points=11, levels=30)
+    assert abs(got.x[0] / scale - ref.x[0]) < 1e-12 * ref.x[0] and abs(got.x[1] - ref.x[1]) < 1e-12
+    assert abs(got.fun - ref.fun) < 1e-12 * ref.fun
+
+
+def test_design_model_feasible():
+    model = _qp(equality=False)
+    x = np.array([[1.0, 1.0], [1.9, 1.9], [-0.5, 1.0], [3.5, 0.0]])
+    assert model.feasible(x).tolist() == [True, False, False, False]
+    assert model.feasible([2.0, 0.0]).item() and not model.feasible([2.0, 0.1]).item()
+    assert model.feasible([2.0, 0.1], tol=0.02).item()

@@ -71,7 +71,7 @@ class DesignModel:
     -----
     The box is part of the model: the grid method lays its grid in it, the penalty method
     adds ``lower - x <= 0`` and ``x - upper <= 0`` to the inequality constraints, and SciPy
-    receives it as bounds. Page ``book/synthesis/optimisation``.
+    receives it as bounds. Page ``book-synthesis-optimisation``.
 
     Examples
     --------
