@@ -36,13 +36,8 @@ __all__ = [
 ]
 
 # optimisation design (section 4.5, Examples 2-23 and 2-24)
-from mech.planar.synthesis._optimisation import (
-    DesignModel,
-    OptimisationResult,
-    grid_search,
-    penalty_method,
-    scipy_minimize,
-)
+from mech.planar.synthesis._optimisation import DesignModel, OptimisationResult, grid_search, scipy_minimize
+from mech.planar.synthesis._optimisation_penalty import penalty_method
 
 __all__ += ["DesignModel", "OptimisationResult", "grid_search", "penalty_method", "scipy_minimize"]
 from mech.planar.synthesis._optimisation_examples import (
