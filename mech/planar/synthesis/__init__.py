@@ -24,19 +24,16 @@ from mech.planar.synthesis._guidance import (
 )
 from mech.planar.synthesis._guidance_curve import BurmesterCurve, circle_point_curve
 from mech.planar.synthesis._guidance_fourbar import GuidanceFourBar, GuidanceSynthesis, guidance_fourbars
-
-__all__ = [
-    # displacements (2-31)-(2-37) and rigid-body guidance
-    "displacement_matrix", "pole", "Dyad", "dyad_for_circle_point", "dyad_for_centre_point",
-    "BurmesterCurve", "circle_point_curve", "BurmesterPoints", "burmester",
-    "GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars",
-    # function generation (2-43)-(2-45)
-    "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
-    "least_squares", "lengths_from_coefficients", "precision_pairs",
-]
-
-# quick-return design (2-46)-(2-52), examples 2-17 to 2-20
-from mech.planar.synthesis._quick_return_design import (  # noqa: E402
+from mech.planar.synthesis._optimisation import DesignModel, OptimisationResult, grid_search, scipy_minimize
+from mech.planar.synthesis._optimisation_examples import (
+    PATH_VARIABLES,
+    CouplerPathDesign,
+    SteeringTrapezoid,
+    path_synthesis_model,
+    steering_trapezoid_model,
+)
+from mech.planar.synthesis._optimisation_penalty import penalty_method
+from mech.planar.synthesis._quick_return_design import (
     QuickReturnCheck,
     QuickReturnCrankRocker,
     QuickReturnFamily,
@@ -50,8 +47,21 @@ from mech.planar.synthesis._quick_return_design import (  # noqa: E402
     slider_crank_family,
 )
 
-__all__ += [
+__all__ = [
+    # displacements (2-31)-(2-37) and rigid-body guidance
+    "displacement_matrix", "pole", "Dyad", "dyad_for_circle_point", "dyad_for_centre_point",
+    "BurmesterCurve", "circle_point_curve", "BurmesterPoints", "burmester",
+    "GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars",
+    # function generation (2-43)-(2-45)
+    "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
+    "least_squares", "lengths_from_coefficients", "precision_pairs",
+    # quick-return design (2-46)-(2-52), examples 2-17 to 2-20
     "QuickReturnCheck", "QuickReturnCrankRocker", "QuickReturnFamily", "QuickReturnGuideBar",
-    "QuickReturnSliderCrank", "crank_rocker_family", "quick_return_crank_rocker", "quick_return_guide_bar",
-    "quick_return_slider_crank", "simulate_quick_return", "slider_crank_family",
+    "QuickReturnSliderCrank", "crank_rocker_family", "quick_return_crank_rocker",
+    "quick_return_guide_bar", "quick_return_slider_crank", "simulate_quick_return",
+    "slider_crank_family",
+    # optimisation design, examples 2-23 and 2-24
+    "DesignModel", "OptimisationResult", "grid_search", "penalty_method", "scipy_minimize",
+    "PATH_VARIABLES", "CouplerPathDesign", "SteeringTrapezoid", "path_synthesis_model",
+    "steering_trapezoid_model",
 ]
