@@ -64,3 +64,9 @@ def test_import_mech_spatial_light():
 
 def test_import_mech_spherical_light():
     assert _heavy_modules_after(["import mech.spherical"]) == []
+
+
+def test_import_mech_planar_synthesis_light():
+    """The synthesis subpackage loads SciPy and tqdm only inside the searches that use them."""
+    statements = ["import mech.planar.synthesis", "import mech.exercises.chapter2"]
+    assert _heavy_modules_after(statements) == []

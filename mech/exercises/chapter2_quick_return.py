@@ -22,7 +22,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from mech._validate import positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
@@ -38,6 +37,13 @@ __all__ = [
     "Shaper",
     "shaper_2_32",
 ]
+
+
+def _optimize():
+    """SciPy's optimize module, imported on first use so that importing mech stays light."""
+    from scipy import optimize
+
+    return optimize
 
 _DEG = math.pi / 180.0
 #: Relative tolerance on the simulated time ratio and swing of an accepted design, and the
@@ -317,7 +323,7 @@ class Shaper:
         v = self.ram(t, order=1)[1]
         idx = np.flatnonzero(np.sign(v) != np.sign(np.roll(v, -1)))
         step = t[1] - t[0]
-        stops = [brentq(lambda u: float(self.ram(np.array([u]), 1)[1][0]), t[i], t[i] + step, xtol=xtol) for i in idx]
+        stops = [_optimize().brentq(lambda u: float(self.ram(np.array([u]), 1)[1][0]), t[i], t[i] + step, xtol=xtol) for i in idx]
         if len(stops) != 2:
             raise ValueError(f"Expected a ram with two limit positions per turn, got {len(stops)}")
         y = self.ram(np.array(stops))

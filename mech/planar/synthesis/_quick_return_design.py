@@ -21,7 +21,6 @@ from dataclasses import dataclass, replace
 from typing import Callable
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from mech._generated.quick_return_design import (
     qr_alpha_from_lengths,
@@ -50,6 +49,13 @@ __all__ = [
     "slider_crank_family",
     "simulate_quick_return",
 ]
+
+
+def _optimize():
+    """SciPy's optimize module, imported on first use so that importing mech stays light."""
+    from scipy import optimize
+
+    return optimize
 
 _TWO_PI = 2.0 * math.pi
 
@@ -124,7 +130,7 @@ def _stops(rate, t, xtol):
     roots = []
     for i in idx:
         lo, hi = t[i], t[i] + (t[1] - t[0])
-        roots.append(brentq(lambda u: float(rate(np.array([u]))[0]), lo, hi, xtol=xtol) % _TWO_PI)
+        roots.append(_optimize().brentq(lambda u: float(rate(np.array([u]))[0]), lo, hi, xtol=xtol) % _TWO_PI)
     return roots
 
 
@@ -153,7 +159,7 @@ def _simulate(position, rate, gamma, samples, xtol, angular=True):
     g = gamma(t)
     k = int(np.argmin(g))
     step = t[1] - t[0]
-    refined = minimize_scalar(lambda u: float(gamma(np.array([u]))[0]), bounds=(t[k] - step, t[k] + step),
+    refined = _optimize().minimize_scalar(lambda u: float(gamma(np.array([u]))[0]), bounds=(t[k] - step, t[k] + step),
                               method="bounded", options={"xatol": xtol})
     return QuickReturnCheck(
         time_ratio=strokes[1] / strokes[0],
@@ -624,7 +630,7 @@ def _search(gamma_of, top, min_transmission, samples, xtol):
     g = gamma_of(alpha)
     k = int(np.argmax(g))
     step = alpha[1] - alpha[0]
-    res = minimize_scalar(lambda u: -float(gamma_of(np.array([u]))[0]),
+    res = _optimize().minimize_scalar(lambda u: -float(gamma_of(np.array([u]))[0]),
                           bounds=(max(alpha[k] - step, 0.5 * alpha[0]), min(alpha[k] + step, top - 0.5 * alpha[0])),
                           method="bounded", options={"xatol": xtol})
     best = float(res.x) if -res.fun >= g[k] else float(alpha[k])
@@ -632,7 +638,7 @@ def _search(gamma_of, top, min_transmission, samples, xtol):
     above = g >= min_transmission
     ends = [0.0] if above[0] else []
     for i in np.flatnonzero(above[1:] != above[:-1]):
-        ends.append(brentq(f, alpha[i], alpha[i + 1], xtol=xtol))
+        ends.append(_optimize().brentq(f, alpha[i], alpha[i + 1], xtol=xtol))
     if above[-1]:
         ends.append(top)
     return best, tuple((float(lo), float(hi)) for lo, hi in zip(ends[0::2], ends[1::2]))
