@@ -34,3 +34,17 @@ __all__ = [
     "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
     "least_squares", "lengths_from_coefficients", "precision_pairs",
 ]
+
+from mech.planar.synthesis._path import (  # noqa: E402
+    PathFourBar,
+    PathSynthesis,
+    path_design,
+    path_residuals,
+    path_timed,
+    path_untimed,
+)
+
+__all__ += [
+    # path generation by precision points (2-53)-(2-56)
+    "PathFourBar", "PathSynthesis", "path_design", "path_residuals", "path_timed", "path_untimed",
+]
