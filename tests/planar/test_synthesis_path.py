@@ -268,7 +268,7 @@ def test_path_untimed_random_starts_find_book_solution():
     (lambda: path_untimed(P21), "Expected 9 points"),
     (lambda: path_untimed(P21[:4]), "Expected `points`"),
     (lambda: path_untimed(["1"] * 9), "Expected `points`"),
-    (lambda: path_untimed(P21[:6] + [np.nan], A=0j), "Expected `points`"),
+    (lambda: path_untimed(P21[:6] + [np.nan], A=0j), "Expected finite `points`"),
     (lambda: path_untimed(P21, A="0"), "Expected `A`"),
     (lambda: path_untimed(P21, A=0j, starts=-1), "Expected `starts`"),
     (lambda: path_untimed(P21, A=0j, tol=0.0), "Expected `tol`"),
