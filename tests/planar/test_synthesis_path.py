@@ -276,6 +276,7 @@ def test_path_untimed_random_starts_find_book_solution():
     (lambda: path_timed(P22, ALPHA22[:4]), "Expected `crank_angles`"),
     (lambda: path_timed(P22, [1j] * 5), "Expected `crank_angles`"),
     (lambda: path_timed(P21, ALPHA22), "Expected `points`"),
+    (lambda: path_timed([1j] * 5, ALPHA22), "Expected `points` not all equal"),
     (lambda: path_design(0j, 0j, 1 + 1j, 2 + 0j, P22), "Expected `B1`"),
     (lambda: path_residuals((0j, 1j), P22, ALPHA22), "Expected `design`"),
     (lambda: path_residuals((0j, 1j, 2 + 1j, 2 + 0j, 1 + 1j), P22, ALPHA22[:3]), "Expected `points` and `crank_angles`"),

@@ -147,7 +147,11 @@ def _analyse(A, B1, C1, D, points, theta_ground, rot, rtol):
     side = np.imag(np.conj(scaled[3] - b) * (c - b))
     branch = 1 if side >= 0.0 else -1
     body = (p1 - b) * np.exp(-1j * np.angle(c - b))
-    model = FourBar(*scaled, branch=branch, coupler=(float(body.real), float(body.imag)))
+    try:
+        model = FourBar(*scaled, branch=branch, coupler=(float(body.real), float(body.imag)))
+    except ValueError:
+        # one link at least as long as the other three together: not a linkage
+        return None
     theta_in = np.angle(np.exp(1j * (np.asarray(theta_ground, dtype=float) - angle)))
     pose = model.solve(theta_in)
     target = turn * (points - A) / unit
@@ -227,7 +231,11 @@ def path_design(A, B1, C1, D, points, *, rtol=1e-9):
             raise ValueError(f"Expected `{name}` distinct from its neighbouring pivot, got {u}")
     rot = _locate(A, B1, C1, D, points)
     B = points + np.exp(1j * rot) * (B1 - points[0])
-    return _analyse(A, B1, C1, D, points, np.angle(B - A), rot, rtol)
+    design = _analyse(A, B1, C1, D, points, np.angle(B - A), rot, rtol)
+    if design is None:
+        lengths = (abs(B1 - A), abs(C1 - B1), abs(C1 - D), abs(D - A))
+        raise ValueError(f"Expected pivots that make a four-bar, got link lengths {lengths}")
+    return design
 
 
 def path_residuals(design, points, crank_angles):
@@ -273,6 +281,9 @@ def path_residuals(design, points, crank_angles):
             f"Expected `points` and `crank_angles` of one shape (n,), got {points.shape} and {crank_angles.shape}"
         )
     first = _analyse(A, B1, C1, D, np.array([P1]), np.array([np.angle(B1 - A)]), np.zeros(1), 1.0)
+    if first is None:
+        lengths = (abs(B1 - A), abs(C1 - B1), abs(C1 - D), abs(D - A))
+        raise ValueError(f"Expected a `design` that makes a four-bar, got link lengths {lengths}")
     return first.coupler_point(crank_angles - first.angle) - points
 
 
@@ -322,6 +333,9 @@ def path_timed(points, crank_angles, *, rtol=1e-9, imag_tol=1e-7):
         raise ValueError(f"Expected `crank_angles` of shape (5,), got shape {crank_angles.shape}")
     rtol = positive_length("rtol", rtol)
     imag_tol = positive_length("imag_tol", imag_tol)
+    if np.all(points == points[0]):
+        # `burmester` would divide by the zero size of the pose set
+        raise ValueError(f"Expected `points` not all equal, got {points}")
     found = []
     for crank in burmester(crank_angles + np.pi, points, imag_tol=imag_tol).dyads:
         A = complex(crank.centre_point)
@@ -336,6 +350,7 @@ def path_timed(points, crank_angles, *, rtol=1e-9, imag_tol=1e-7):
                 continue
             rot = np.angle(np.exp(1j * (beta - beta[0])))
             found.append(_analyse(A, complex(B[0]), complex(C[0]), D, points, np.angle(B - A), rot, rtol))
+    found = [k for k in found if k is not None]
     return PathSynthesis(tuple(found), tuple(k for k in found if k.passes), 0)
 
 
@@ -503,4 +518,5 @@ def path_untimed(points, *, A=None, D=None, initial=(), starts=100, seed=0, max_
         rot = np.concatenate([[0.0], t])
         B = points + np.exp(1j * rot) * (B1g - points[0])
         found.append(_analyse(Ag, B1g, C1g, Dg, points, np.angle(B - Ag), rot, rtol))
+    found = [k for k in found if k is not None]
     return PathSynthesis(tuple(found), tuple(k for k in found if k.passes), len(guesses))
