@@ -12,7 +12,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from mech._generated.path_generation import path_dyad_coefficients, path_dyad_residual
-from mech._validate import nonnegative_int, positive_length, real_array, real_number
+from mech._validate import nonnegative_int, positive_length, real_array
 from mech.planar._fourbar import FourBar
 from mech.planar._grashof import grashof
 from mech.planar.synthesis._displacement import complex_array
