@@ -214,6 +214,17 @@ def path_design(A, B1, C1, D, points, *, rtol=1e-9):
     -------
     PathFourBar
 
+    Raises
+    ------
+    ValueError
+        For bad points or pivots, or pivots that make no four-bar.
+
+    Notes
+    -----
+    The branch is the one drawn (C's side of B->D at the first point); a point the
+    coupler point reaches only on the other branch shows as a large ``point_error``. An
+    unreachable point gets the input angle that brings the crank nearest to it.
+
     Examples
     --------
     >>> from mech.planar.synthesis import path_design
@@ -256,6 +267,17 @@ def path_residuals(design, points, crank_angles):
     -------
     ndarray of complex, shape (n,)
         Analysed coupler point minus target (NaN where the linkage cannot be assembled).
+
+    Raises
+    ------
+    ValueError
+        For bad input, or a `design` that makes no four-bar.
+
+    Notes
+    -----
+    This is the error vector (F32) of the textbook's optimisation (section 4.5): the
+    coupler point comes from `FourBar` on the drawn branch, so an optimiser that uses it
+    sees exactly what analysis will see.
 
     Examples
     --------
