@@ -65,3 +65,17 @@ __all__ = [
     "PATH_VARIABLES", "CouplerPathDesign", "SteeringTrapezoid", "path_synthesis_model",
     "steering_trapezoid_model",
 ]
+
+from mech.planar.synthesis._path import (  # noqa: E402
+    PathFourBar,
+    PathSynthesis,
+    path_design,
+    path_residuals,
+    path_timed,
+    path_untimed,
+)
+
+__all__ += [
+    # path generation by precision points (2-53)-(2-56)
+    "PathFourBar", "PathSynthesis", "path_design", "path_residuals", "path_timed", "path_untimed",
+]
