@@ -33,6 +33,14 @@ from mech.planar.synthesis._optimisation_examples import (
     steering_trapezoid_model,
 )
 from mech.planar.synthesis._optimisation_penalty import penalty_method
+from mech.planar.synthesis._path import (
+    PathFourBar,
+    PathSynthesis,
+    path_design,
+    path_residuals,
+    path_timed,
+    path_untimed,
+)
 from mech.planar.synthesis._quick_return_design import (
     QuickReturnCheck,
     QuickReturnCrankRocker,
@@ -55,6 +63,8 @@ __all__ = [
     # function generation (2-43)-(2-45)
     "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
     "least_squares", "lengths_from_coefficients", "precision_pairs",
+    # path generation by precision points (2-53)-(2-56), examples 2-21 and 2-22
+    "PathFourBar", "PathSynthesis", "path_design", "path_residuals", "path_timed", "path_untimed",
     # quick-return design (2-46)-(2-52), examples 2-17 to 2-20
     "QuickReturnCheck", "QuickReturnCrankRocker", "QuickReturnFamily", "QuickReturnGuideBar",
     "QuickReturnSliderCrank", "crank_rocker_family", "quick_return_crank_rocker",
@@ -64,18 +74,4 @@ __all__ = [
     "DesignModel", "OptimisationResult", "grid_search", "penalty_method", "scipy_minimize",
     "PATH_VARIABLES", "CouplerPathDesign", "SteeringTrapezoid", "path_synthesis_model",
     "steering_trapezoid_model",
-]
-
-from mech.planar.synthesis._path import (  # noqa: E402
-    PathFourBar,
-    PathSynthesis,
-    path_design,
-    path_residuals,
-    path_timed,
-    path_untimed,
-)
-
-__all__ += [
-    # path generation by precision points (2-53)-(2-56)
-    "PathFourBar", "PathSynthesis", "path_design", "path_residuals", "path_timed", "path_untimed",
 ]
