@@ -9,7 +9,6 @@ form as two five-pose Burmester problems). Every design is proved by analysis wi
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from mech._generated.path_generation import path_dyad_coefficients, path_dyad_residual
 from mech._validate import nonnegative_int, positive_length, real_array
@@ -479,6 +478,8 @@ def path_untimed(points, *, A=None, D=None, initial=(), starts=100, seed=0, max_
     >>> [round(v, 3) for v in (k.B1.real, k.B1.imag, k.D.real, k.D.imag)]
     [-95.524, 80.407, 174.194, 18.575]
     """
+    from scipy.optimize import least_squares as scipy_least_squares  # lazily: mech stays light
+
     points = _points(points, (5, 7, 9))
     fixed = {"A": None if A is None else _pivot("A", A), "D": None if D is None else _pivot("D", D)}
     n_fixed = sum(v is not None for v in fixed.values())
@@ -520,7 +521,7 @@ def path_untimed(points, *, A=None, D=None, initial=(), starts=100, seed=0, max_
         free = [v for v, f in ((Ag, norm["A"]), (Dg, norm["D"])) if f is None] + [g[1], g[2]]
         x0 = np.concatenate([np.ravel([[v.real, v.imag] for v in free]), t0])
         with np.errstate(all="ignore"):
-            sol = least_squares(lambda x: fun_jac(x)[0], x0, jac=lambda x: fun_jac(x)[1], method="lm",
+            sol = scipy_least_squares(lambda x: fun_jac(x)[0], x0, jac=lambda x: fun_jac(x)[1], method="lm",
                                 xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=max_steps)
         if not np.all(np.isfinite(sol.x)):
             continue
