@@ -101,6 +101,9 @@ KINDS = {
     "branch": ["true", "false", "zero_branch", "two_branch", "one_string", "none", "object",
                "float_for_int", "complex"],
     "option": ["bogus_option", "int_for_bool", "none", "object"],
+    "tolerance": [b for b in _NUMERIC if b != "inf"] + ["empty_list"],  # one number; inf skips a check
+    "real_nan": [b for b in _NUMERIC if b != "nan"],    # NaN passes through (did not assemble)
+    "function": ["none", "object", "numeric_string", "complex", "dict", "true"],  # a callable
     "seed": ["float_for_int", "true", "numeric_string", "object", "complex", "nan", "dict", "negative_int"],
 }
 BAD["two_branch_over"] = (3, ["3"])
@@ -853,17 +856,17 @@ CASES.update({
     "planar.synthesis.pole": E(lambda: sy.pole, {"theta_1": "real", "d_1": "point", "theta_i": "real", "d_i": "point"},
                                theta_1=0.0, d_1=0.0, theta_i=np.pi / 2, d_i=1 + 1j),
     "planar.synthesis.dyad_for_circle_point": E(lambda: sy.dyad_for_circle_point,
-                                                {"theta": "real", "d": "point", "circle_point": "point1",
+                                                {"theta": "real", "d": "point", "circle_point": "point",
                                                  "along": "scalar"},
                                                 theta=_GT, d=_GD, circle_point=0.5 + 0.5j, along=0.0),
     "planar.synthesis.dyad_for_centre_point": E(lambda: sy.dyad_for_centre_point,
-                                                {"theta": "real", "d": "point", "centre_point": "point1",
+                                                {"theta": "real", "d": "point", "centre_point": "point",
                                                  "along": "scalar"},
                                                 theta=_GT, d=_GD, centre_point=-1 + 2j, along=0.0),
     "planar.synthesis.circle_point_curve": E(lambda: sy.circle_point_curve,
                                              {"theta": "real", "d": "point", "samples": "count", "phi": "real?"},
                                              theta=_T15[:4], d=_P15[:4], samples=24, phi=None),
-    "planar.synthesis.circle_point_curve#phi": E(lambda: sy.circle_point_curve, {"phi": "real"},
+    "planar.synthesis.circle_point_curve#phi": E(lambda: sy.circle_point_curve, {"phi": "real?"},
                                                  theta=_T15[:4], d=_P15[:4], phi=[0.3, 1.0]),
     "planar.synthesis.BurmesterCurve.dyad": E(lambda: _burmester_curve().dyad, {"i": "int", "k": "int"}, i=0, k=1),
     "planar.synthesis.burmester": E(lambda: sy.burmester,
@@ -878,7 +881,7 @@ CASES.update({
     "planar.synthesis.FunctionGenerator": E(lambda: sy.FunctionGenerator,
                                             {"lengths": "real", "theta0": "scalar", "psi0": "scalar",
                                              "branch": "branch", "x": "real", "y": "real", "samples": "count",
-                                             "tol": "scalar"},
+                                             "tol": "tolerance"},
                                             lengths=tuple(_fgen().lengths), theta0=_fgen().theta0,
                                             psi0=_fgen().psi0, branch=_fgen().branch, x=_FX, y=_FY, samples=61,
                                             tol=1e-9),
@@ -889,12 +892,13 @@ CASES.update({
                                                              {"x": "real", "y": "real?"}, x=_FX, y=_FY),
     "planar.synthesis.FunctionGenerator.errors": E(lambda: _fgen().errors, {"samples": "count"}, samples=61),
     "planar.synthesis.FunctionMap": E(lambda: sy.FunctionMap,
-                                      {"x_range": ("real", first), "theta_range": "scalar", "psi_range": "scalar"},
+                                      {"f": "function", "x_range": ("real", first), "theta_range": "scalar",
+                                       "psi_range": "scalar"},
                                       f=np.log10, x_range=(1.0, 10.0), theta_range=1.7, psi_range=1.0),
     "planar.synthesis.FunctionMap.input_rotation": E(lambda: _fmap().input_rotation, {"x": "real"}, x=[2.0, 5.0]),
     "planar.synthesis.FunctionMap.input_value": E(lambda: _fmap().input_value, {"X": "real"}, X=[0.2, 0.5]),
     "planar.synthesis.FunctionMap.output_rotation": E(lambda: _fmap().output_rotation, {"y": "real"}, y=[0.2, 0.5]),
-    "planar.synthesis.FunctionMap.output_value": E(lambda: _fmap().output_value, {"Y": "real"}, Y=[0.2, 0.5]),
+    "planar.synthesis.FunctionMap.output_value": E(lambda: _fmap().output_value, {"Y": "real_nan"}, Y=[0.2, np.nan]),
     "planar.synthesis.FunctionMap.rotations": E(lambda: _fmap().rotations, {"x": "real"}, x=[2.0, 5.0]),
     "planar.synthesis.chebyshev_spacing": E(lambda: sy.chebyshev_spacing, {"x0": "scalar", "x1": "scalar", "n": "count"},
                                             x0=1.0, x1=10.0, n=3),
@@ -902,7 +906,7 @@ CASES.update({
                                                     a=10, b=40, c=30, d=35),
     "planar.synthesis.least_squares": E(lambda: sy.least_squares,
                                         {"x": "real", "y": "real", "theta0": "scalar", "psi0": "scalar", "d": "scalar",
-                                         "kind": "option", "fit_start": "bool", "samples": "count", "tol": "scalar"},
+                                         "kind": "option", "fit_start": "bool", "samples": "count", "tol": "tolerance"},
                                         x=np.linspace(0.0, 1.0, 7), y=0.6 * np.linspace(0.0, 1.0, 7) ** 1.2,
                                         theta0=np.radians(60.0), psi0=np.radians(30.0), d=100.0, kind="structural",
                                         fit_start=False, samples=61, tol=1e-9),
@@ -911,7 +915,7 @@ CASES.update({
                                                     k1=3.5, k2=35 / 30, k3=625 / 600, d=35.0),
     "planar.synthesis.precision_pairs": E(lambda: sy.precision_pairs,
                                           {"x": "real", "y": "real", "theta0": "scalar?", "psi0": "scalar?",
-                                           "d": "scalar", "samples": "count", "tol": "scalar"},
+                                           "d": "scalar", "samples": "count", "tol": "tolerance"},
                                           x=_FX, y=_FY, d=100.0, samples=61, tol=1e-9, **_FG),
     "planar.synthesis.QuickReturnCrankRocker.check": E(lambda: _qr_rocker().check,
                                                        {"samples": "count", "xtol": "scalar"}, samples=256, xtol=1e-13),
@@ -955,7 +959,8 @@ CASES.update({
     "planar.synthesis.simulate_quick_return": E(lambda: sy.simulate_quick_return,
                                                 {"samples": "count", "xtol": "scalar"},
                                                 linkage=pl.FourBar(10, 40, 30, 35), samples=256, xtol=1e-13),
-    "planar.synthesis.DesignModel": E(lambda: sy.DesignModel, {"bounds": ("real", lambda v: [v, (0, 1)])},
+    "planar.synthesis.DesignModel": E(lambda: sy.DesignModel, {"objective": "function", "inequality": "function?",
+                                                               "bounds": ("real", lambda v: [v, (0, 1)])},
                                       objective=lambda x: (x ** 2).sum(-1), bounds=[(0, 1), (0, 1)]),
     "planar.synthesis.DesignModel.f": E(lambda: _model().f, {"x": "real"}, x=[0.5, 0.5]),
     "planar.synthesis.DesignModel.g": E(lambda: _model().g, {"x": "real"}, x=[0.5, 0.5]),
@@ -1122,11 +1127,16 @@ _SLOTTED = sorted((k, s) for k, e in CASES.items() for s in e.slots)
 _finite = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e6, max_value=1e6)
 
 
+#: non-finite values that are valid for a slot kind (inf as a tolerance skips a check)
+_ALLOWED = {("tolerance", math.inf), ("real_nan", math.nan)}
+
+
 def _random_bad(kind):
     """Random bad values for a slot kind, with the texts the message must show."""
     strategies = [
         st.sampled_from(bad_kinds(kind)).map(lambda n: (n, *BAD[n])),
-        st.sampled_from([math.nan, math.inf, -math.inf]).map(lambda x: ("nonfinite", x, [repr(x)])),
+        st.sampled_from([x for x in (math.nan, math.inf, -math.inf) if (kind.rstrip("?"), x) not in _ALLOWED])
+        .map(lambda x: ("nonfinite", x, [repr(x)])),
     ]
     if kind not in ("option", "point_or_name", "length_or_name"):     # there a string is a name
         strategies.append(st.text(alphabet="0123456789.-e", min_size=1, max_size=8).map(
@@ -1221,3 +1231,35 @@ def test_planar_point_accepts_real_and_complex():
 def test_strict_must_be_a_bool(value, message):
     with pytest.raises(mech.InputTypeError, match=f"Expected `strict` to be True or False, got {message}"):
         pl.FourBar(10, 40, 30, 35).solve(0.5, strict=value)
+
+
+# ----------------------------------------------------------------------------- user functions (synthesis)
+@pytest.mark.parametrize("f", ["log10", None, 3.0, _Opaque()])
+def test_function_map_rejects_non_callables(f):
+    with pytest.raises(ValueError, match="Expected `f` to be callable"):
+        sy.FunctionMap(f, (1.0, 10.0), 1.7, 1.0)
+
+
+def test_function_map_names_complex_and_nan_values_of_f():
+    """A user function's complex or NaN values are errors naming it, not silently used."""
+    with pytest.raises(mech.InputTypeError, match=r"Expected `f\(1\.0\)` to be a real number"):
+        sy.FunctionMap(lambda x: np.log10(x) + 1j, (1.0, 10.0), 1.7, 1.0)
+    hole = sy.FunctionMap(lambda x: np.where(np.abs(x - 6.0) < 0.1, np.nan, np.log10(x)), (1.0, 10.0), 1.7, 1.0)
+    with pytest.raises(ValueError, match=r"Expected finite `f\(x\)`, got nan"):
+        hole.rotations([2.0, 6.0])
+    with pytest.raises(ValueError, match=r"Expected finite `f\(x\)`, got nan"):
+        hole(np.array([0.5, 5.0 / 9.0 * 1.7]))
+    with pytest.raises(ValueError, match=r"Expected finite `f\(10\.0\)`, got nan"):
+        sy.FunctionMap(lambda x: np.where(x > 5.0, np.nan, np.log10(x)), (1.0, 10.0), 1.7, 1.0)
+
+
+@pytest.mark.parametrize("name", ["objective", "inequality", "equality"])
+def test_design_model_rejects_non_callables_and_complex_values(name):
+    kwargs = {"objective": lambda x: (x ** 2).sum(-1), name: "x ** 2"}
+    with pytest.raises(ValueError, match=f"Expected `{name}` to be callable, got 'x \\*\\* 2'"):
+        sy.DesignModel(bounds=[(0, 1)], **kwargs)
+    complex_valued = {"objective": lambda x: (x ** 2).sum(-1), name: lambda x: x + 1j}
+    model = sy.DesignModel(bounds=[(0, 1)], **complex_valued)
+    method = {"objective": model.f, "inequality": model.g, "equality": model.h}[name]
+    with pytest.raises(ValueError, match=f"Expected `{name}` to return real numbers"):
+        method([0.5])

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import real_number
+from mech._validate import finite_array, planar_points, real_number
 from mech.planar._fourbar import FourBar
 from mech.planar._grashof import grashof
 from mech.planar.synthesis._displacement import pose_set
@@ -68,11 +68,11 @@ class GuidanceFourBar:
 
     def to_ground(self, w):
         """Map standard-frame points (complex) to the task's ground frame."""
-        return self.origin + np.exp(1j * self.angle) * np.asarray(w)
+        return self.origin + np.exp(1j * self.angle) * planar_points("w", w)
 
     def coupler_poses(self, theta_input):
         """The coupler's pose ``(theta, d)`` in the task frame at input angles `theta_input`."""
-        pose = self.linkage.solve(theta_input)
+        pose = self.linkage.solve(finite_array("theta_input", theta_input))
         zB, zC = self.input_dyad.circle_point, self.output_dyad.circle_point
         theta = np.angle(pose.C - pose.B) + self.angle - np.angle(zC - zB)
         return np.angle(np.exp(1j * theta)), self.to_ground(pose.P)
