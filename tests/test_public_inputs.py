@@ -1007,15 +1007,15 @@ CASES.update({
                                                    clearance=0.6),
     # ------------------------------------------------------------------------- exercises 2-29 to 2-32
     "exercises.chapter2_synthesis.design_2_29": E(lambda: chapter2_synthesis.design_2_29,
-                                                  {"p": _p_slot(_D29, "AD"), "interior": "bool"},
+                                                  {"interior": "bool"},
                                                   p=_D29, interior=False),
     "exercises.chapter2_quick_return.designs_2_30": E(lambda: chapter2_quick_return.designs_2_30,
-                                                      {"p": _p_slot(_D30, "K"), "given": "option"},
+                                                      {"given": "option"},
                                                       p=_D30, given="a"),
     "exercises.chapter2_quick_return.designs_2_31": E(lambda: chapter2_quick_return.designs_2_31,
-                                                      {"p": _p_slot(_D31, "l_AD")}, p=_D31),
+                                                      None, p=_D31),
     "exercises.chapter2_quick_return.shaper_2_32": E(lambda: chapter2_quick_return.shaper_2_32,
-                                                     {"p": _p_slot(_D32, "H")}, p=_D32),
+                                                     None, p=_D32),
     "exercises.chapter2_quick_return.Shaper.ram": E(lambda: chapter2_quick_return.shaper_2_32(_D32).ram,
                                                     {"theta": "real", "order": "order"}, theta=[0.0, 1.0], order=2),
     "exercises.chapter2_quick_return.Shaper.pressure_angle": E(
@@ -1024,6 +1024,23 @@ CASES.update({
                                                         {"samples": "count", "xtol": "scalar"}, samples=256,
                                                         xtol=1e-13),
 })
+
+# every entry of the parameter mappings `p` that a function reads, and the exercises' own solve
+_P_FUNCTIONS = [  # (key, function, defaults, the entries it reads, other arguments)
+    ("design_2_29", lambda: chapter2_synthesis.design_2_29, _D29, list(_D29), {}),
+    ("designs_2_30", lambda: chapter2_quick_return.designs_2_30, _D30, ["l_CD", "psi", "K", "l_AB"], {"given": "a"}),
+    ("designs_2_30", lambda: chapter2_quick_return.designs_2_30, _D30, ["l_BC"], {"given": "b"}),
+    ("designs_2_31", lambda: chapter2_quick_return.designs_2_31, _D31, list(_D31), {}),
+    ("shaper_2_32", lambda: chapter2_quick_return.shaper_2_32, _D32, list(_D32), {}),
+]
+for _func, _get, _defaults, _read, _extra in _P_FUNCTIONS:
+    _module = "chapter2_synthesis" if _func == "design_2_29" else "chapter2_quick_return"
+    for _name in _read:
+        CASES[f"exercises.{_module}.{_func}#{_name}"] = E(_get, {"p": _p_slot(_defaults, _name)}, p=_defaults,
+                                                         **_extra)
+for _number, _defaults in (("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32)):
+    CASES[f"exercises.Exercise.solve#{_number}"] = E(lambda n=_number: ex.get(n).solve,
+                                                     {k: "scalar" for k in _defaults}, **_defaults)
 
 RECORDS.update({
     **{f"planar.synthesis.{n}": "result record built by the package" for n in (

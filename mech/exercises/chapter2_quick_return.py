@@ -77,7 +77,12 @@ def designs_2_30(p, given):
     K = real_number("K", p["K"])
     c = positive_length("l_CD", p["l_CD"])
     swing = positive_length("psi", p["psi"]) * _DEG
-    keyword = {"a": {"crank": p["l_AB"]}, "b": {"coupler": p["l_BC"]}}[option("given", given, ("a", "b"))]
+    # the given link is checked here, under its exercise name: a bad value must not read as
+    # "no crank-rocker on this side" in the loop below
+    if option("given", given, ("a", "b")) == "a":
+        keyword = {"crank": positive_length("l_AB", p["l_AB"])}
+    else:
+        keyword = {"coupler": positive_length("l_BC", p["l_BC"])}
     out = []
     for side in (1, -1):
         try:
