@@ -152,6 +152,13 @@ class FunctionMap:
         Rotations of the input and output links over the range, radians, nonzero; negative
         turns that link clockwise.
 
+    Raises
+    ------
+    ValueError
+        If `f` is not callable, or wherever it is evaluated (the ends of the range when
+        built, the arguments asked later) it raises or returns complex, NaN or infinite
+        values: the message names ``f(x)`` (at an end of the range, e.g. ``f(1.0)``) and shows the value.
+
     Examples
     --------
     >>> import numpy as np
