@@ -87,6 +87,9 @@ def _first_bool(value):
     """The first boolean inside nested lists and tuples (NumPy would turn it into 1.0)."""
     if isinstance(value, (bool, np.bool_)):
         return value
+    # a boolean array inside a list would otherwise become 1.0 and 0.0 with its neighbours
+    if isinstance(value, np.ndarray) and value.dtype.kind == "b" and value.size:
+        return value.ravel()[0]
     if isinstance(value, (list, tuple)):
         for item in value:
             found = _first_bool(item)

@@ -26,10 +26,13 @@ import mech.exercises as ex
 import mech.planar as pl
 import mech.spatial as sp
 import mech.spherical as sph
-from mech.exercises import chapter2, chapter2_analysis
+import mech.planar.synthesis as sy
+from mech.exercises import chapter2, chapter2_analysis, chapter2_quick_return, chapter2_synthesis
 
 MODULES = {"mech": mech, "planar": pl, "spatial": sp, "spherical": sph, "exercises": ex,
-           "exercises.chapter2": chapter2, "exercises.chapter2_analysis": chapter2_analysis}
+           "exercises.chapter2": chapter2, "exercises.chapter2_analysis": chapter2_analysis,
+           "planar.synthesis": sy, "exercises.chapter2_synthesis": chapter2_synthesis,
+           "exercises.chapter2_quick_return": chapter2_quick_return}
 
 
 # ----------------------------------------------------------------------------- bad values
@@ -98,6 +101,10 @@ KINDS = {
     "branch": ["true", "false", "zero_branch", "two_branch", "one_string", "none", "object",
                "float_for_int", "complex"],
     "option": ["bogus_option", "int_for_bool", "none", "object"],
+    "tolerance": [b for b in _NUMERIC if b != "inf"] + ["empty_list"],  # one number; inf skips a check
+    "real_nan": [b for b in _NUMERIC if b != "nan"],    # NaN passes through (did not assemble)
+    "function": ["none", "object", "numeric_string", "complex", "dict", "true"],  # a callable
+    "instance": ["none", "object", "numeric_string", "complex", "dict", "true"],  # a package object
     "seed": ["float_for_int", "true", "numeric_string", "object", "complex", "nan", "dict", "negative_int"],
 }
 BAD["two_branch_over"] = (3, ["3"])
@@ -785,6 +792,268 @@ RECORDS = {
 }
 
 
+# ----------------------------------------------------------------------------- planar synthesis
+_GT = np.array([0.0, 0.3, 0.7])                      # three poses of a moving body
+_GD = np.array([0, 1 + 0.2j, 1.8 + 0.9j])
+_P15 = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j])
+_T15 = np.radians([0.0, 8.88, 22.1, 63.68, -3.0])   # example 2-15
+_FX = np.radians([0.0, 30.0, 60.0])                  # three precision pairs (docstring)
+_FY = np.radians([0.0, 20.0, 35.0])
+_FG = dict(theta0=np.radians(60.0), psi0=np.radians(30.0))
+
+
+def _fgen():
+    g, = sy.precision_pairs(_FX, _FY, d=100.0, **_FG)
+    return g
+
+
+def _fmap():
+    return sy.FunctionMap(np.log10, (1.0, 10.0), np.radians(100.0), np.radians(60.0))
+
+
+def _burmester_curve():
+    return sy.circle_point_curve(_T15[:4], _P15[:4], samples=24)
+
+
+def _guidance():
+    return sy.guidance_fourbars(_T15, _P15).passing[0]
+
+
+def _model():
+    return sy.DesignModel(lambda x: ((x - 0.3) ** 2).sum(-1), [(0, 1), (0, 1)],
+                          inequality=lambda x: x[..., :1] - 0.9, equality=lambda x: x[..., 1:] - 0.3)
+
+
+def _grid_model():
+    return sy.DesignModel(lambda x: ((x - 0.3) ** 2).sum(-1), [(0, 1), (0, 1)], inequality=lambda x: x[..., :1] - 0.9)
+
+
+def _qr_rocker():
+    return sy.quick_return_crank_rocker(1.25, 100.0, np.radians(40.0), alpha=0.6)
+
+
+def _qr_slider():
+    return sy.quick_return_slider_crank(1.25, 100.0, alpha=np.radians(30.0))
+
+
+_POINTS_2_24 = np.array([1 + 1j, 2 + 1.5j, 3 + 1j])
+_X_2_24 = np.array([1.7, 5.8, 5.4, 7.0, 8.0, 2.0, 2.2, np.radians(80), np.radians(-70), np.radians(90)])
+
+
+def _p_slot(defaults, key):
+    """A bad value put into one entry of an exercise's parameter mapping ``p``."""
+    return ("scalar", lambda v: {**defaults, key: v}, key)
+
+
+_D29 = chapter2_synthesis.EXERCISE_2_29.defaults
+_D30 = chapter2_quick_return.EXERCISE_2_30.defaults
+_D31 = chapter2_quick_return.EXERCISE_2_31.defaults
+_D32 = chapter2_quick_return.EXERCISE_2_32.defaults
+
+CASES.update({
+    "planar.synthesis.displacement_matrix": E(lambda: sy.displacement_matrix,
+                                              {"theta_1": "real", "d_1": "point", "theta_i": "real", "d_i": "point"},
+                                              theta_1=[0.0, 1.0], d_1=0, theta_i=0.5, d_i=1j),
+    "planar.synthesis.pole": E(lambda: sy.pole, {"theta_1": "real", "d_1": "point", "theta_i": "real", "d_i": "point"},
+                               theta_1=0.0, d_1=0.0, theta_i=np.pi / 2, d_i=1 + 1j),
+    "planar.synthesis.dyad_for_circle_point": E(lambda: sy.dyad_for_circle_point,
+                                                {"theta": "real", "d": "point", "circle_point": "point",
+                                                 "along": "scalar"},
+                                                theta=_GT, d=_GD, circle_point=0.5 + 0.5j, along=0.0),
+    "planar.synthesis.dyad_for_centre_point": E(lambda: sy.dyad_for_centre_point,
+                                                {"theta": "real", "d": "point", "centre_point": "point",
+                                                 "along": "scalar"},
+                                                theta=_GT, d=_GD, centre_point=-1 + 2j, along=0.0),
+    "planar.synthesis.circle_point_curve": E(lambda: sy.circle_point_curve,
+                                             {"theta": "real", "d": "point", "samples": "count", "phi": "real?"},
+                                             theta=_T15[:4], d=_P15[:4], samples=24, phi=None),
+    "planar.synthesis.circle_point_curve#phi": E(lambda: sy.circle_point_curve, {"phi": "real?"},
+                                                 theta=_T15[:4], d=_P15[:4], phi=[0.3, 1.0]),
+    "planar.synthesis.BurmesterCurve.dyad": E(lambda: _burmester_curve().dyad, {"i": "int", "k": "int"}, i=0, k=1),
+    "planar.synthesis.burmester": E(lambda: sy.burmester,
+                                    {"theta": "real", "d": "point", "imag_tol": "scalar", "rank_tol": "scalar"},
+                                    theta=_T15, d=_P15, imag_tol=1e-7, rank_tol=1e-12),
+    "planar.synthesis.guidance_fourbars": E(lambda: sy.guidance_fourbars,
+                                            {"theta": "real", "d": "point", "rtol": "scalar", "dyads": "instance?"},
+                                            theta=_T15, d=_P15, rtol=1e-9, dyads=None),
+    "planar.synthesis.GuidanceFourBar.to_ground": E(lambda: _guidance().to_ground, {"w": "point"}, w=[0.0, 1 + 1j]),
+    "planar.synthesis.GuidanceFourBar.coupler_poses": E(lambda: _guidance().coupler_poses, {"theta_input": "real"},
+                                                        theta_input=[0.0, 0.5]),
+    "planar.synthesis.FunctionGenerator": E(lambda: sy.FunctionGenerator,
+                                            {"lengths": "real", "theta0": "scalar", "psi0": "scalar",
+                                             "branch": "branch", "x": "real", "y": "real", "samples": "count",
+                                             "tol": "tolerance", "x_range": ("real?", first), "target": "function?"},
+                                            lengths=tuple(_fgen().lengths), theta0=_fgen().theta0,
+                                            psi0=_fgen().psi0, branch=_fgen().branch, x=_FX, y=_FY, samples=61,
+                                            tol=1e-9),
+    "planar.synthesis.FunctionGenerator.solve": E(lambda: _fgen().solve, {"x": "real", "order": "order"},
+                                                  x=[0.1, 0.5], order=2),
+    "planar.synthesis.FunctionGenerator.output": E(lambda: _fgen().output, {"x": "real"}, x=[0.1, 0.5]),
+    "planar.synthesis.FunctionGenerator.structural_error": E(lambda: _fgen().structural_error,
+                                                             {"x": "real", "y": "real?"}, x=_FX, y=_FY),
+    "planar.synthesis.FunctionGenerator.errors": E(lambda: _fgen().errors, {"samples": "count"}, samples=61),
+    "planar.synthesis.FunctionMap": E(lambda: sy.FunctionMap,
+                                      {"f": "function", "x_range": ("real", first), "theta_range": "scalar",
+                                       "psi_range": "scalar"},
+                                      f=np.log10, x_range=(1.0, 10.0), theta_range=1.7, psi_range=1.0),
+    "planar.synthesis.FunctionMap.input_rotation": E(lambda: _fmap().input_rotation, {"x": "real"}, x=[2.0, 5.0]),
+    "planar.synthesis.FunctionMap.input_value": E(lambda: _fmap().input_value, {"X": "real"}, X=[0.2, 0.5]),
+    "planar.synthesis.FunctionMap.output_rotation": E(lambda: _fmap().output_rotation, {"y": "real"}, y=[0.2, 0.5]),
+    "planar.synthesis.FunctionMap.output_value": E(lambda: _fmap().output_value, {"Y": "real_nan"}, Y=[0.2, np.nan]),
+    "planar.synthesis.FunctionMap.rotations": E(lambda: _fmap().rotations, {"x": "real"}, x=[2.0, 5.0]),
+    "planar.synthesis.chebyshev_spacing": E(lambda: sy.chebyshev_spacing, {"x0": "scalar", "x1": "scalar", "n": "count"},
+                                            x0=1.0, x1=10.0, n=3),
+    "planar.synthesis.freudenstein_coefficients": E(lambda: sy.freudenstein_coefficients, _ABCD,
+                                                    a=10, b=40, c=30, d=35),
+    "planar.synthesis.least_squares": E(lambda: sy.least_squares,
+                                        {"x": "real", "y": "real", "theta0": "scalar", "psi0": "scalar", "d": "scalar",
+                                         "kind": "option", "fit_start": "bool", "samples": "count", "tol": "tolerance",
+                                         "x_range": ("real?", first), "target": "function?", "start": "real?"},
+                                        x=np.linspace(0.0, 1.0, 7), y=0.6 * np.linspace(0.0, 1.0, 7) ** 1.2,
+                                        theta0=np.radians(60.0), psi0=np.radians(30.0), d=100.0, kind="structural",
+                                        fit_start=False, samples=61, tol=1e-9),
+    "planar.synthesis.lengths_from_coefficients": E(lambda: sy.lengths_from_coefficients,
+                                                    {"k1": "scalar", "k2": "scalar", "k3": "scalar", "d": "scalar"},
+                                                    k1=3.5, k2=35 / 30, k3=625 / 600, d=35.0),
+    "planar.synthesis.precision_pairs": E(lambda: sy.precision_pairs,
+                                          {"x": "real", "y": "real", "theta0": "scalar?", "psi0": "scalar?",
+                                           "d": "scalar", "samples": "count", "tol": "tolerance",
+                                           "x_range": ("real?", first), "target": "function?"},
+                                          x=_FX, y=_FY, d=100.0, samples=61, tol=1e-9, **_FG),
+    "planar.synthesis.QuickReturnCrankRocker.check": E(lambda: _qr_rocker().check,
+                                                       {"samples": "count", "xtol": "scalar"}, samples=256, xtol=1e-13),
+    "planar.synthesis.QuickReturnSliderCrank.check": E(lambda: _qr_slider().check,
+                                                       {"samples": "count", "xtol": "scalar"}, samples=256, xtol=1e-13),
+    "planar.synthesis.QuickReturnGuideBar.check": E(lambda: sy.quick_return_guide_bar(1.5, 100.0).check,
+                                                    {"samples": "count", "xtol": "scalar"}, samples=256, xtol=1e-13),
+    "planar.synthesis.QuickReturnFamily.designs": E(
+        lambda: sy.slider_crank_family(1.25, 100.0, samples=101).designs, {"n": "count"}, n=3),
+    "planar.synthesis.crank_rocker_family": E(lambda: sy.crank_rocker_family,
+                                              {"time_ratio": "scalar", "rocker": "scalar", "swing": "scalar",
+                                               "min_transmission": "scalar", "side": "branch", "samples": "count",
+                                               "xtol": "scalar"},
+                                              time_ratio=1.25, rocker=100.0, swing=np.radians(40.0),
+                                              min_transmission=0.0, side=1, samples=101, xtol=1e-12),
+    "planar.synthesis.slider_crank_family": E(lambda: sy.slider_crank_family,
+                                              {"time_ratio": "scalar", "stroke": "scalar",
+                                               "min_transmission": "scalar", "samples": "count", "xtol": "scalar"},
+                                              time_ratio=1.25, stroke=100.0, min_transmission=0.0, samples=101,
+                                              xtol=1e-12),
+    "planar.synthesis.quick_return_crank_rocker": E(lambda: sy.quick_return_crank_rocker,
+                                                    {"time_ratio": "scalar", "rocker": "scalar", "swing": "scalar",
+                                                     "alpha": "scalar?", "side": "branch"},
+                                                    time_ratio=1.25, rocker=100.0, swing=np.radians(40.0), alpha=0.6,
+                                                    side=1),
+    "planar.synthesis.quick_return_crank_rocker#crank": E(lambda: sy.quick_return_crank_rocker, {"crank": "scalar?"},
+                                                          time_ratio=1.25, rocker=100.0, swing=np.radians(40.0),
+                                                          crank=30.0),
+    "planar.synthesis.quick_return_crank_rocker#coupler": E(lambda: sy.quick_return_crank_rocker,
+                                                            {"coupler": "scalar?"}, time_ratio=1.25, rocker=100.0,
+                                                            swing=np.radians(40.0), coupler=100.0),
+    "planar.synthesis.quick_return_guide_bar": E(lambda: sy.quick_return_guide_bar,
+                                                 {"time_ratio": "scalar", "frame": "scalar"}, time_ratio=1.5,
+                                                 frame=100.0),
+    "planar.synthesis.quick_return_slider_crank": E(lambda: sy.quick_return_slider_crank,
+                                                    {"time_ratio": "scalar", "stroke": "scalar", "alpha": "scalar?"},
+                                                    time_ratio=1.25, stroke=100.0, alpha=np.radians(30.0)),
+    "planar.synthesis.quick_return_slider_crank#offset": E(lambda: sy.quick_return_slider_crank,
+                                                           {"offset": "scalar?"}, time_ratio=1.25, stroke=100.0,
+                                                           offset=20.0),
+    "planar.synthesis.simulate_quick_return": E(lambda: sy.simulate_quick_return,
+                                                {"linkage": "instance", "samples": "count", "xtol": "scalar"},
+                                                linkage=pl.FourBar(10, 40, 30, 35), samples=256, xtol=1e-13),
+    "planar.synthesis.DesignModel": E(lambda: sy.DesignModel, {"objective": "function", "inequality": "function?",
+                                                               "bounds": ("real", lambda v: [v, (0, 1)])},
+                                      objective=lambda x: (x ** 2).sum(-1), bounds=[(0, 1), (0, 1)]),
+    "planar.synthesis.DesignModel.f": E(lambda: _model().f, {"x": "real"}, x=[0.5, 0.5]),
+    "planar.synthesis.DesignModel.g": E(lambda: _model().g, {"x": "real"}, x=[0.5, 0.5]),
+    "planar.synthesis.DesignModel.h": E(lambda: _model().h, {"x": "real"}, x=[0.5, 0.5]),
+    "planar.synthesis.DesignModel.feasible": E(lambda: _model().feasible, {"x": "real", "tol": "scalar"},
+                                               x=[0.5, 0.5], tol=0.0),
+    "planar.synthesis.OptimisationResult.as_dict": E(lambda: sy.grid_search(_grid_model(), points=5, levels=2).as_dict),
+    "planar.synthesis.grid_search": E(lambda: sy.grid_search,
+                                      {"model": "instance", "points": "count", "levels": "count", "shrink": "scalar",
+                                       "max_points": "count", "progress": "bool", "every": "count"},
+                                      model=_grid_model(), points=5, levels=2, shrink=0.5, max_points=1000,
+                                      progress=False, every=1),
+    "planar.synthesis.penalty_method": E(lambda: sy.penalty_method,
+                                         {"model": "instance", "x0": "real", "r0": "scalar?", "factor": "scalar", "stages": "count",
+                                          "iterations": "count", "step": "scalar", "ftol": "scalar",
+                                          "xtol": "scalar", "progress": "bool", "every": "count"},
+                                         model=_model(), x0=[0.5, 0.5], r0=None, factor=0.3, stages=2, iterations=20,
+                                         step=0.05, ftol=1e-13, xtol=1e-11, progress=False, every=200),
+    "planar.synthesis.scipy_minimize": E(lambda: sy.scipy_minimize, {"model": "instance", "x0": "real", "method": "option"},
+                                         model=_model(), x0=[0.5, 0.5], method="SLSQP"),
+    "planar.synthesis.CouplerPathDesign": E(lambda: sy.CouplerPathDesign, {"x": "real", "points": "point"},
+                                            x=_X_2_24, points=_POINTS_2_24),
+    "planar.synthesis.CouplerPathDesign.place": E(lambda: sy.CouplerPathDesign(_X_2_24, _POINTS_2_24).place,
+                                                  {"z": "point"}, z=[0.0, 1 + 1j]),
+    "planar.synthesis.CouplerPathDesign.prove": E(lambda: sy.CouplerPathDesign(_X_2_24, _POINTS_2_24).prove,
+                                                  {"samples": "count"}, samples=360),
+    "planar.synthesis.SteeringTrapezoid": E(lambda: sy.SteeringTrapezoid,
+                                            {"l1": "scalar", "phi0": "scalar", "a": "scalar", "h": "scalar"},
+                                            l1=148.0, phi0=1.2263, a=1480.0, h=2960.0),
+    "planar.synthesis.SteeringTrapezoid.beta": E(lambda: sy.SteeringTrapezoid(148.0, 1.2263).beta,
+                                                 {"theta": "real"}, theta=[0.0, 0.3]),
+    "planar.synthesis.SteeringTrapezoid.beta_ideal": E(lambda: sy.SteeringTrapezoid(148.0, 1.2263).beta_ideal,
+                                                       {"theta": "real"}, theta=[0.0, 0.3]),
+    "planar.synthesis.SteeringTrapezoid.prove": E(lambda: sy.SteeringTrapezoid(148.0, 1.2263).prove,
+                                                  {"theta_max": "scalar", "steps": "count"}, theta_max=0.5, steps=5),
+    "planar.synthesis.path_synthesis_model": E(lambda: sy.path_synthesis_model,
+                                               {"points": "point", "gamma_min": "scalar"},
+                                               points=_POINTS_2_24, gamma_min=np.radians(30.0)),
+    "planar.synthesis.steering_trapezoid_model": E(lambda: sy.steering_trapezoid_model,
+                                                   {"a": "scalar", "h": "scalar", "theta_max": "scalar",
+                                                    "steps": "count", "arm_range": ("real", first),
+                                                    "clearance": "scalar"},
+                                                   a=1480.0, h=2960.0, theta_max=0.5, steps=5, arm_range=(0.1, 0.4),
+                                                   clearance=0.6),
+    # ------------------------------------------------------------------------- exercises 2-29 to 2-32
+    "exercises.chapter2_synthesis.design_2_29": E(lambda: chapter2_synthesis.design_2_29,
+                                                  {"interior": "bool"},
+                                                  p=_D29, interior=False),
+    "exercises.chapter2_quick_return.designs_2_30": E(lambda: chapter2_quick_return.designs_2_30,
+                                                      {"given": "option"},
+                                                      p=_D30, given="a"),
+    "exercises.chapter2_quick_return.designs_2_31": E(lambda: chapter2_quick_return.designs_2_31,
+                                                      None, p=_D31),
+    "exercises.chapter2_quick_return.shaper_2_32": E(lambda: chapter2_quick_return.shaper_2_32,
+                                                     None, p=_D32),
+    "exercises.chapter2_quick_return.Shaper.ram": E(lambda: chapter2_quick_return.shaper_2_32(_D32).ram,
+                                                    {"theta": "real", "order": "order"}, theta=[0.0, 1.0], order=2),
+    "exercises.chapter2_quick_return.Shaper.pressure_angle": E(
+        lambda: chapter2_quick_return.shaper_2_32(_D32).pressure_angle, {"theta": "real"}, theta=[0.0, 1.0]),
+    "exercises.chapter2_quick_return.Shaper.measure": E(lambda: chapter2_quick_return.shaper_2_32(_D32).measure,
+                                                        {"samples": "count", "xtol": "scalar"}, samples=256,
+                                                        xtol=1e-13),
+})
+
+# every entry of the parameter mappings `p` that a function reads, and the exercises' own solve
+_P_FUNCTIONS = [  # (key, function, defaults, the entries it reads, other arguments)
+    ("design_2_29", lambda: chapter2_synthesis.design_2_29, _D29, list(_D29), {}),
+    ("designs_2_30", lambda: chapter2_quick_return.designs_2_30, _D30, ["l_CD", "psi", "K", "l_AB"], {"given": "a"}),
+    ("designs_2_30", lambda: chapter2_quick_return.designs_2_30, _D30, ["l_BC"], {"given": "b"}),
+    ("designs_2_31", lambda: chapter2_quick_return.designs_2_31, _D31, list(_D31), {}),
+    ("shaper_2_32", lambda: chapter2_quick_return.shaper_2_32, _D32, list(_D32), {}),
+]
+for _func, _get, _defaults, _read, _extra in _P_FUNCTIONS:
+    _module = "chapter2_synthesis" if _func == "design_2_29" else "chapter2_quick_return"
+    for _name in _read:
+        CASES[f"exercises.{_module}.{_func}#{_name}"] = E(_get, {"p": _p_slot(_defaults, _name)}, p=_defaults,
+                                                         **_extra)
+for _number, _defaults in (("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32)):
+    CASES[f"exercises.Exercise.solve#{_number}"] = E(lambda n=_number: ex.get(n).solve,
+                                                     {k: "scalar" for k in _defaults}, **_defaults)
+
+RECORDS.update({
+    **{f"planar.synthesis.{n}": "result record built by the package" for n in (
+        "Dyad", "BurmesterCurve", "BurmesterPoints", "GuidanceFourBar", "GuidanceSynthesis", "QuickReturnCheck",
+        "QuickReturnCrankRocker", "QuickReturnFamily", "QuickReturnGuideBar", "QuickReturnSliderCrank",
+        "OptimisationResult")},
+    "exercises.chapter2_quick_return.Shaper": "result record built by the package (shaper_2_32)",
+})
+
+
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():
     """Qualified names of every public function, class and public method of a public class."""
@@ -878,11 +1147,16 @@ _SLOTTED = sorted((k, s) for k, e in CASES.items() for s in e.slots)
 _finite = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e6, max_value=1e6)
 
 
+#: non-finite values that are valid for a slot kind (inf as a tolerance skips a check)
+_ALLOWED = {("tolerance", math.inf), ("real_nan", math.nan)}
+
+
 def _random_bad(kind):
     """Random bad values for a slot kind, with the texts the message must show."""
     strategies = [
         st.sampled_from(bad_kinds(kind)).map(lambda n: (n, *BAD[n])),
-        st.sampled_from([math.nan, math.inf, -math.inf]).map(lambda x: ("nonfinite", x, [repr(x)])),
+        st.sampled_from([x for x in (math.nan, math.inf, -math.inf) if (kind.rstrip("?"), x) not in _ALLOWED])
+        .map(lambda x: ("nonfinite", x, [repr(x)])),
     ]
     if kind not in ("option", "point_or_name", "length_or_name"):     # there a string is a name
         strategies.append(st.text(alphabet="0123456789.-e", min_size=1, max_size=8).map(
@@ -977,3 +1251,35 @@ def test_planar_point_accepts_real_and_complex():
 def test_strict_must_be_a_bool(value, message):
     with pytest.raises(mech.InputTypeError, match=f"Expected `strict` to be True or False, got {message}"):
         pl.FourBar(10, 40, 30, 35).solve(0.5, strict=value)
+
+
+# ----------------------------------------------------------------------------- user functions (synthesis)
+@pytest.mark.parametrize("f", ["log10", None, 3.0, _Opaque()])
+def test_function_map_rejects_non_callables(f):
+    with pytest.raises(ValueError, match="Expected `f` to be callable"):
+        sy.FunctionMap(f, (1.0, 10.0), 1.7, 1.0)
+
+
+def test_function_map_names_complex_and_nan_values_of_f():
+    """A user function's complex or NaN values are errors naming it, not silently used."""
+    with pytest.raises(mech.InputTypeError, match=r"Expected `f\(1\.0\)` to be a real number"):
+        sy.FunctionMap(lambda x: np.log10(x) + 1j, (1.0, 10.0), 1.7, 1.0)
+    hole = sy.FunctionMap(lambda x: np.where(np.abs(x - 6.0) < 0.1, np.nan, np.log10(x)), (1.0, 10.0), 1.7, 1.0)
+    with pytest.raises(ValueError, match=r"Expected finite `f\(x\)`, got nan"):
+        hole.rotations([2.0, 6.0])
+    with pytest.raises(ValueError, match=r"Expected finite `f\(x\)`, got nan"):
+        hole(np.array([0.5, 5.0 / 9.0 * 1.7]))
+    with pytest.raises(ValueError, match=r"Expected finite `f\(10\.0\)`, got nan"):
+        sy.FunctionMap(lambda x: np.where(x > 5.0, np.nan, np.log10(x)), (1.0, 10.0), 1.7, 1.0)
+
+
+@pytest.mark.parametrize("name", ["objective", "inequality", "equality"])
+def test_design_model_rejects_non_callables_and_complex_values(name):
+    kwargs = {"objective": lambda x: (x ** 2).sum(-1), name: "x ** 2"}
+    with pytest.raises(ValueError, match=f"Expected `{name}` to be callable, got 'x \\*\\* 2'"):
+        sy.DesignModel(bounds=[(0, 1)], **kwargs)
+    complex_valued = {"objective": lambda x: (x ** 2).sum(-1), name: lambda x: x + 1j}
+    model = sy.DesignModel(bounds=[(0, 1)], **complex_valued)
+    method = {"objective": model.f, "inequality": model.g, "equality": model.h}[name]
+    with pytest.raises(ValueError, match=f"Expected `{name}` to return real numbers"):
+        method([0.5])

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import positive_length, real_number
+from mech._validate import integer, option, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import FourBar, GuideBar, extreme_angle, grashof
 from mech.planar.synthesis import crank_rocker_family, quick_return_crank_rocker, simulate_quick_return
@@ -77,7 +77,12 @@ def designs_2_30(p, given):
     K = real_number("K", p["K"])
     c = positive_length("l_CD", p["l_CD"])
     swing = positive_length("psi", p["psi"]) * _DEG
-    keyword = {"a": {"crank": p["l_AB"]}, "b": {"coupler": p["l_BC"]}}[given]
+    # the given link is checked here, under its exercise name: a bad value must not read as
+    # "no crank-rocker on this side" in the loop below
+    if option("given", given, ("a", "b")) == "a":
+        keyword = {"crank": positive_length("l_AB", p["l_AB"])}
+    else:
+        keyword = {"coupler": positive_length("l_BC", p["l_BC"])}
     out = []
     for side in (1, -1):
         try:
@@ -319,6 +324,8 @@ class Shaper:
 
     def measure(self, samples=4096, xtol=1e-13):
         """Simulate one crank turn: (K, stroke, largest pressure angle), all measured."""
+        samples = integer("samples", samples, minimum=16, maximum=10**7)
+        xtol = positive_length("xtol", xtol)
         t = np.linspace(0.0, 2 * math.pi, samples, endpoint=False)
         v = self.ram(t, order=1)[1]
         idx = np.flatnonzero(np.sign(v) != np.sign(np.roll(v, -1)))

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from mech._validate import positive_length, real_number
+from mech._validate import bool_flag, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import grashof
 from mech.planar.synthesis import precision_pairs
@@ -56,7 +56,7 @@ def design_2_29(p, *, interior=False):
     phi = np.array([real_number(k, p[k]) for k in ("phi1", "phi2", "phi3")]) * _DEG
     psi = np.array([real_number(k, p[k]) for k in ("psi1", "psi2", "psi3")]) * _DEG
     d = positive_length("AD", p["AD"])
-    if interior:
+    if bool_flag("interior", interior):
         psi = np.pi - psi
     x, y = phi - phi[0], psi - psi[0]
     design, = precision_pairs(x, y, theta0=phi[0], psi0=psi[0], d=d, x_range=(min(0.0, x.min()), max(0.0, x.max())))

@@ -1,12 +1,9 @@
 """Planar displacements between poses: the matrix (2-37), the pole, and pose-set checks."""
 
-import numbers
-
 import numpy as np
 
-from mech._errors import InputTypeError
 from mech._generated import displacement as _gen
-from mech._validate import _show, real_array
+from mech._validate import _show, planar_points, real_array
 
 __all__ = ["displacement_matrix", "pole"]
 
@@ -15,29 +12,9 @@ def complex_array(name, value):
     """Return ``value`` as a finite complex array (planar points), naming it in any error.
 
     Real and complex numbers are accepted; booleans, strings, ``None`` and other objects
-    raise `InputTypeError`, NaN and infinities ``ValueError``.
+    raise `mech.InputTypeError`, NaN and infinities ``ValueError`` (`mech._validate.planar_points`).
     """
-    if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
-        raise InputTypeError(f"Expected `{name}` to be a complex number (a planar point), got {value!r}")
-    try:
-        arr = np.asarray(value)
-    except Exception as exc:
-        raise InputTypeError(f"Expected `{name}` to be complex numbers, got {_show(value)} ({exc})") from None
-    if arr.dtype.kind == "O":
-        bad = next((v for v in arr.ravel()
-                    if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Complex)), None)
-        if bad is not None or arr.ndim == 0 and arr.size == 0:
-            raise InputTypeError(f"Expected `{name}` to be complex numbers, got {bad!r} in {_show(value)}")
-    elif arr.dtype.kind not in "iufc":
-        raise InputTypeError(f"Expected `{name}` to be complex numbers, got {_show(value)}")
-    try:
-        arr = np.asarray(arr, dtype=complex)
-    except (TypeError, ValueError, OverflowError):
-        raise InputTypeError(f"Expected `{name}` to be complex numbers, got {_show(value)}") from None
-    finite = np.isfinite(arr)
-    if not np.all(finite):
-        raise ValueError(f"Expected finite `{name}`, got {complex(arr[~finite].ravel()[0])!r}")
-    return arr
+    return planar_points(name, value)
 
 
 def pose_set(theta, d, counts):

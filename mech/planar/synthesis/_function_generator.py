@@ -24,13 +24,14 @@ def _interval(name, value):
 
 
 def _call(f, name, x):
-    """f(x) as a float array; a user function's NaN is reported by the check, not warned about."""
+    """f(x) as a finite float array; a user function's complex, NaN or infinite values are
+    reported under `name`, not warned about or carried into the design."""
     try:
         with np.errstate(all="ignore"):
             value = f(x)
     except Exception as err:                       # a user function: report, do not mask as ours
         raise ValueError(f"Expected `f` to evaluate at {x!r}, got {type(err).__name__}: {err}") from err
-    return real_array(name, value, finite=False)
+    return finite_array(name, value)
 
 
 def _wrap(angle):
@@ -151,6 +152,13 @@ class FunctionMap:
         Rotations of the input and output links over the range, radians, nonzero; negative
         turns that link clockwise.
 
+    Raises
+    ------
+    ValueError
+        If `f` is not callable, or wherever it is evaluated (the ends of the range when
+        built, the arguments asked later) it raises or returns complex, NaN or infinite
+        values: the message names ``f(x)`` (at an end of the range, e.g. ``f(1.0)``) and shows the value.
+
     Examples
     --------
     >>> import numpy as np
@@ -200,7 +208,10 @@ class FunctionMap:
 
     def output_value(self, Y):
         """y at output rotations `Y`; NaN passes through (a linkage that did not assemble)."""
-        return self.y_start + real_array("Y", Y, finite=False) / self.output_scale
+        Y = real_array("Y", Y, finite=False)
+        if np.any(np.isinf(Y)):
+            raise ValueError(f"Expected `Y` finite or NaN, got {float(Y[np.isinf(Y)].ravel()[0])!r}")
+        return self.y_start + Y / self.output_scale
 
     def rotations(self, x):
         """Rotations (X, Y) of the links at function arguments `x`."""

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import real_number
+from mech._validate import InputTypeError, _show, finite_array, planar_points, real_number
 from mech.planar._fourbar import FourBar
 from mech.planar._grashof import grashof
 from mech.planar.synthesis._displacement import pose_set
@@ -68,11 +68,11 @@ class GuidanceFourBar:
 
     def to_ground(self, w):
         """Map standard-frame points (complex) to the task's ground frame."""
-        return self.origin + np.exp(1j * self.angle) * np.asarray(w)
+        return self.origin + np.exp(1j * self.angle) * planar_points("w", w)
 
     def coupler_poses(self, theta_input):
         """The coupler's pose ``(theta, d)`` in the task frame at input angles `theta_input`."""
-        pose = self.linkage.solve(theta_input)
+        pose = self.linkage.solve(finite_array("theta_input", theta_input))
         zB, zC = self.input_dyad.circle_point, self.output_dyad.circle_point
         theta = np.angle(pose.C - pose.B) + self.angle - np.angle(zC - zB)
         return np.angle(np.exp(1j * theta)), self.to_ground(pose.P)
@@ -196,7 +196,8 @@ def guidance_fourbars(theta, d, dyads=None, *, rtol=1e-9):
     Raises
     ------
     ValueError
-        For bad poses, or no `dyads` with fewer than five poses.
+        For bad poses, no `dyads` with fewer than five poses, or fewer than two `dyads`
+        given (`InputTypeError` when `dyads` is not a list or tuple).
 
     Notes
     -----
@@ -220,10 +221,13 @@ def guidance_fourbars(theta, d, dyads=None, *, rtol=1e-9):
     """
     theta, d = pose_set(theta, d, (2, 3, 4, 5))
     rtol = real_number("rtol", rtol)
+    user_dyads = dyads is not None
     if dyads is None:
         if theta.size != 5:
             raise ValueError(f"Expected `dyads` for {theta.size} poses (only five fix them), got None")
         dyads = burmester(theta, d).dyads
+    elif not isinstance(dyads, (list, tuple)):
+        raise InputTypeError(f"Expected `dyads` to be a list or tuple of Dyad records, got {_show(dyads)}")
     dyads = tuple(dyads)
     for k, dyad in enumerate(dyads):
         if not isinstance(dyad, Dyad) or np.ndim(dyad.length) != 0:
@@ -232,6 +236,8 @@ def guidance_fourbars(theta, d, dyads=None, *, rtol=1e-9):
         if not all(isinstance(f, (int, float, complex, np.number)) and not isinstance(f, (bool, np.bool_))
                    and np.isfinite(f) for f in fields):
             raise ValueError(f"Expected `dyads` with finite numeric fields, got {dyad!r} at index {k}")
+    if len(dyads) < 2 and user_dyads:
+        raise ValueError(f"Expected `dyads` to hold at least two Dyad records (a pair), got {len(dyads)}")
     candidates = []
     for i, crank in enumerate(dyads):
         for j, rocker in enumerate(dyads):

@@ -121,10 +121,10 @@ class DesignModel:
     def upper(self):
         return self.bounds[:, 1]
 
-    def _x(self, x):
-        arr = finite_array("x", x)
+    def _x(self, x, name="x"):
+        arr = finite_array(name, x)
         if arr.ndim < 1 or arr.shape[-1] != self.n:
-            raise ValueError(f"Expected `x` with last axis of length {self.n}, got shape {arr.shape}")
+            raise ValueError(f"Expected `{name}` with last axis of length {self.n}, got shape {arr.shape}")
         return arr
 
     def f(self, x):
@@ -420,7 +420,7 @@ def scipy_minimize(model, x0, *, method="SLSQP", options=None):
         raise ValueError(f"Expected `model` as a DesignModel, got {model!r}")
     if method not in ("SLSQP", "trust-constr"):
         raise ValueError(f"Expected `method` 'SLSQP' or 'trust-constr', got {method!r}")
-    x0 = model._x(x0)
+    x0 = model._x(x0, "x0")
     if x0.shape != (model.n,):
         raise ValueError(f"Expected `x0` of shape ({model.n},), got shape {x0.shape}")
     if options is not None and not isinstance(options, dict):

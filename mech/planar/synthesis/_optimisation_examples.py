@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated.steering_trapezoid import steering_beta, steering_ideal
-from mech._validate import finite_array, nonnegative_int, positive_length, real_number
+from mech._validate import _show, finite_array, nonnegative_int, planar_points, positive_length, real_number
 from mech.planar._fourbar import FourBar
 from mech.planar.synthesis._optimisation import DesignModel
 
@@ -203,12 +203,9 @@ class SteeringTrapezoid:
 
 
 def _points(points):
-    arr = np.asarray(points)
-    if arr.dtype == object or arr.dtype.kind not in "fciu" or arr.ndim != 1 or arr.size < 3:
-        raise ValueError(f"Expected `points` as a 1-D array of at least 3 complex numbers, got {points!r}")
-    arr = arr.astype(complex)
-    if not np.all(np.isfinite(arr)):
-        raise ValueError(f"Expected finite `points`, got {points!r}")
+    arr = planar_points("points", points)
+    if arr.ndim != 1 or arr.size < 3:
+        raise ValueError(f"Expected `points` as a 1-D array of at least 3 complex numbers, got {_show(points)}")
     return arr
 
 
@@ -366,7 +363,7 @@ class CouplerPathDesign:
 
     def place(self, z):
         """Standard-frame points z in the task's ground frame."""
-        return self.origin + np.exp(1j * self.rotation) * np.asarray(z)
+        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
 
     def prove(self, samples=7200):
         """Solve the four-bar at the targets' crank angles and over a full turn (``samples`` poses)."""

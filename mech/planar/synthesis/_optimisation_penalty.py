@@ -120,7 +120,7 @@ def penalty_method(model, x0, *, r0=None, factor=0.3, stages=12, iterations=2000
     """
     if not isinstance(model, DesignModel):
         raise ValueError(f"Expected `model` as a DesignModel, got {model!r}")
-    x0 = model._x(x0)
+    x0 = model._x(x0, "x0")
     if x0.shape != (model.n,):
         raise ValueError(f"Expected `x0` of shape ({model.n},), got shape {x0.shape}")
     (phi0,), (f0,) = _barrier(model, x0[None], 1.0)
