@@ -47,6 +47,7 @@ __all__ = [
     "real_tuple",
     "planar_point",
     "planar_points",
+    "function_pairs",
 ]
 
 
@@ -373,3 +374,19 @@ def motion_inputs(name, angle, order, omega, alpha):
         shapes = ", ".join(f"`{n}` {x.shape}" for n, x in zip((name, "omega", "alpha"), inputs))
         raise ValueError(f"Expected shapes that broadcast together, got {shapes}") from None
     return order, shape, [np.broadcast_to(x, shape) for x in inputs]
+
+
+def function_pairs(x, y, minimum):
+    """Check the pairs ``(x, y)`` of a function to generate: 1-D, one length, distinct `x`.
+
+    Returns the two float arrays; raises ValueError naming `x` or `y` when they are not
+    finite, not 1-D arrays of one length, fewer than `minimum`, or `x` repeats a value.
+    """
+    x, y = finite_array("x", x), finite_array("y", y)
+    if x.ndim != 1 or y.shape != x.shape:
+        raise ValueError(f"Expected `x` and `y` as 1-D arrays of one length, got shapes {x.shape} and {y.shape}")
+    if x.size < minimum:
+        raise ValueError(f"Expected at least {minimum} pairs, got {x.size}")
+    if np.unique(x).size != x.size:
+        raise ValueError(f"Expected distinct `x` values, got {x}")
+    return x, y

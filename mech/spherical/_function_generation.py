@@ -12,7 +12,7 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
-from mech._validate import MAX_COUNT, arc as _arc, bool_flag, finite_array, integer, option, real_number
+from mech._validate import arc as _arc, bool_flag, finite_array, function_pairs, integer, MAX_COUNT, option, real_number
 
 __all__ = [
     "FunctionGenerator",
@@ -259,17 +259,6 @@ def _diagnose(arcs, theta0, psi0, x, y, span=None):
     return int(branches[0]), (None if np.all(disc > 0.0) else "limit")
 
 
-def _pairs(x, y, minimum):
-    x, y = finite_array("x", x), finite_array("y", y)
-    if x.ndim != 1 or y.shape != x.shape:
-        raise ValueError(f"Expected `x` and `y` as 1-D arrays of one length, got shapes {x.shape} and {y.shape}")
-    if x.size < minimum:
-        raise ValueError(f"Expected at least {minimum} pairs, got {x.size}")
-    if np.unique(x).size != x.size:
-        raise ValueError(f"Expected distinct `x` values, got {x}")
-    return x, y
-
-
 def _cubic_roots(f):
     """Roots in [0, pi) of f(u) = alpha c^3 + beta c^2 s + gamma c s^2 + delta s^3 (c, s = cos u, sin u)."""
     offset = 0.3                              # keeps a root at u = pi/2 away from tan's pole
@@ -391,7 +380,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=None, keep_defective=Fals
     >>> float(np.max(np.abs(g.structural_error(x, y)))) < 1e-12
     True
     """
-    x, y = _pairs(x, y, 3)
+    x, y = function_pairs(x, y, 3)
     n = x.size
     theta0 = None if theta0 is None else real_number("theta0", theta0)
     psi0 = None if psi0 is None else real_number("psi0", psi0)
@@ -490,7 +479,7 @@ def least_squares(x, y, theta0, psi0, *, kind="structural", fit_start=False, sta
     >>> fit.max_error < 1e-3
     True
     """
-    x, y = _pairs(x, y, 4)
+    x, y = function_pairs(x, y, 4)
     theta0, psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
     kind = option("kind", kind, ("structural", "equation"))
     fit_start = bool_flag("fit_start", fit_start)

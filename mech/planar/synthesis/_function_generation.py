@@ -14,12 +14,11 @@ meets its pairs, on which branch, and whether one branch covers the range.
 import numpy as np
 
 from mech._generated.function_generation import fg_output_terms, fg_row
-from mech._validate import bool_flag, positive_length, real_number
+from mech._validate import bool_flag, function_pairs, positive_length, real_number
 from mech.planar.synthesis._function_generator import (
     FunctionGenerator,
     FunctionMap,
     _common,
-    _pairs,
     _wrap,
     freudenstein_coefficients,
     lengths_from_coefficients,
@@ -226,7 +225,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=1.0, target=None, x_range
     >>> g.pair_error < 1e-12
     True
     """
-    x, y = _pairs(x, y, 3)
+    x, y = function_pairs(x, y, 3)
     n = x.size
     theta0 = None if theta0 is None else real_number("theta0", theta0)
     psi0 = None if psi0 is None else real_number("psi0", psi0)
@@ -334,7 +333,7 @@ def least_squares(x, y, *, theta0, psi0, d=1.0, kind="structural", fit_start=Fal
     >>> fit.covers_range, round(fit.errors()[0] / abs(m.output_scale), 4)     # max error in y
     (True, 0.01)
     """
-    x, y = _pairs(x, y, 3)
+    x, y = function_pairs(x, y, 3)
     theta0, psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
     d = positive_length("d", d)
     fit_start = bool_flag("fit_start", fit_start)

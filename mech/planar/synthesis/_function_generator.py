@@ -9,7 +9,7 @@ covers the input range. The synthesis itself is in ``_function_generation``.
 import numpy as np
 
 from mech._generated.function_generation import fg_coefficients, fg_lengths
-from mech._validate import branch_sign, finite_array, positive_length, real_array, real_number
+from mech._validate import branch_sign, finite_array, function_pairs, positive_length, real_array, real_number
 from mech.planar._fourbar import FourBar
 
 __all__ = ["FunctionGenerator", "FunctionMap", "freudenstein_coefficients", "lengths_from_coefficients"]
@@ -298,7 +298,7 @@ class FunctionGenerator:
         self.lengths = (a, b, c, d)
         self.theta0, self.psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
         self.branch = branch_sign(branch)
-        self.x, self.y = _pairs(x, y, 1)
+        self.x, self.y = function_pairs(x, y, 1)
         x_range = _common(target, x_range, samples, tol)
         self.fourbar = FourBar(a, b, c, d, branch=self.branch)
         self.placement = (0j, 0.0)
@@ -396,17 +396,6 @@ class FunctionGenerator:
         x = np.linspace(*self.x_range, samples)
         e = self.structural_error(x) if self.target is not None else self.structural_error(self.x, self.y)
         return float(np.max(np.abs(e))), float(np.sqrt(np.mean(e**2)))
-
-
-def _pairs(x, y, minimum):
-    x, y = finite_array("x", x), finite_array("y", y)
-    if x.ndim != 1 or y.shape != x.shape:
-        raise ValueError(f"Expected `x` and `y` as 1-D arrays of one length, got shapes {x.shape} and {y.shape}")
-    if x.size < minimum:
-        raise ValueError(f"Expected at least {minimum} pairs, got {x.size}")
-    if np.unique(x).size != x.size:
-        raise ValueError(f"Expected distinct `x` values, got {x}")
-    return x, y
 
 
 def _common(target, x_range, samples, tol):
