@@ -840,6 +840,18 @@ _POINTS_2_24 = np.array([1 + 1j, 2 + 1.5j, 3 + 1j])
 _X_2_24 = np.array([1.7, 5.8, 5.4, 7.0, 8.0, 2.0, 2.2, np.radians(80), np.radians(-70), np.radians(90)])
 
 
+_P21 = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 32.95 + 99.62j,
+                 44.74 + 113.95j, 58.62 + 127.98j, 66.27 + 215.07j])   # example 2-21
+_B21, _C21, _D21 = -95.524 + 80.407j, 76.791 + 170.535j, 174.194 + 18.575j
+_P22 = np.array([12.42, 7.98 + 1.89j, 0.76 + 1.47j, 1.30 - 0.85j, 8.83 + 0.3j])   # example 2-22
+_A22 = np.radians([4.2, 64.87, 145.82, 219.24, 303.45])
+_DESIGN22 = np.array([-5.46 + 1.17j, 0.74 + 1.54j, 16.9 + 15.29j, 9.34 - 20.54j, 12.42 + 0j])
+
+
+def _path():
+    return sy.path_design(0j, _B21, _C21, _D21, _P21)
+
+
 def _p_slot(defaults, key):
     """A bad value put into one entry of an exercise's parameter mapping ``p``."""
     return ("scalar", lambda v: {**defaults, key: v}, key)
@@ -1008,6 +1020,29 @@ CASES.update({
                                                     "clearance": "scalar"},
                                                    a=1480.0, h=2960.0, theta_max=0.5, steps=5, arm_range=(0.1, 0.4),
                                                    clearance=0.6),
+    "planar.synthesis.PathFourBar.to_ground": E(lambda: _path().to_ground, {"w": "point"}, w=[0.0, 1 + 1j]),
+    "planar.synthesis.PathFourBar.coupler_point": E(lambda: _path().coupler_point, {"theta_input": "real"},
+                                                    theta_input=[0.0, 1.0]),
+    "planar.synthesis.path_design": E(lambda: sy.path_design,
+                                      {"A": "point1", "B1": "point1", "C1": "point1", "D": "point1",
+                                       "points": "point", "rtol": "scalar"},
+                                      A=0j, B1=_B21, C1=_C21, D=_D21, points=_P21, rtol=1e-9),
+    "planar.synthesis.path_residuals": E(lambda: sy.path_residuals,
+                                         {"design": "point", "points": "point", "crank_angles": "real"},
+                                         design=_DESIGN22, points=_P22[:2], crank_angles=_A22[:2]),
+    "planar.synthesis.path_residuals#result": E(lambda: sy.path_residuals, {"points": "point", "crank_angles": "real"},
+                                                design=_path(), points=_P21[:2], crank_angles=[0.0, 0.5]),
+    "planar.synthesis.path_timed": E(lambda: sy.path_timed,
+                                     {"points": "point", "crank_angles": "real", "rtol": "scalar",
+                                      "imag_tol": "scalar"},
+                                     points=_P22, crank_angles=_A22, rtol=1e-9, imag_tol=1e-7),
+    "planar.synthesis.path_untimed": E(lambda: sy.path_untimed,
+                                       {"points": "point", "A": "point1?", "D": "point1?",
+                                        "initial": ("point", lambda v: [v]), "starts": "count", "seed": "seed",
+                                        "max_steps": "count", "tol": "scalar", "distinct_tol": "scalar",
+                                        "rtol": "scalar"},
+                                       points=_P22, A=_DESIGN22[0], D=_DESIGN22[3], initial=[_DESIGN22[:4]],
+                                       starts=1, seed=0, max_steps=20, tol=1e-10, distinct_tol=1e-6, rtol=1e-9),
     # ------------------------------------------------------------------------- exercises 2-29 to 2-32
     "exercises.chapter2_synthesis.design_2_29": E(lambda: chapter2_synthesis.design_2_29,
                                                   {"interior": "bool"},
@@ -1049,7 +1084,7 @@ RECORDS.update({
     **{f"planar.synthesis.{n}": "result record built by the package" for n in (
         "Dyad", "BurmesterCurve", "BurmesterPoints", "GuidanceFourBar", "GuidanceSynthesis", "QuickReturnCheck",
         "QuickReturnCrankRocker", "QuickReturnFamily", "QuickReturnGuideBar", "QuickReturnSliderCrank",
-        "OptimisationResult")},
+        "OptimisationResult", "PathFourBar", "PathSynthesis")},
     "exercises.chapter2_quick_return.Shaper": "result record built by the package (shaper_2_32)",
 })
 
@@ -1283,3 +1318,13 @@ def test_design_model_rejects_non_callables_and_complex_values(name):
     method = {"objective": model.f, "inequality": model.g, "equality": model.h}[name]
     with pytest.raises(ValueError, match=f"Expected `{name}` to return real numbers"):
         method([0.5])
+
+
+# ----------------------------------------------------------------------------- path generation
+def test_path_coupler_point_keeps_nan_of_unassembled_poses():
+    """`to_ground` rejects NaN input, but `coupler_point` still reports unassembled poses as NaN."""
+    design = (0j, 1 + 0j, 3 + 1j, 3 + 0j, 2 + 0.5j)      # a = c = 1, d = 3: the crank cannot turn fully
+    out = sy.path_residuals(design, np.zeros(3), [0.0, np.pi, 0.5])
+    assert np.isfinite(out[0]) and np.isnan(out[1]) and np.isfinite(out[2])
+    with pytest.raises(ValueError, match=r"Expected finite `w`"):
+        _path().to_ground(complex(math.nan, 0.0))

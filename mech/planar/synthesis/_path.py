@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated.path_generation import path_dyad_coefficients, path_dyad_residual
-from mech._validate import nonnegative_int, positive_length, real_array
+from mech._validate import finite_array, nonnegative_int, planar_points, positive_length, real_array
 from mech.planar._fourbar import FourBar
 from mech.planar._grashof import grashof
 from mech.planar.synthesis._displacement import complex_array
@@ -82,11 +82,15 @@ class PathFourBar:
 
     def to_ground(self, w):
         """Map standard-frame points (complex) to the task's ground frame."""
-        return self.origin + np.exp(1j * self.angle) * np.asarray(w)
+        return self._place(planar_points("w", w))
 
     def coupler_point(self, theta_input):
         """The coupler point in the task frame at standard-frame input angles (NaN if unassembled)."""
-        return self.to_ground(self.linkage.solve(theta_input).P)
+        # placed unchecked: the NaN of an unassembled pose is a result, not a bad input
+        return self._place(self.linkage.solve(finite_array("theta_input", theta_input)).P)
+
+    def _place(self, w):
+        return self.origin + np.exp(1j * self.angle) * w
 
 
 @dataclass(frozen=True)
