@@ -156,8 +156,8 @@ def mech_runner(order):
 
 
 def _generated_names():
-    """Names in ``mech.planar._fourbar`` bound to generated modules or functions."""
-    import mech.planar._fourbar as fourbar
+    """Names in ``mech.planar.kinematics._fourbar`` bound to generated modules or functions."""
+    import mech.planar.kinematics._fourbar as fourbar
 
     found = {}
     for name, obj in vars(fourbar).items():
@@ -220,7 +220,7 @@ def naive_modules():
 @contextlib.contextmanager
 def swapped_generated(modules, which):
     """Swap the generated code used by ``_fourbar`` for naive versions (which = 0 or 1)."""
-    import mech.planar._fourbar as fourbar
+    import mech.planar.kinematics._fourbar as fourbar
 
     with contextlib.ExitStack() as stack:
         for name, obj in _generated_names().items():

@@ -1,7 +1,7 @@
 """Benchmark: ready-made six-bars and Jansen's leg, solve time per pose against error.
 
 For the Watt six-bar, the Stephenson six-bar and Jansen's linkage of
-``mech.planar._library`` (default dimensions), N crank angles (N = 10^4) are solved
+``mech.planar.special._library`` (default dimensions), N crank angles (N = 10^4) are solved
 
 - by ``mech``: ``Linkage.solve(theta, order=0)`` (positions) and ``order=2`` (positions,
   velocities, accelerations, omega = 1, alpha = 0), vectorised over all poses;
@@ -39,7 +39,7 @@ sys.path.insert(0, str(ROOT / "tests" / "planar"))
 import linkage_reference as ref  # noqa: E402
 from bench_coupler_curve import machine, versions  # noqa: E402
 
-from mech.planar import _library as lib  # noqa: E402
+from mech.planar.special import _library as lib  # noqa: E402
 
 N = 10_000
 SAMPLES = 200

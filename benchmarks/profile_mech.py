@@ -1,6 +1,6 @@
 """Where does ``FourBar.solve`` spend its time? A line-by-line profile of the generated code.
 
-Each generated function used by ``mech.planar._fourbar`` is executed statement by statement
+Each generated function used by ``mech.planar.kinematics._fourbar`` is executed statement by statement
 (the assignments of its body, then each returned expression) on the benchmark's linkage, and
 each statement is timed; the wrapper's own work (input checks, packing complex arrays, the
 validity mask) is timed beside it. A second table times the same solve in blocks, to show
@@ -60,7 +60,7 @@ def profile_function(func, args, repeats=5):
 
 
 def main(n=1_000_000):
-    import mech.planar._fourbar as fb
+    import mech.planar.kinematics._fourbar as fb
     from mech._validate import finite_array
     from mech.planar import FourBar
 

@@ -53,7 +53,7 @@ def draw_linkage(ax, linkage, solution, index=0, *, sketch=None, size=None, labe
     pivots are hatched triangles, blocks are boxes along their link, and a block sliding on
     the frame has its guide drawn dashed.
     """
-    from mech.planar._library import sketch as make_sketch
+    from mech.planar.special._library import sketch as make_sketch
 
     ax = _axes(ax)
     sk = sketch or make_sketch(linkage)

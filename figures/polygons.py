@@ -1,7 +1,7 @@
 """Figures of the relative-motion method (``book/analysis/relative-motion.md``).
 
 Plain plotting functions: a mechanism diagram, a velocity polygon and an acceleration
-polygon drawn from the vectors that ``mech.planar._polygons`` computes, labelled like the
+polygon drawn from the vectors that ``mech.planar.kinematics._polygons`` computes, labelled like the
 textbook (``p, b, c, e`` and ``p', b', n'_cb, c'``). They take data and Matplotlib axes (a
 new figure when ``ax`` is None) and return the axes. Nothing runs at import.
 """

@@ -177,12 +177,12 @@ def _mechanism_solution():
 
 
 def _example_2_10():
-    from mech.planar._polygons import example_2_10
+    from mech.planar.kinematics._polygons import example_2_10
     return example_2_10()
 
 
 def _example_2_9():
-    from mech.planar._polygons import example_2_9
+    from mech.planar.kinematics._polygons import example_2_9
     return example_2_9()
 
 

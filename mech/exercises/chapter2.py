@@ -43,7 +43,7 @@ from mech._errors import InputTypeError
 from mech._validate import instance, positive_length
 from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
 from mech.planar import FourBar, SliderCrank, grashof
-from mech.planar import _grashof
+from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
 from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
 from mech.exercises.chapter2_statics import EXERCISE_2_22

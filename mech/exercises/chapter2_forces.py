@@ -2,7 +2,7 @@
 
 The figures are lost; each solution states the geometry it assumes (tag "A") or the
 modelling choices the statement leaves open, then computes its answers with the friction and
-efficiency functions of `mech.planar` (modules ``_friction``, ``_efficiency``, ``_screw``).
+efficiency functions of `mech.planar` (modules ``forces._friction``, ``forces._efficiency``, ``forces._screw``).
 The solutions are shown on the book page ``book-forces-exercises``.
 
 Examples

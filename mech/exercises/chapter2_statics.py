@@ -3,7 +3,7 @@
 The figure of exercise 2-22 (题图 2-22) is lost: only "A and B are fixed pins, every pin is
 25 mm in diameter, mu0 = 0.2, P = 30 N, find Q" survives. The solution states the layout it
 assumes (two levers on the fixed pins A and B joined by a link), and solves it with
-`mech.planar._statics.static_forces`, with and without friction. The solution is shown on
+`mech.planar.forces._statics.static_forces`, with and without friction. The solution is shown on
 the book page ``book-forces-static-forces``.
 
 Examples

@@ -2,82 +2,149 @@
 
 Conventions (``CONVENTIONS.md``): angles in radians, points as complex numbers
 ``x + 1j*y``, ground pivots ``A = 0`` and ``D = d``.
+
+The modules are grouped by the chapter's sections, one subpackage each: ``structure``
+(Grashof types, limit positions, quick return), ``kinematics`` (the four-bar, the
+slider-crank, the guide-bar, any ``Linkage``, the triad, instant centres, velocity and
+acceleration polygons), ``coupler`` (coupler-curve atlas, centrodes, cognates), ``forces``
+(friction, efficiency, screws, pressure and transmission angles, force gain, statics),
+``special`` (inversions of the slider-crank chain, double sliders, ready-made linkages) and
+``synthesis``. Every public name is re-exported here, so ``mech.planar.FourBar`` and
+``mech.planar.kinematics.FourBar`` are the same object.
 """
 
 from mech._errors import AssemblyError
-from mech.planar._atlas import CouplerDashes, coupler_dashes
-from mech.planar._centrodes import CentrodeSegment, CouplerCentrodes, coupler_centrodes
-from mech.planar._cognates import Cognate, CognatePose, Cognates, TenBarPose, cognates
-from mech.planar._instant_centres import (
+from mech.planar.structure import (
+    GrashofResult,
+    KindInterval,
+    LimitPositions,
+    extreme_angle,
+    grashof,
+    kind_intervals,
+    limit_positions,
+    time_ratio,
+)
+from mech.planar.kinematics import (
+    AssemblyInterval,
     Centre,
+    Equation,
+    FourBar,
+    FourBarPose,
+    Guide,
+    GuideBar,
+    GuideBarPose,
+    Image,
     InstantCentres,
     LinkVelocities,
+    Linkage,
+    LinkageSolution,
+    Polygon,
+    RelativeMotion,
+    Slide,
+    SliderCrank,
+    SliderCrankLimits,
+    SliderCrankPose,
+    SliderCrankSeries,
+    Term,
+    TriadPose,
+    TriadSixBar,
+    acceleration_image,
+    acceleration_polygon,
     centre_count,
     centre_velocities,
+    coincident_motion,
     higher_pair,
     instant_centres,
     omega_ratio,
     prismatic,
+    relative_motion,
     revolute,
+    velocity_image,
+    velocity_polygon,
 )
-from mech.planar._triad import TriadPose, TriadSixBar
-from mech.planar._double_slider import (
-    EllipticTrammel,
-    OldhamCoupling,
-    OldhamPose,
-    ScotchYoke,
-    ScotchYokePose,
-    TangentMechanism,
-    TangentPose,
-    TrammelPose,
+from mech.planar.coupler import (
+    CentrodeSegment,
+    Cognate,
+    CognatePose,
+    Cognates,
+    CouplerCentrodes,
+    CouplerDashes,
+    TenBarPose,
+    cognates,
+    coupler_centrodes,
+    coupler_dashes,
 )
-from mech.planar._efficiency import (
+from mech.planar.forces import (
+    DeadPoints,
+    FRICTION_TABLE_2_2,
+    InclineForces,
+    ScrewJack,
+    ScrewResult,
+    StaticForces,
+    TransmissionExtremes,
     WedgePress,
+    as_linkage,
+    collar_friction_radius,
+    curved_contact_mu,
+    design_check,
     eccentric_clamp_locks,
     eccentric_clamp_max_angle,
     efficiency,
     efficiency_from_drive,
     efficiency_from_resistance,
-    is_self_locking,
-    parallel_efficiency,
-    push_rod,
-    series_efficiency,
-    spreading_wedge_force,
-    wedge_press,
-)
-from mech.planar._friction import (
-    FRICTION_TABLE_2_2,
-    InclineForces,
-    collar_friction_radius,
-    curved_contact_mu,
-    friction_angle,
-    friction_circle,
-    incline_forces,
-    journal_mu,
-    journal_state,
-    rolling_mill_max_thickness,
-    slider_state,
-    thrust_friction_moment,
-    total_reaction,
-    two_force_tilt_angle,
-    vgroove_mu,
-)
-from mech.planar._force_gain import (
-    DeadPoints,
     fourbar_dead_points,
     fourbar_mechanical_advantage,
+    fourbar_pressure_angle,
+    friction_angle,
+    friction_circle,
+    guide_bar_pressure_angle,
     hand_press,
+    incline_forces,
+    is_self_locking,
     jaw_crusher,
+    joint_transmission_angle,
+    journal_mu,
+    journal_state,
+    lead_angle,
     mechanical_advantage,
+    min_transmission_angle,
+    parallel_efficiency,
+    pressure_angle,
+    push_rod,
+    rolling_mill_max_thickness,
+    screw_efficiency,
+    series_efficiency,
     slider_crank_dead_points,
     slider_crank_mechanical_advantage,
+    slider_crank_min_transmission_angle,
+    slider_crank_pressure_angle,
+    slider_state,
+    spreading_wedge_force,
+    static_forces,
+    thread_friction_angle,
+    thrust_friction_moment,
+    total_reaction,
+    transmission_angle,
+    transmission_extremes,
+    two_force_tilt_angle,
+    vgroove_mu,
+    watt_transmission_angles,
+    wedge_press,
 )
-from mech.planar._fourbar import FourBar, FourBarPose
-from mech.planar._grashof import GrashofResult, KindInterval, grashof, kind_intervals
-from mech.planar._guide_bar import GuideBar, GuideBarPose
-from mech.planar._library import (
+from mech.planar.special import (
+    EllipticTrammel,
     JANSEN_HOLY_NUMBERS,
+    OldhamCoupling,
+    OldhamPose,
+    RotatingGuideBar,
+    RotatingGuideBarPose,
+    ScotchYoke,
+    ScotchYokePose,
     Stroke,
+    SwingingBlock,
+    TangentMechanism,
+    TangentPose,
+    TrammelPose,
     jansen_linkage,
     quick_return_crank_rocker,
     quick_return_guide_bar,
@@ -89,39 +156,6 @@ from mech.planar._library import (
     stephenson_six_bar,
     watt_six_bar,
 )
-from mech.planar._limit_positions import LimitPositions, limit_positions
-from mech.planar._linkage import AssemblyInterval, Guide, Linkage, LinkageSolution, Slide
-from mech.planar._polygons import (
-    Equation,
-    Image,
-    Polygon,
-    RelativeMotion,
-    Term,
-    acceleration_image,
-    acceleration_polygon,
-    coincident_motion,
-    relative_motion,
-    velocity_image,
-    velocity_polygon,
-)
-from mech.planar._pressure_angle import (
-    TransmissionExtremes,
-    design_check,
-    fourbar_pressure_angle,
-    guide_bar_pressure_angle,
-    joint_transmission_angle,
-    pressure_angle,
-    slider_crank_min_transmission_angle,
-    slider_crank_pressure_angle,
-    transmission_extremes,
-    watt_transmission_angles,
-)
-from mech.planar._quick_return import extreme_angle, time_ratio
-from mech.planar._slider_crank import SliderCrank, SliderCrankLimits, SliderCrankPose, SliderCrankSeries
-from mech.planar._screw import ScrewJack, ScrewResult, lead_angle, screw_efficiency, thread_friction_angle
-from mech.planar._special import RotatingGuideBar, RotatingGuideBarPose, SwingingBlock
-from mech.planar._statics import StaticForces, as_linkage, static_forces
-from mech.planar._transmission import min_transmission_angle, transmission_angle
 
 __all__ = [
     "AssemblyError",

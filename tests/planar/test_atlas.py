@@ -1,4 +1,4 @@
-"""Coupler-curve atlas dashes (Fig. 2-30, F25): ``mech.planar._atlas``.
+"""Coupler-curve atlas dashes (Fig. 2-30, F25): ``mech.planar.coupler._atlas``.
 
 Expected points come from a plain circle intersection (law of cosines with arccos, a
 different formula from the package's atan2 form); arc lengths from a 20 000-step sweep.
@@ -7,7 +7,7 @@ different formula from the package's atan2 form); arc lengths from a 20 000-step
 import numpy as np
 import pytest
 
-from mech.planar._atlas import CouplerDashes, coupler_dashes
+from mech.planar.coupler._atlas import CouplerDashes, coupler_dashes
 
 
 def _points_by_circles(a, b, c, d, w, theta, branch=1):

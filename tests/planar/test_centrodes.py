@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from mech.planar import FourBar
-from mech.planar._centrodes import coupler_centrodes
-from mech.planar._instant_centres import instant_centres
+from mech.planar.coupler._centrodes import coupler_centrodes
+from mech.planar.kinematics._instant_centres import instant_centres
 
 
 @pytest.mark.parametrize("lengths, branch", [((10, 40, 30, 35), 1), ((10, 40, 30, 35), -1),

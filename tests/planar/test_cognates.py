@@ -1,4 +1,4 @@
-"""Roberts-Chebyshev cognates (Fig. 2-32): ``mech.planar._cognates``.
+"""Roberts-Chebyshev cognates (Fig. 2-32): ``mech.planar.coupler._cognates``.
 
 Expected values come from an independent route: each cognate is rebuilt from the
 package's dimensions and placement, driven by ITS OWN crank over a full turn on both of
@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from mech.planar import FourBar, grashof
-from mech.planar._cognates import Cognate, Cognates, cognates
+from mech.planar.coupler._cognates import Cognate, Cognates, cognates
 
 RNG_SEED = 20240603
 

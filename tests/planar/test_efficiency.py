@@ -1,4 +1,4 @@
-"""Efficiency and self-locking (mech.planar._efficiency) against independent routes: the
+"""Efficiency and self-locking (mech.planar.forces._efficiency) against independent routes: the
 free-body equilibria of the wedges, rod and clamp solved numerically, sign changes found by
 bisection, power bookkeeping for combined machines."""
 
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from mech.planar._efficiency import (
+from mech.planar.forces._efficiency import (
     eccentric_clamp_locks,
     eccentric_clamp_max_angle,
     efficiency,

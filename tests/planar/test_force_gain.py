@@ -1,4 +1,4 @@
-"""Tests for ``mech.planar._force_gain`` (force gain, dead points, toggle presses).
+"""Tests for ``mech.planar.forces._force_gain`` (force gain, dead points, toggle presses).
 
 Three routes must agree: the solution's loop velocities, the instant centres (positions
 only) and a 50-digit mpmath finite difference of positions solved independently by
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from mech.planar import FourBar, Linkage, SliderCrank, limit_positions
-from mech.planar._force_gain import (
+from mech.planar.forces._force_gain import (
     fourbar_dead_points,
     fourbar_mechanical_advantage,
     hand_press,
@@ -21,7 +21,7 @@ from mech.planar._force_gain import (
     slider_crank_dead_points,
     slider_crank_mechanical_advantage,
 )
-from mech.planar._linkage import Guide
+from mech.planar.kinematics._linkage import Guide
 
 
 def _psi_mp(a, b, c, d, t, branch):

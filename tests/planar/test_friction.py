@@ -1,4 +1,4 @@
-"""Friction in lower pairs (mech.planar._friction) against independent routes: component
+"""Friction in lower pairs (mech.planar.forces._friction) against independent routes: component
 force balances solved numerically, pressure integrals by mpmath quadrature, tangent-line
 geometry, and brute-force force balances of the rolling mill."""
 
@@ -8,7 +8,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from mech.planar._friction import (
+from mech.planar.forces._friction import (
     FRICTION_TABLE_2_2,
     collar_friction_radius,
     curved_contact_mu,

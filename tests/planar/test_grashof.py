@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from mech.planar import GrashofResult, grashof
-from mech.planar._grashof import KindInterval, kind_intervals
+from mech.planar.structure._grashof import KindInterval, kind_intervals
 
 KINDS = {"crank-rocker", "rocker-crank", "double-crank", "double-rocker", "triple-rocker"}
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from mech.planar import FourBar, SliderCrank
-from mech.planar._instant_centres import (
+from mech.planar.kinematics._instant_centres import (
     centre_count,
     higher_pair,
     instant_centres,

@@ -15,7 +15,7 @@ import pytest
 
 from mech import AssemblyError
 from mech.planar import SliderCrank
-from mech.planar import _library as lib
+from mech.planar.special import _library as lib
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import linkage_reference as ref  # noqa: E402

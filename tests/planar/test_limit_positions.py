@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from mech.planar import grashof
-from mech.planar._limit_positions import LimitPositions, limit_positions
+from mech.planar.structure._limit_positions import LimitPositions, limit_positions
 
 TWO_PI = 2 * np.pi
 

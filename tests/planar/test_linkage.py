@@ -281,7 +281,7 @@ def test_linkage_is_immutable_and_order_is_respected():
 # ---------------------------------------------------------------- instant centres
 def test_linkage_instant_centres_agree_with_analytic_rates():
     """Fifteen centres of a six-bar with a slider; omegas and a velocity from them."""
-    from mech.planar._instant_centres import centre_velocities
+    from mech.planar.kinematics._instant_centres import centre_velocities
 
     lk = (Linkage({"A": 0, "D": 55}).crank("crank", pivot="A", tip="B", length=25)
           .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(60, 45))

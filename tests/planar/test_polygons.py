@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from mech.planar import Guide, Linkage
-from mech.planar._polygons import (
+from mech.planar.kinematics._polygons import (
     acceleration_image,
     acceleration_polygon,
     coincident_motion,

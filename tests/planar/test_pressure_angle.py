@@ -1,4 +1,4 @@
-"""Tests for ``mech.planar._pressure_angle`` (F49 to F59, eq. 2-30).
+"""Tests for ``mech.planar.forces._pressure_angle`` (F49 to F59, eq. 2-30).
 
 References are independent of the code path: the angle between solved vectors with
 ``mpmath.acos`` at 50 digits, dense brute-force sweeps for the extremes, and the catalog's
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from mech.planar import FourBar, Linkage, SliderCrank, quick_return_guide_bar, watt_six_bar
-from mech.planar._pressure_angle import (
+from mech.planar.forces._pressure_angle import (
     design_check,
     fourbar_pressure_angle,
     guide_bar_pressure_angle,

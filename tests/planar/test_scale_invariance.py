@@ -21,12 +21,12 @@ import numpy as np
 import pytest
 
 from mech.planar import GuideBar, SliderCrank
-from mech.planar._force_gain import slider_crank_dead_points, slider_crank_mechanical_advantage
-from mech.planar._pressure_angle import slider_crank_min_transmission_angle, slider_crank_pressure_angle
-from mech.planar._double_slider import EllipticTrammel, OldhamCoupling, ScotchYoke, TangentMechanism
-from mech.planar._library import _triangle
-from mech.planar._special import RotatingGuideBar, SwingingBlock
-from mech.planar._triad import TriadSixBar
+from mech.planar.forces._force_gain import slider_crank_dead_points, slider_crank_mechanical_advantage
+from mech.planar.forces._pressure_angle import slider_crank_min_transmission_angle, slider_crank_pressure_angle
+from mech.planar.special._double_slider import EllipticTrammel, OldhamCoupling, ScotchYoke, TangentMechanism
+from mech.planar.special._library import _triangle
+from mech.planar.special._special import RotatingGuideBar, SwingingBlock
+from mech.planar.kinematics._triad import TriadSixBar
 from mech.spatial._chain import example_2_25_reach
 from mech.spatial._rccc import RCCC
 from mech._pose import mask_singular_rates

@@ -1,4 +1,4 @@
-"""Screw pairs and the screw jack (mech.planar._screw) against independent routes: the nut
+"""Screw pairs and the screw jack (mech.planar.forces._screw) against independent routes: the nut
 as a block on the unrolled thread solved by components, virtual work per turn, mpmath at
 50 digits, and bisection for the self-locking lead angle."""
 
@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from mech.planar._screw import ScrewJack, lead_angle, screw_efficiency, thread_friction_angle
-from mech.planar._friction import vgroove_mu
+from mech.planar.forces._screw import ScrewJack, lead_angle, screw_efficiency, thread_friction_angle
+from mech.planar.forces._friction import vgroove_mu
 
 RNG = np.random.default_rng(6002)
 

@@ -1,4 +1,4 @@
-"""Tests of the special mechanisms of Table 2-1 (`mech.planar._special`, `_double_slider`).
+"""Tests of the special mechanisms of Table 2-1 (`mech.planar.special._special`, `_double_slider`).
 
 Expected values come from other routes than the generated formulas: unwrapped angles of
 brute-force sweeps, intersections of lines solved as linear systems, mpmath's numerical
@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from mech.planar import GuideBar, SliderCrank
-from mech.planar._double_slider import EllipticTrammel, OldhamCoupling, ScotchYoke, TangentMechanism
-from mech.planar._special import RotatingGuideBar, SwingingBlock
+from mech.planar.special._double_slider import EllipticTrammel, OldhamCoupling, ScotchYoke, TangentMechanism
+from mech.planar.special._special import RotatingGuideBar, SwingingBlock
 
 mpmath.mp.dps = 50
 RNG = np.random.default_rng(2024)

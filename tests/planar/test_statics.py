@@ -1,4 +1,4 @@
-"""Static force analysis (mech.planar._statics): virtual work, mpmath equilibrium, friction."""
+"""Static force analysis (mech.planar.forces._statics): virtual work, mpmath equilibrium, friction."""
 
 import math
 
@@ -8,9 +8,9 @@ import pytest
 
 from mech import AssemblyError
 from mech.planar import FourBar, Guide, Linkage, SliderCrank
-from mech.planar._library import shaper_watt, stephenson_six_bar, watt_six_bar
-from mech.planar._friction import friction_angle, friction_circle
-from mech.planar._statics import _pairs, as_linkage, static_forces
+from mech.planar.special._library import shaper_watt, stephenson_six_bar, watt_six_bar
+from mech.planar.forces._friction import friction_angle, friction_circle
+from mech.planar.forces._statics import _pairs, as_linkage, static_forces
 
 RNG = np.random.default_rng(20261122)
 

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from mech import AssemblyError
-from mech.planar._instant_centres import instant_centres, centre_velocities
-from mech.planar._triad import TriadSixBar
+from mech.planar.kinematics._instant_centres import instant_centres, centre_velocities
+from mech.planar.kinematics._triad import TriadSixBar
 
 CLAMP = dict(a=10, b=60, cd=36, ce=36, angle=-np.pi / 2, g=40, f=40, G=118 + 41j, F=91 - 48j)
 START = (60 + 10j, np.pi / 3)

@@ -10,7 +10,7 @@ import numpy as np
 
 from mech._generated.function_generation import fg_coefficients, fg_lengths
 from mech._validate import branch_sign, finite_array, function_pairs, positive_length, real_array, real_number
-from mech.planar._fourbar import FourBar
+from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["FunctionGenerator", "FunctionMap", "freudenstein_coefficients", "lengths_from_coefficients"]
 

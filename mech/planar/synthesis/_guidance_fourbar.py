@@ -5,8 +5,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import InputTypeError, _show, finite_array, planar_points, real_number
-from mech.planar._fourbar import FourBar
-from mech.planar._grashof import grashof
+from mech.planar.kinematics._fourbar import FourBar
+from mech.planar.structure._grashof import grashof
 from mech.planar.synthesis._displacement import pose_set
 from mech.planar.synthesis._guidance import Dyad, burmester
 

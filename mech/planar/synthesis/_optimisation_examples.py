@@ -12,7 +12,7 @@ import numpy as np
 
 from mech._generated.steering_trapezoid import steering_beta, steering_ideal
 from mech._validate import _show, finite_array, nonnegative_int, planar_points, positive_length, real_number
-from mech.planar._fourbar import FourBar
+from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.synthesis._optimisation import DesignModel
 
 __all__ = ["SteeringTrapezoid", "steering_trapezoid_model", "CouplerPathDesign", "path_synthesis_model",

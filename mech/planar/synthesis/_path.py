@@ -12,8 +12,8 @@ import numpy as np
 
 from mech._generated.path_generation import path_dyad_coefficients, path_dyad_residual
 from mech._validate import finite_array, nonnegative_int, planar_points, positive_length, real_array
-from mech.planar._fourbar import FourBar
-from mech.planar._grashof import grashof
+from mech.planar.kinematics._fourbar import FourBar
+from mech.planar.structure._grashof import grashof
 from mech.planar.synthesis._displacement import complex_array
 from mech.planar.synthesis._guidance import burmester
 from mech.planar.synthesis._guidance_fourbar import _motion

@@ -31,10 +31,10 @@ from mech._generated.quick_return_design import (
 )
 from mech._scaling import length_scale
 from mech._validate import InputTypeError, branch_sign, nonnegative_int, positive_length, real_number
-from mech.planar._fourbar import FourBar
-from mech.planar._guide_bar import GuideBar
-from mech.planar._quick_return import extreme_angle as _extreme_angle
-from mech.planar._slider_crank import SliderCrank
+from mech.planar.kinematics._fourbar import FourBar
+from mech.planar.kinematics._guide_bar import GuideBar
+from mech.planar.structure._quick_return import extreme_angle as _extreme_angle
+from mech.planar.kinematics._slider_crank import SliderCrank
 
 __all__ = [
     "QuickReturnCheck",

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from mech._validate import finite_array, positive_length
-from mech.planar._quick_return import extreme_angle
+from mech.planar.structure._quick_return import extreme_angle
 from mech.planar.synthesis._quick_return_design import crank_rocker_family, slider_crank_family
 
 __all__ = [

@@ -20,7 +20,7 @@ from mech._validate import (
     instance, integer, known_name, MAX_COUNT, planar_point, positive_length, real_number,
 )
 from mech._errors import InputTypeError
-from mech.planar._linkage import Guide, Linkage
+from mech.planar.kinematics._linkage import Guide, Linkage
 
 __all__ = [
     "watt_six_bar",

@@ -4,9 +4,9 @@ from dataclasses import dataclass
 
 from mech._generated.fourbar_limit_positions import fourbar_limit_positions
 from mech._validate import branch_sign
-from mech.planar._fourbar import fourbar_lengths
-from mech.planar._grashof import grashof
-from mech.planar._quick_return import time_ratio
+from mech.planar.kinematics._fourbar import fourbar_lengths
+from mech.planar.structure._grashof import grashof
+from mech.planar.structure._quick_return import time_ratio
 
 __all__ = ["LimitPositions", "limit_positions"]
 
@@ -87,7 +87,7 @@ def limit_positions(a, b, c, d, *, branch=1):
     Example 2-1, (a, b, c, d) = (10, 40, 30, 35):
 
     >>> import numpy as np
-    >>> from mech.planar._limit_positions import limit_positions
+    >>> from mech.planar.structure._limit_positions import limit_positions
     >>> lp = limit_positions(10, 40, 30, 35)
     >>> np.degrees([lp.swing, lp.extreme_angle]).round(4)
     array([45.9719, 18.1324])

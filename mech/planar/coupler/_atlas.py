@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import MAX_COUNT, branch_sign, integer, planar_points, positive_length, real_number
-from mech.planar._fourbar import FourBar
+from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["CouplerDashes", "coupler_dashes"]
 
@@ -78,7 +78,7 @@ def coupler_dashes(a, b, c, d, coupler, *, n=72, branch=1, start=0.0):
 
     Examples
     --------
-    >>> from mech.planar._atlas import coupler_dashes
+    >>> from mech.planar.coupler._atlas import coupler_dashes
     >>> dashes = coupler_dashes(1, 2, 2.5, 3, [0.5 + 0.5j, 1.0 + 1.0j])
     >>> dashes.points.shape, dashes.length.shape, bool(dashes.valid.all())
     ((2, 73), (2, 72), True)

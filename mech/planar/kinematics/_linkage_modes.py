@@ -326,7 +326,7 @@ def _fields(st):
 
 
 def _store_fields(st, values):
-    from mech.planar._linkage import Slide
+    from mech.planar.kinematics._linkage import Slide
 
     for (kind, k), v in values.items():
         if kind in ("P", "V", "A", "W", "AL"):

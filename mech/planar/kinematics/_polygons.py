@@ -2,7 +2,7 @@
 
 The textbook solves a linkage by drawing vector equations such as
 ``v_C = v_B + v_CB`` to scale. Here every vector of such an equation is computed from a
-solved `Linkage` (``mech.planar._linkage``), so the polygon can be drawn exactly, its
+solved `Linkage` (``mech.planar.kinematics._linkage``), so the polygon can be drawn exactly, its
 closure checked, and every length read off for a chosen scale.
 
 Two kinds of equation cover the chapter:
@@ -241,7 +241,7 @@ def relative_motion(sol, point, *, base, link, pivot=None, pivot_link=None):
     --------
     Example 2-10's coupler: ``v_C = v_B + v_CB`` with ``v_C = 0``:
 
-    >>> from mech.planar._polygons import example_2_10
+    >>> from mech.planar.kinematics._polygons import example_2_10
     >>> m = relative_motion(example_2_10(), "C", base="B", link="2", pivot="D", pivot_link="3")
     >>> m.velocity.text
     'v_C = v_B + v_CB'
@@ -310,7 +310,7 @@ def coincident_motion(sol, point, *, carrier, link, pivot):
     --------
     Example 2-9 with unit crank and speed: ``alpha_3 = -2 omega_1**2``:
 
-    >>> from mech.planar._polygons import example_2_9
+    >>> from mech.planar.kinematics._polygons import example_2_9
     >>> m = coincident_motion(example_2_9(), "B", carrier="2", link="3", pivot="C")
     >>> m.acceleration.text
     'a_B3^n + a_B3^t = a_B2 + a_B3B2^k + a_B3B2^r'
@@ -370,7 +370,7 @@ def velocity_polygon(motions):
 
     Examples
     --------
-    >>> from mech.planar._polygons import example_2_10
+    >>> from mech.planar.kinematics._polygons import example_2_10
     >>> sol = example_2_10()
     >>> vp = velocity_polygon([relative_motion(sol, "C", base="B", link="2", pivot="D", pivot_link="3")])
     >>> sorted(vp.vertices), vp.closure < 1e-9
@@ -384,7 +384,7 @@ def acceleration_polygon(motions):
 
     Examples
     --------
-    >>> from mech.planar._polygons import example_2_10
+    >>> from mech.planar.kinematics._polygons import example_2_10
     >>> sol = example_2_10()
     >>> ap = acceleration_polygon([relative_motion(sol, "C", base="B", link="2", pivot="D", pivot_link="3")])
     >>> complex(ap.vertices["c"]).real.__round__(6)
@@ -437,7 +437,7 @@ def velocity_image(sol, link, base, points):
 
     Examples
     --------
-    >>> from mech.planar._polygons import example_2_10
+    >>> from mech.planar.kinematics._polygons import example_2_10
     >>> img = velocity_image(example_2_10(), "2", "B", ["B", "C"])
     >>> float(img.scale), round(float(img.rotation), 12)
     (2.5, 1.570796326795)
@@ -457,7 +457,7 @@ def acceleration_image(sol, link, base, points):
     Example 2-10's link 3 (omega_3 = 0, alpha_3 = 62.5): its image is the link turned by
     90 degrees, so C, D, E stay on one line with ``c'd' = d'e'``:
 
-    >>> from mech.planar._polygons import example_2_10
+    >>> from mech.planar.kinematics._polygons import example_2_10
     >>> img = acceleration_image(example_2_10(), "3", "D", ["C", "D", "E"])
     >>> [complex(t).real.__round__(6) for t in img.tips]
     [-12500.0, 0.0, 12500.0]
@@ -471,7 +471,7 @@ def example_2_10():
     A = 0, B = 100, C = 500, D = 500 - 200j, E = 500 - 400j, F = D + 200 sqrt(3); crank 1
     at 10 rad/s clockwise; links 2 = BC, 3 = CDE, 4 = block at E, 5 = guide EF. Millimetres.
     """
-    from mech.planar._linkage import Linkage
+    from mech.planar.kinematics._linkage import Linkage
 
     F = 500 + 200 * np.sqrt(3) - 200j
     lk = (Linkage({"A": 0, "D": 500 - 200j, "F": F})
@@ -488,7 +488,7 @@ def example_2_9(length=1.0, omega=1.0):
     A = 0, C = sqrt(2) l, crank AB = l at 45 degrees turning clockwise at ``omega``; block 2
     pinned at B slides in the slot of guide 3, perpendicular to AC, at l/sqrt(2) from C.
     """
-    from mech.planar._linkage import Linkage
+    from mech.planar.kinematics._linkage import Linkage
 
     l = float(length)
     lk = (Linkage({"A": 0, "C": np.sqrt(2) * l})

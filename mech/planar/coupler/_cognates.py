@@ -8,7 +8,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import cognates as _gen
 from mech._validate import bool_flag, branch_sign, finite_array, instance, planar_points, positive_length
-from mech.planar._fourbar import FourBar
+from mech.planar.kinematics._fourbar import FourBar
 from mech._pose import Pose
 
 __all__ = ["Cognate", "CognatePose", "Cognates", "TenBarPose", "cognates"]
@@ -124,7 +124,7 @@ class Cognate:
         Examples
         --------
         >>> from mech.planar import FourBar
-        >>> from mech.planar._cognates import cognates
+        >>> from mech.planar.coupler._cognates import cognates
         >>> trio = cognates(FourBar(1, 2, 2.5, 3, coupler=(1, 1)))
         >>> pose = trio.aegk.solve([0.5, 1.0], branch=1)
         >>> pose.P.shape
@@ -257,7 +257,7 @@ class Cognates:
         --------
         >>> import numpy as np
         >>> from mech.planar import FourBar
-        >>> from mech.planar._cognates import cognates
+        >>> from mech.planar.coupler._cognates import cognates
         >>> M = cognates(FourBar(1, 2, 2.5, 3, coupler=(1, 1))).path(np.linspace(0, 6, 4))
         >>> M.shape, bool(np.ptp(M, axis=0).max() < 1e-12)
         ((3, 4), True)
@@ -327,7 +327,7 @@ def cognates(fourbar):
     Examples
     --------
     >>> from mech.planar import FourBar
-    >>> from mech.planar._cognates import cognates
+    >>> from mech.planar.coupler._cognates import cognates
     >>> trio = cognates(FourBar(1, 2, 2.5, 3, coupler=(1, 1)))
     >>> trio.K
     (1.5+1.5j)

@@ -6,7 +6,7 @@ from mech._errors import AssemblyError
 from mech._generated import special_mechanisms as _gen
 from mech._validate import bool_flag, finite_array, positive_length, real_tuple
 from mech._pose import mask_singular_rates, Pose
-from mech.planar._special import _finish, _inputs
+from mech.planar.special._special import _finish, _inputs
 
 __all__ = [
     "EllipticTrammel",
@@ -85,7 +85,7 @@ class EllipticTrammel:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._double_slider import EllipticTrammel
+    >>> from mech.planar.special._double_slider import EllipticTrammel
     >>> trammel = EllipticTrammel(2.0, point=(0.5, 0.0))
     >>> pose = trammel.solve(np.pi / 2)
     >>> np.round(complex(pose.P), 12), trammel.path_axes()
@@ -102,7 +102,7 @@ class EllipticTrammel:
 
         Its slider is B, its auxiliary pin (Fig. 2-22c) is C; the stroke of B is 4a.
 
-        >>> from mech.planar._double_slider import EllipticTrammel
+        >>> from mech.planar.special._double_slider import EllipticTrammel
         >>> EllipticTrammel.from_crank(1.5).stroke()
         6.0
         """
@@ -141,7 +141,7 @@ class EllipticTrammel:
 
         Examples
         --------
-        >>> from mech.planar._double_slider import EllipticTrammel
+        >>> from mech.planar.special._double_slider import EllipticTrammel
         >>> pose = EllipticTrammel(2.0).solve(0.0, order=2, omega=3.0)
         >>> complex(pose.B), complex(pose.aB), float(pose.omega_coupler)
         ((2+0j), (-18+0j), -3.0)
@@ -206,7 +206,7 @@ class ScotchYoke:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._double_slider import ScotchYoke
+    >>> from mech.planar.special._double_slider import ScotchYoke
     >>> pose = ScotchYoke(2.0).solve(np.pi / 2, order=1)
     >>> round(float(pose.x), 12), float(pose.v)
     (0.0, -2.0)
@@ -274,7 +274,7 @@ class TangentMechanism:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._double_slider import TangentMechanism
+    >>> from mech.planar.special._double_slider import TangentMechanism
     >>> pose = TangentMechanism(2.0).solve(np.pi / 4, order=1)
     >>> round(float(pose.h), 12), round(float(pose.v), 12)
     (2.0, 4.0)
@@ -374,7 +374,7 @@ class OldhamCoupling:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._double_slider import OldhamCoupling
+    >>> from mech.planar.special._double_slider import OldhamCoupling
     >>> pose = OldhamCoupling(0.1).solve(np.pi / 4, order=1, omega=10.0)
     >>> round(complex(pose.S).real, 12), float(pose.omega_orbit), float(pose.omega_slider)
     (0.05, 20.0, 10.0)

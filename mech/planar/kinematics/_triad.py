@@ -92,7 +92,7 @@ class TriadSixBar:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._triad import TriadSixBar
+    >>> from mech.planar.kinematics._triad import TriadSixBar
     >>> clamp = TriadSixBar(10, 60, 36, 36, -np.pi / 2, 40, 40, 118 + 41j, 91 - 48j)
     >>> pose = clamp.solve(np.pi / 2, start=(60 + 10j, np.pi / 3))
     >>> bool(pose.valid), round(float(abs(pose.C - pose.B)), 10)

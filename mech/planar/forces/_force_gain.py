@@ -17,7 +17,7 @@ from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal
 from mech._validate import (
     branch_sign, finite_array, instance, option, planar_point, planar_points, positive_length, real_number,
 )
-from mech.planar._linkage import Guide, Linkage, LinkageSolution
+from mech.planar.kinematics._linkage import Guide, Linkage, LinkageSolution
 
 __all__ = [
     "mechanical_advantage",
@@ -123,7 +123,7 @@ def mechanical_advantage(solution, input, output, *, method="velocities"):
     if method == "velocities":
         r_in, r_out = _rate_velocities(solution, s_in), _rate_velocities(solution, s_out)
     else:
-        from mech.planar._instant_centres import centre_velocities
+        from mech.planar.kinematics._instant_centres import centre_velocities
 
         ic = solution.instant_centres()
         refs = [k for k in solution.linkage.links if k != "ground" and np.all(ic[k, "ground"].defined)
@@ -177,7 +177,7 @@ def fourbar_mechanical_advantage(a, b, c, d, theta, *, branch=1, driver="crank")
     >>> round(float(fourbar_mechanical_advantage(30, 70, 60, 80, 1.0)), 9)
     3.852088431
     """
-    from mech.planar._fourbar import FourBar
+    from mech.planar.kinematics._fourbar import FourBar
 
     _driver(driver, ("crank", "rocker"))
     theta = finite_array("theta", theta)
@@ -225,7 +225,7 @@ def slider_crank_mechanical_advantage(a, b, e, theta, *, branch=1, driver="crank
     >>> round(float(slider_crank_mechanical_advantage(30, 100, 0, np.pi / 2)), 9)
     -0.033333333
     """
-    from mech.planar._slider_crank import SliderCrank
+    from mech.planar.kinematics._slider_crank import SliderCrank
 
     _driver(driver, ("crank", "slider"))
     theta = finite_array("theta", theta)
@@ -284,7 +284,7 @@ def fourbar_dead_points(a, b, c, d, *, branch=1):
     >>> [round(float(np.degrees(p)), 4) for p in dp.inputs], dp.collinear
     ([79.7134, 125.6853], ('extended', 'folded'))
     """
-    from mech.planar._fourbar import fourbar_lengths
+    from mech.planar.kinematics._fourbar import fourbar_lengths
 
     # angles only: lengths scaled by a power of two, so no product of two overflows
     a, b, c, d = fourbar_lengths(a, b, c, d)[0]
@@ -341,7 +341,7 @@ def slider_crank_dead_points(a, b, e=0.0, *, branch=1):
     >>> [round(x, 9) for x in dp.inputs], [round(float(np.degrees(t)), 9) for t in dp.theta]
     ([130.0, 70.0], [0.0, -180.0])
     """
-    from mech.planar._slider_crank import SliderCrank
+    from mech.planar.kinematics._slider_crank import SliderCrank
 
     a, b, e = positive_length("a", a), positive_length("b", b), real_number("e", e)
     if a + abs(e) > b:

@@ -280,7 +280,7 @@ class SliderCrank:
         >>> round(float(np.degrees(lim.extreme_angle)), 5), round(lim.stroke, 4)
         (7.75167, 61.3703)
         """
-        from mech.planar._quick_return import time_ratio
+        from mech.planar.structure._quick_return import time_ratio
 
         self._require_turning("limit positions")
         out = [float(v) for v in _gen.slider_crank_limits(*self._unit, self._branch)]
@@ -322,7 +322,7 @@ class SliderCrank:
         >>> round(SliderCrank(30, 100, 20).time_ratio(), 5)
         1.09001
         """
-        from mech.planar._quick_return import time_ratio
+        from mech.planar.structure._quick_return import time_ratio
 
         return float(time_ratio(self.extreme_angle()))
 

@@ -9,7 +9,7 @@ import numpy as np
 
 from mech._generated import special_mechanisms as _gen
 from mech._validate import bool_flag, finite_array, nonnegative_int, positive_length
-from mech.planar._guide_bar import GuideBar
+from mech.planar.kinematics._guide_bar import GuideBar
 from mech._pose import Pose, mask_singular_rates
 from mech._scaling import length_scale
 
@@ -94,7 +94,7 @@ class RotatingGuideBar:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._special import RotatingGuideBar
+    >>> from mech.planar.special._special import RotatingGuideBar
     >>> pose = RotatingGuideBar(1.0, 1.0).solve(np.pi / 2, order=1)   # crank = frame
     >>> round(float(np.degrees(pose.psi)), 12), float(pose.omega_guide)
     (135.0, 0.5)
@@ -144,7 +144,7 @@ class RotatingGuideBar:
 
         Examples
         --------
-        >>> from mech.planar._special import RotatingGuideBar
+        >>> from mech.planar.special._special import RotatingGuideBar
         >>> pose = RotatingGuideBar(2.0, 1.0).solve(0.0, order=2)
         >>> float(pose.psi), float(pose.rho), float(pose.omega_guide)
         (0.0, 1.0, 2.0)
@@ -179,7 +179,7 @@ class RotatingGuideBar:
     def guide_turns_per_crank_turn(self):
         """Turns of the guide per crank turn: 1 for ``a > d``, 1/2 for ``a == d`` (F50).
 
-        >>> from mech.planar._special import RotatingGuideBar
+        >>> from mech.planar.special._special import RotatingGuideBar
         >>> RotatingGuideBar(1.0, 1.0).guide_turns_per_crank_turn()
         0.5
         """
@@ -217,7 +217,7 @@ class SwingingBlock:
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._special import SwingingBlock
+    >>> from mech.planar.special._special import SwingingBlock
     >>> block = SwingingBlock(1.0, 2.0)
     >>> block.kind, round(float(np.degrees(block.swing())), 9)
     ('oscillating', 60.0)
@@ -245,7 +245,7 @@ class SwingingBlock:
         """Block angle ``psi``, rod length ``rho`` and their rates (see `GuideBar.solve`).
 
         >>> import numpy as np
-        >>> from mech.planar._special import SwingingBlock
+        >>> from mech.planar.special._special import SwingingBlock
         >>> float(SwingingBlock(1.0, 2.0).solve(np.pi).rho)
         3.0
         """
@@ -258,7 +258,7 @@ class SwingingBlock:
         """Swing of an oscillating block, ``2 asin(a / d)``; ValueError if it turns.
 
         >>> import numpy as np
-        >>> from mech.planar._special import SwingingBlock
+        >>> from mech.planar.special._special import SwingingBlock
         >>> round(float(np.degrees(SwingingBlock(1.0, 2.0).swing())), 9)
         60.0
         """

@@ -192,7 +192,7 @@ class GuideBar:
         >>> round(GuideBar(150.0, 300.0).time_ratio(), 9)
         2.0
         """
-        from mech.planar._quick_return import time_ratio
+        from mech.planar.structure._quick_return import time_ratio
 
         return float(time_ratio(self.extreme_angle()))
 

@@ -7,7 +7,7 @@ import numpy as np
 
 from mech._generated import instant_centres as _gen
 from mech._validate import finite_array, instance, integer, positive_length
-from mech.planar._fourbar import FourBar
+from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["CentrodeSegment", "CouplerCentrodes", "coupler_centrodes"]
 
@@ -128,7 +128,7 @@ def coupler_centrodes(fourbar, theta):
     Examples
     --------
     >>> from mech.planar import FourBar
-    >>> from mech.planar._centrodes import coupler_centrodes
+    >>> from mech.planar.coupler._centrodes import coupler_centrodes
     >>> cen = coupler_centrodes(FourBar(10, 40, 30, 35), [0.7, 2.0])
     >>> cen.valid.tolist(), cen.at_infinity.tolist()
     ([True, True], [False, False])

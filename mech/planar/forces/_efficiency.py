@@ -16,7 +16,7 @@ from mech._generated.efficiency import push_rod as _push_rod
 from mech._generated.efficiency import spreading_wedge, wedge_press as _wedge_press
 from mech._generated.friction import eccentric_clamp
 from mech._validate import bool_flag, finite_array
-from mech.planar._friction import _nonnegative, _out, _positive
+from mech.planar.forces._friction import _nonnegative, _out, _positive
 
 __all__ = [
     "WedgePress",
@@ -60,7 +60,7 @@ def efficiency(useful, driving):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import efficiency
+    >>> from mech.planar.forces._efficiency import efficiency
     >>> efficiency(80.0, 100.0)
     0.8
     """
@@ -92,7 +92,7 @@ def efficiency_from_drive(ideal, actual):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import efficiency_from_drive
+    >>> from mech.planar.forces._efficiency import efficiency_from_drive
     >>> efficiency_from_drive(30.0, 40.0)
     0.75
     """
@@ -124,7 +124,7 @@ def efficiency_from_resistance(actual, ideal):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import efficiency_from_resistance
+    >>> from mech.planar.forces._efficiency import efficiency_from_resistance
     >>> efficiency_from_resistance(45.0, 50.0)
     0.9
     """
@@ -155,7 +155,7 @@ def series_efficiency(etas):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import series_efficiency
+    >>> from mech.planar.forces._efficiency import series_efficiency
     >>> round(series_efficiency([0.95, 0.9, 0.8]), 4)
     0.684
     """
@@ -189,7 +189,7 @@ def parallel_efficiency(etas, powers):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import parallel_efficiency
+    >>> from mech.planar.forces._efficiency import parallel_efficiency
     >>> round(parallel_efficiency([0.9, 0.6], [3.0, 1.0]), 4)
     0.825
     """
@@ -231,7 +231,7 @@ def is_self_locking(eta):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import is_self_locking
+    >>> from mech.planar.forces._efficiency import is_self_locking
     >>> is_self_locking([-0.1, 0.0, 0.4]).tolist()
     [True, True, False]
     """
@@ -284,7 +284,7 @@ def wedge_press(lam, phi):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import wedge_press
+    >>> from mech.planar.forces._efficiency import wedge_press
     >>> w = wedge_press(np.radians(10), np.arctan(0.1))
     >>> round(float(w.efficiency), 6), round(float(w.reverse_efficiency), 6), bool(w.reverse_locks)
     (0.449444, -0.140701, True)
@@ -336,7 +336,7 @@ def spreading_wedge_force(Q, theta, phi, base_friction=True):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import spreading_wedge_force
+    >>> from mech.planar.forces._efficiency import spreading_wedge_force
     >>> round(float(spreading_wedge_force(1000.0, np.radians(15), np.radians(12))), 2)
     1142.82
     """
@@ -382,7 +382,7 @@ def push_rod(mu, offset, length):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import push_rod
+    >>> from mech.planar.forces._efficiency import push_rod
     >>> eta, L_min = push_rod(0.2, 100.0, 80.0)
     >>> round(float(eta), 6), round(float(L_min), 6)
     (0.5, 40.0)
@@ -406,7 +406,7 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
     r_disc : array_like
         Disc radius, > 0.
     rho_pin : array_like
-        Friction-circle radius of the pivot, >= 0 (:func:`~mech.planar._friction.friction_circle`).
+        Friction-circle radius of the pivot, >= 0 (:func:`~mech.planar.forces._friction.friction_circle`).
     phi : array_like
         Friction angle disc-workpiece, radians, >= 0.
 
@@ -426,7 +426,7 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import eccentric_clamp_max_angle
+    >>> from mech.planar.forces._efficiency import eccentric_clamp_max_angle
     >>> round(float(np.degrees(eccentric_clamp_max_angle(10.0, 40.0, 1.0, np.arctan(0.15)))), 3)
     52.428
     """
@@ -465,7 +465,7 @@ def eccentric_clamp_locks(alpha, e, r_disc, rho_pin, phi):
 
     Examples
     --------
-    >>> from mech.planar._efficiency import eccentric_clamp_locks
+    >>> from mech.planar.forces._efficiency import eccentric_clamp_locks
     >>> eccentric_clamp_locks(np.radians([40, 60]), 10.0, 40.0, 1.0, np.arctan(0.15)).tolist()
     [True, False]
     """

@@ -2,7 +2,7 @@
 
 The formulas come from ``derivations/planar/pressure_angle.md`` (F49 to F59) through
 ``mech._generated.pressure_angle``; the four-bar's angle BCD of eq. (2-30) comes from
-``mech.planar._transmission``.
+``mech.planar.forces._transmission``.
 """
 
 from __future__ import annotations
@@ -17,9 +17,9 @@ from mech._scaling import length_scale
 from mech._validate import (
     bool_flag, finite_array, instance, known_name, planar_points, positive_length, real_number,
 )
-from mech.planar._grashof import grashof
-from mech.planar._transmission import _lengths as _fourbar_lengths, check_assembled
-from mech.planar._linkage import LinkageSolution
+from mech.planar.structure._grashof import grashof
+from mech.planar.forces._transmission import _lengths as _fourbar_lengths, check_assembled
+from mech.planar.kinematics._linkage import LinkageSolution
 
 __all__ = [
     "pressure_angle",
@@ -64,7 +64,7 @@ def _force_direction(solution, joint, force):
 
 def _follower_velocity(solution, joint, follower):
     """Velocity of the point of `follower` at `joint`, i omega (J - P_f0), by the centres."""
-    from mech.planar._instant_centres import centre_velocities
+    from mech.planar.kinematics._instant_centres import centre_velocities
 
     ic = solution.instant_centres()
     cranks = [k for k in solution.omegas if np.all(ic[k, "ground"].defined)

@@ -8,7 +8,7 @@ from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
 from mech._validate import bool_flag, branch_sign, motion_inputs, nonnegative_number, positive_length, real_tuple
 from mech._pose import Pose
-from mech.planar._fourbar_change import change_point_rates, kite_pose
+from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
 
 __all__ = ["FourBar", "FourBarPose", "fourbar_lengths"]
 
@@ -130,7 +130,7 @@ class FourBar:
     branches differ; as sin(theta/2) has period 4 pi, a linkage whose branch changes
     sides once per turn comes back to its starting side after two turns. At the meeting
     point the rates are their limits along the branch, found from factored formulas
-    (module `mech.planar._fourbar_change`), so they are finite and continuous.
+    (module `mech.planar.kinematics._fourbar_change`), so they are finite and continuous.
 
     *Degenerate pose.* The kite a = d, b = c (the rhombus included) has its crank pin B
     on the pivot D at theta = 0. The pose is assembled there: C is the limit along the
@@ -337,7 +337,7 @@ class FourBar:
         >>> round(float(np.degrees(lp.swing)), 4), round(float(lp.time_ratio), 5)
         (45.9719, 1.22404)
         """
-        from mech.planar._limit_positions import limit_positions
+        from mech.planar.structure._limit_positions import limit_positions
 
         return limit_positions(self._a, self._b, self._c, self._d, branch=self._branch)
 
@@ -350,7 +350,7 @@ class FourBar:
         >>> round(float(np.degrees(FourBar(30, 70, 60, 80).transmission_angle(0.0))), 4)
         44.4153
         """
-        from mech.planar._transmission import transmission_angle
+        from mech.planar.forces._transmission import transmission_angle
 
         return transmission_angle(self._a, self._b, self._c, self._d, theta)
 
@@ -364,6 +364,6 @@ class FourBar:
         >>> round(float(np.degrees(gamma_min)), 4)
         44.4153
         """
-        from mech.planar._transmission import min_transmission_angle
+        from mech.planar.forces._transmission import min_transmission_angle
 
         return min_transmission_angle(self._a, self._b, self._c, self._d)

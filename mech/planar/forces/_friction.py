@@ -99,7 +99,7 @@ def friction_angle(mu):
 
     Examples
     --------
-    >>> from mech.planar._friction import friction_angle
+    >>> from mech.planar.forces._friction import friction_angle
     >>> round(float(np.degrees(friction_angle(0.1))), 5)
     5.71059
     """
@@ -140,7 +140,7 @@ def total_reaction(normal, velocity, mu, normal_force=None):
 
     Examples
     --------
-    >>> from mech.planar._friction import total_reaction
+    >>> from mech.planar.forces._friction import total_reaction
     >>> d = total_reaction(1j, 1.0, 0.1)       # block sliding right on a floor
     >>> round(float(np.degrees(np.angle(d))), 4)
     95.7106
@@ -188,7 +188,7 @@ def slider_state(alpha, phi):
 
     Examples
     --------
-    >>> from mech.planar._friction import slider_state
+    >>> from mech.planar.forces._friction import slider_state
     >>> slider_state([0.05, 0.2], 0.1).tolist()
     ['decelerates or stays at rest', 'accelerates']
     """
@@ -241,7 +241,7 @@ def incline_forces(Q, incline, mu, push_angle=None):
 
     Examples
     --------
-    >>> from mech.planar._friction import incline_forces
+    >>> from mech.planar.forces._friction import incline_forces
     >>> f = incline_forces(100.0, np.radians(30), 0.2)
     >>> round(float(f.raising), 3), round(float(f.lowering), 3)
     (87.883, 33.829)
@@ -279,7 +279,7 @@ def vgroove_mu(mu, half_angle):
 
     Examples
     --------
-    >>> from mech.planar._friction import vgroove_mu
+    >>> from mech.planar.forces._friction import vgroove_mu
     >>> round(float(vgroove_mu(0.1, np.radians(30))), 6)
     0.2
     """
@@ -316,7 +316,7 @@ def curved_contact_mu(mu, k):
 
     Examples
     --------
-    >>> from mech.planar._friction import curved_contact_mu
+    >>> from mech.planar.forces._friction import curved_contact_mu
     >>> round(float(curved_contact_mu(0.1, 1.2)), 6)
     0.12
     """
@@ -355,7 +355,7 @@ def journal_mu(mu, condition="run-in"):
 
     Examples
     --------
-    >>> from mech.planar._friction import journal_mu
+    >>> from mech.planar.forces._friction import journal_mu
     >>> round(float(journal_mu(0.1, "new")), 5), round(float(journal_mu(0.1)), 5)
     (0.15708, 0.12732)
     """
@@ -393,7 +393,7 @@ def friction_circle(mu0, r):
 
     Examples
     --------
-    >>> from mech.planar._friction import friction_circle
+    >>> from mech.planar.forces._friction import friction_circle
     >>> round(float(friction_circle(0.2, 12.5)), 6)
     2.5
     """
@@ -427,7 +427,7 @@ def journal_state(h, rho):
 
     Examples
     --------
-    >>> from mech.planar._friction import journal_state
+    >>> from mech.planar.forces._friction import journal_state
     >>> journal_state([1.0, 2.5, 3.0], 2.5).tolist()
     ['decelerates or stays at rest', 'keeps its state', 'accelerates']
     """
@@ -466,7 +466,7 @@ def two_force_tilt_angle(length, rho_a, rho_b, cross=True):
 
     Examples
     --------
-    >>> from mech.planar._friction import two_force_tilt_angle
+    >>> from mech.planar.forces._friction import two_force_tilt_angle
     >>> round(float(np.degrees(two_force_tilt_angle(100.0, 2.5, 2.5))), 4)
     2.866
     """
@@ -521,7 +521,7 @@ def thrust_friction_moment(Q, mu, r_out, r_in=0.0, *, condition="new", cone_half
 
     Examples
     --------
-    >>> from mech.planar._friction import thrust_friction_moment
+    >>> from mech.planar.forces._friction import thrust_friction_moment
     >>> round(float(thrust_friction_moment(1.0, 0.3, 100.0, 50.0, condition="run-in")), 6)
     22.5
     """
@@ -561,7 +561,7 @@ def collar_friction_radius(r_out, r_in=0.0, condition="new"):
 
     Examples
     --------
-    >>> from mech.planar._friction import collar_friction_radius
+    >>> from mech.planar.forces._friction import collar_friction_radius
     >>> round(float(collar_friction_radius(25.0, 21.0)), 4), float(collar_friction_radius(25.0, 21.0, "run-in"))
     (23.058, 23.0)
     """
@@ -599,7 +599,7 @@ def rolling_mill_max_thickness(diameter, gap, mu):
 
     Examples
     --------
-    >>> from mech.planar._friction import rolling_mill_max_thickness
+    >>> from mech.planar.forces._friction import rolling_mill_max_thickness
     >>> round(float(rolling_mill_max_thickness(1200.0, 25.0, 0.3)), 4)
     75.6085
     """

@@ -18,7 +18,7 @@ import numpy as np
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import statics as _g
 from mech._validate import finite_array, instance, integer, nonnegative_number, planar_points
-from mech.planar._linkage import LinkageSolution
+from mech.planar.kinematics._linkage import LinkageSolution
 
 __all__ = ["StaticForces", "static_forces", "as_linkage"]
 
@@ -50,9 +50,9 @@ def as_linkage(mechanism):
     >>> lk.groups
     ('crank crank', 'RRR coupler-rocker')
     """
-    from mech.planar._fourbar import FourBar
-    from mech.planar._linkage import Guide, Linkage
-    from mech.planar._slider_crank import SliderCrank
+    from mech.planar.kinematics._fourbar import FourBar
+    from mech.planar.kinematics._linkage import Guide, Linkage
+    from mech.planar.kinematics._slider_crank import SliderCrank
 
     if isinstance(mechanism, FourBar):
         lk = (Linkage({"A": 0.0, "D": mechanism.d})

@@ -270,7 +270,7 @@ def instant_centres(links, direct, *, undefined="raise"):
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar._instant_centres import instant_centres
+    >>> from mech.planar.kinematics._instant_centres import instant_centres
     >>> B, C = 3 + 4j, 10 + 6j              # a four-bar with A = 0, D = 8
     >>> ic = instant_centres(4, {(1, 4): 0j, (1, 2): B, (2, 3): C, (3, 4): 8 + 0j})
     >>> len(ic), [step.pair for step in ic.construction[4:]]
@@ -440,7 +440,7 @@ def omega_ratio(centres, i, j, frame):
 
     Examples
     --------
-    >>> from mech.planar._instant_centres import instant_centres, omega_ratio
+    >>> from mech.planar.kinematics._instant_centres import instant_centres, omega_ratio
     >>> ic = instant_centres(4, {(1, 4): 0j, (1, 2): 3 + 4j, (2, 3): 10 + 6j, (3, 4): 8 + 0j})
     >>> round(float(omega_ratio(ic, 3, 1, 4)), 12)     # P13 = -11: (-11 - 0) / (-11 - 8)
     0.578947368421
@@ -519,7 +519,7 @@ def centre_velocities(centres, frame, driver, omega):
 
     Examples
     --------
-    >>> from mech.planar._instant_centres import instant_centres, prismatic, centre_velocities
+    >>> from mech.planar.kinematics._instant_centres import instant_centres, prismatic, centre_velocities
     >>> ic = instant_centres(4, {(1, 4): 0j, (1, 2): 3 + 4j, (2, 3): 8 + 0j, (3, 4): prismatic(1)})
     >>> motion = centre_velocities(ic, frame=4, driver=1, omega=2.0)
     >>> round(float(motion.omega[2]), 12), round(complex(motion.point_velocity(3, 0j)).real, 12)

@@ -15,7 +15,7 @@ import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import assur_groups as _g
-from mech.planar import _linkage_modes
+from mech.planar.kinematics import _linkage_modes
 from mech._validate import (
     bool_flag, branch_sign, finite_array, integer, known_name, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number,
 )
@@ -473,7 +473,7 @@ class Linkage:
         """Solve `steps` (in the unit of `_unit_steps`); return the state and the failures.
 
         ``modes`` maps each two-mode group to its mode and where its radicand may count as
-        zero (`mech.planar._linkage_modes.modes`).
+        zero (`mech.planar.kinematics._linkage_modes.modes`).
         """
         state = _State(order, shape)
         state.modes = modes
@@ -880,7 +880,7 @@ def _cx(x, y):
 def _signed_root(st, step, disc):
     """The root of a group's radicand with the sign of its mode, and where it assembles.
 
-    The mode comes from `mech.planar._linkage_modes.modes`; next to a change point a
+    The mode comes from `mech.planar.kinematics._linkage_modes.modes`; next to a change point a
     radicand that rounding made slightly negative counts as zero.
     """
     sign, near = st.modes.get(step.label, (step.get("branch"), None))
@@ -1043,7 +1043,7 @@ class LinkageSolution:
         ValueError
             If a pose was not assembled (its centres do not exist).
         """
-        from mech.planar._instant_centres import instant_centres, prismatic, revolute
+        from mech.planar.kinematics._instant_centres import instant_centres, prismatic, revolute
 
         if not np.all(self.valid):
             first = np.unravel_index(np.flatnonzero(~self.valid)[0], self.valid.shape)

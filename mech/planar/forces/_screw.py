@@ -15,7 +15,7 @@ from mech._generated.efficiency import screw_geometry, screw_jack as _screw_jack
 from mech._validate import (
     finite_array, integer, nonnegative_number, option, positive_length, real_number, real_tuple,
 )
-from mech.planar._friction import _nonnegative, _out, _positive, collar_friction_radius
+from mech.planar.forces._friction import _nonnegative, _out, _positive, collar_friction_radius
 
 __all__ = ["ScrewJack", "ScrewResult", "lead_angle", "thread_friction_angle", "screw_efficiency"]
 
@@ -49,7 +49,7 @@ def lead_angle(pitch, d2, starts=1):
 
     Examples
     --------
-    >>> from mech.planar._screw import lead_angle
+    >>> from mech.planar.forces._screw import lead_angle
     >>> round(float(np.degrees(lead_angle(4.0, 22.0))), 4)
     3.3123
     """
@@ -87,7 +87,7 @@ def thread_friction_angle(mu, flank_angle=0.0):
 
     Examples
     --------
-    >>> from mech.planar._screw import thread_friction_angle
+    >>> from mech.planar.forces._screw import thread_friction_angle
     >>> round(float(np.degrees(thread_friction_angle(0.1, np.radians(30)))), 4)
     6.5868
     """
@@ -153,7 +153,7 @@ def screw_efficiency(Q, d2, lam, phi_v, mu_c=0.0, r_c=0.0):
 
     Examples
     --------
-    >>> from mech.planar._screw import screw_efficiency
+    >>> from mech.planar.forces._screw import screw_efficiency
     >>> s = screw_efficiency(1.0, 22.0, np.arctan(4 / (22 * np.pi)), np.arctan(0.1))
     >>> round(float(s.efficiency), 4), bool(s.self_locking)
     (0.3644, True)
@@ -197,7 +197,7 @@ class ScrewJack:
 
     Examples
     --------
-    >>> from mech.planar._screw import ScrewJack
+    >>> from mech.planar.forces._screw import ScrewJack
     >>> jack = ScrewJack(22.0, 4.0, 0.1, collar=(50.0, 42.0), collar_condition="run-in")
     >>> r = jack.solve(1.0)
     >>> round(float(r.efficiency), 4), round(30000.0 / float(r.raise_torque), 1)
