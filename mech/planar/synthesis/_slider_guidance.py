@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import MAX_COUNT, _show, instance, integer, nonnegative_number, planar_point
+from mech._validate import MAX_COUNT, _show, finite_array, instance, integer, nonnegative_number, planar_point
 from mech.planar._linkage import Guide, Linkage
 from mech.planar.synthesis._displacement import pose_set
 from mech.planar.synthesis._guidance import Dyad
@@ -352,7 +352,7 @@ class GuidanceSliderCrank:
 
     def coupler_poses(self, theta_input):
         """The coupler's pose ``(theta, d)`` in the task frame at crank angles `theta_input`."""
-        sol = self.linkage.solve(theta_input)
+        sol = self.linkage.solve(finite_array("theta_input", theta_input))
         return _body_pose(sol, self.crank, self.slider)
 
 
