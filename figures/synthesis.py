@@ -164,3 +164,53 @@ def guidance_fourbar_figure(theta, d, A, D, B, C, path, *, length, ax=None):
     ax.annotate("$C_1$", (C[0].real, C[0].imag), xytext=(6, 4), textcoords="offset points")
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return ax
+
+
+__all__ += ["guidance_slider_crank_figure"]
+
+
+def guidance_slider_crank_figure(theta, d, A, B, C, line_point, direction, path, *, length,
+                                 circles=(), ax=None):
+    """Draw a guidance slider-crank at each pose, its guide, and the path of the reference point.
+
+    Parameters
+    ----------
+    theta, d : array_like, shape (n,)
+        The poses, as in `poses_figure`.
+    A : complex
+        The crank's fixed pivot.
+    B, C : array_like of complex, shape (n,)
+        The crank pin and the block pin at the poses.
+    line_point, direction : complex
+        A point of the guide and its unit direction.
+    path : array_like of complex, shape (m,)
+        The reference point over the motion from the first pose to the last.
+    length : float
+        Length of the drawn reference lines.
+    circles : sequence of (complex, float), optional
+        Slider circles (centre, radius) already placed in the ground frame, drawn dashed.
+    """
+    ax = poses_figure(theta, d, length=length, ax=ax)
+    B, C, d = (np.asarray(v, dtype=complex) for v in (B, C, d))
+    path = np.asarray(path, dtype=complex)
+    for k, (centre, radius) in enumerate(circles):
+        ring = centre + radius * np.exp(1j * np.linspace(0.0, 2.0 * np.pi, 361))
+        ax.plot(ring.real, ring.imag, "--", color=_DYAD_COLOURS[(k + 2) % len(_DYAD_COLOURS)], lw=0.9,
+                label=f"slider circle {k + 1} (pose 1)")
+    s = np.real(np.conj(direction) * (C - line_point))
+    span = s.max() - s.min()
+    ends = line_point + direction * np.array([s.min() - 0.3 * span, s.max() + 0.3 * span])
+    ax.plot(ends.real, ends.imag, "-", color="grey", lw=3.0, alpha=0.5, label="guide")
+    ax.plot(path.real, path.imag, "-", color="tab:red", lw=1.2, alpha=0.8, label="path of the reference point")
+    for k, (b, c, p) in enumerate(zip(B, C, d)):
+        alpha = 1.0 if k == 0 else 0.45
+        ax.plot([A.real, b.real, c.real], [A.imag, b.imag, c.imag], "-o",
+                color="tab:blue", lw=2.0 if k == 0 else 1.0, ms=4, alpha=alpha)
+        ax.fill([b.real, c.real, p.real], [b.imag, c.imag, p.imag], color="tab:blue", alpha=0.12)
+        ax.plot(c.real, c.imag, "s", mfc="none", mec="tab:blue", ms=12, mew=1.5, alpha=alpha)
+    ax.plot(A.real, A.imag, "k^", ms=11)
+    ax.annotate("A", (A.real, A.imag), xytext=(6, -12), textcoords="offset points", fontweight="bold")
+    ax.annotate("$B_1$", (B[0].real, B[0].imag), xytext=(-16, 4), textcoords="offset points")
+    ax.annotate("$C_1$", (C[0].real, C[0].imag), xytext=(6, 4), textcoords="offset points")
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    return ax

@@ -1089,6 +1089,41 @@ RECORDS.update({
 })
 
 
+# slider (point-on-line) dyads and guidance slider-cranks
+_ST = np.array([0.2, 0.9, 1.6, 2.5])                 # a slider-crank a = 1, b = 3, e = 0.5 (docstring)
+_SB = np.exp(1j * _ST)
+_SC = _SB.real + np.sqrt(9 - (0.5 - _SB.imag) ** 2) + 0.5j
+_STH = np.angle(_SC - _SB)
+
+
+def _slider_crank_design():
+    return sy.guidance_slider_crank(_STH[:3], _SB[:3], sy.dyad_for_circle_point(_STH[:3], _SB[:3], 0.0),
+                                    sy.slider_dyad_for_point(_STH[:3], _SB[:3], 3.0))
+
+
+CASES.update({
+    "planar.synthesis.slider_dyad_for_point": E(lambda: sy.slider_dyad_for_point,
+                                                {"theta": "real", "d": "point", "slider_point": "point1",
+                                                 "rtol": "scalar"},
+                                                theta=_STH[:3], d=_SB[:3], slider_point=3.0, rtol=1e-9),
+    "planar.synthesis.slider_point_circle": E(lambda: sy.slider_point_circle, {"theta": "real", "d": "point"},
+                                              theta=_STH[:3], d=_SB[:3]),
+    "planar.synthesis.SliderCircle.points": E(lambda: sy.slider_point_circle(_STH[:3], _SB[:3]).points,
+                                              {"n": "count"}, n=12),
+    "planar.synthesis.slider_dyads": E(lambda: sy.slider_dyads, {"theta": "real", "d": "point", "rtol": "scalar"},
+                                       theta=_STH, d=_SB, rtol=1e-9),
+    "planar.synthesis.guidance_slider_crank": E(
+        lambda: sy.guidance_slider_crank,
+        {"theta": "real", "d": "point", "crank": "instance", "slider": "instance", "rtol": "scalar"},
+        theta=_STH[:3], d=_SB[:3], crank=sy.dyad_for_circle_point(_STH[:3], _SB[:3], 0.0),
+        slider=sy.slider_dyad_for_point(_STH[:3], _SB[:3], 3.0), rtol=1e-9),
+    "planar.synthesis.GuidanceSliderCrank.coupler_poses": E(lambda: _slider_crank_design().coupler_poses,
+                                                            {"theta_input": "real"}, theta_input=[0.2, 0.5]),
+})
+RECORDS.update({f"planar.synthesis.{n}": "result record built by the package"
+                for n in ("SliderDyad", "SliderCircle", "GuidanceSliderCrank")})
+
+
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():
     """Qualified names of every public function, class and public method of a public class."""

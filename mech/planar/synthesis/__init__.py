@@ -75,3 +75,19 @@ __all__ = [
     "PATH_VARIABLES", "CouplerPathDesign", "SteeringTrapezoid", "path_synthesis_model",
     "steering_trapezoid_model",
 ]
+
+# slider (point-on-line) dyads and guidance slider-cranks
+from mech.planar.synthesis._slider_guidance import (  # noqa: E402
+    GuidanceSliderCrank,
+    SliderCircle,
+    SliderDyad,
+    guidance_slider_crank,
+    slider_dyad_for_point,
+    slider_dyads,
+    slider_point_circle,
+)
+
+__all__ += [
+    "GuidanceSliderCrank", "SliderCircle", "SliderDyad", "guidance_slider_crank",
+    "slider_dyad_for_point", "slider_dyads", "slider_point_circle",
+]
