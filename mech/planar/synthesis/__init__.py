@@ -54,12 +54,23 @@ from mech.planar.synthesis._quick_return_design import (
     simulate_quick_return,
     slider_crank_family,
 )
+from mech.planar.synthesis._slider_guidance import (
+    GuidanceSliderCrank,
+    SliderCircle,
+    SliderDyad,
+    guidance_slider_crank,
+    slider_dyad_for_point,
+    slider_dyads,
+    slider_point_circle,
+)
 
 __all__ = [
     # displacements (2-31)-(2-37) and rigid-body guidance
     "displacement_matrix", "pole", "Dyad", "dyad_for_circle_point", "dyad_for_centre_point",
     "BurmesterCurve", "circle_point_curve", "BurmesterPoints", "burmester",
     "GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars",
+    "SliderDyad", "slider_dyad_for_point", "SliderCircle", "slider_point_circle", "slider_dyads",
+    "GuidanceSliderCrank", "guidance_slider_crank",
     # function generation (2-43)-(2-45)
     "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
     "least_squares", "lengths_from_coefficients", "precision_pairs",
@@ -74,20 +85,4 @@ __all__ = [
     "DesignModel", "OptimisationResult", "grid_search", "penalty_method", "scipy_minimize",
     "PATH_VARIABLES", "CouplerPathDesign", "SteeringTrapezoid", "path_synthesis_model",
     "steering_trapezoid_model",
-]
-
-# slider (point-on-line) dyads and guidance slider-cranks
-from mech.planar.synthesis._slider_guidance import (  # noqa: E402
-    GuidanceSliderCrank,
-    SliderCircle,
-    SliderDyad,
-    guidance_slider_crank,
-    slider_dyad_for_point,
-    slider_dyads,
-    slider_point_circle,
-)
-
-__all__ += [
-    "GuidanceSliderCrank", "SliderCircle", "SliderDyad", "guidance_slider_crank",
-    "slider_dyad_for_point", "slider_dyads", "slider_point_circle",
 ]

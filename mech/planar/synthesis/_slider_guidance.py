@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import MAX_COUNT, _show, finite_array, instance, integer, nonnegative_number, planar_point
-from mech.planar._linkage import Guide, Linkage
+from mech.planar.kinematics._linkage import Guide, Linkage
 from mech.planar.synthesis._displacement import pose_set
 from mech.planar.synthesis._guidance import Dyad
 
