@@ -16,13 +16,14 @@ from mech.planar.synthesis._function_generation import (
     precision_pairs,
 )
 from mech.planar.synthesis._guidance import (
+    BurmesterCurve,
     BurmesterPoints,
     Dyad,
     burmester,
+    circle_point_curve,
     dyad_for_centre_point,
     dyad_for_circle_point,
 )
-from mech.planar.synthesis._guidance_curve import BurmesterCurve, circle_point_curve
 from mech.planar.synthesis._guidance_fourbar import GuidanceFourBar, GuidanceSynthesis, guidance_fourbars
 from mech.planar.synthesis._optimisation import DesignModel, OptimisationResult, grid_search, scipy_minimize
 from mech.planar.synthesis._optimisation_examples import (
