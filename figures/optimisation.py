@@ -1,5 +1,6 @@
 """Figures of ``book/synthesis/optimisation.md``: convergence curves, the steering trapezoid's
-output against the ideal, and a path-synthesis four-bar with its coupler curve.
+output against the ideal, a path-synthesis four-bar with its coupler curve, and the
+illustrations of Figs. 2-110 (a constrained optimum) and 2-113 (barrier functions).
 Nothing runs at import; Matplotlib is imported by the functions."""
 
 import numpy as np
@@ -93,3 +94,59 @@ def path_design(designs, points, ax=None, *, samples=1440):
     ax.legend(fontsize=8, loc="lower right")
     return ax
 
+
+
+__all__ += ["constrained_optimum", "barrier_curves"]
+
+
+def constrained_optimum(f, g, h, optima, box, ax=None, *, n=301):
+    """Contours of ``f``, the feasible region of ``g <= 0``, the curve ``h = 0`` and the optima
+    (like Fig. 2-110). ``f``, ``g``, ``h`` take arrays of points ``(..., 2)``; ``optima`` is a
+    ``{label: (x1, x2)}`` mapping; ``box`` is ``[(lo, hi), (lo, hi)]``."""
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6.0, 5.5))
+    (x0, x1), (y0, y1) = box
+    X, Y = np.meshgrid(np.linspace(x0, x1, n), np.linspace(y0, y1, n))
+    pts = np.stack([X, Y], axis=-1)
+    F = f(pts)
+    feasible = np.all(g(pts) <= 0.0, axis=-1)
+    ax.contourf(X, Y, feasible.astype(float), levels=[0.5, 1.5], colors=["tab:green"], alpha=0.15)
+    cs = ax.contour(X, Y, F, levels=[0.25, 0.5, 1.0, 2.25, 4.0, 6.25, 9.0], colors="grey", linewidths=0.8)
+    ax.clabel(cs, fontsize=7, fmt="%g")
+    ax.contour(X, Y, h(pts)[..., 0], levels=[0.0], colors="tab:red", linewidths=1.5)
+    for label, (u, v) in optima.items():
+        ax.plot(u, v, "ko", ms=5)
+        ax.annotate(label, (u, v), xytext=(5, 5), textcoords="offset points", fontweight="bold")
+    ax.plot([], [], "-", color="tab:red", label="$h(x) = 0$")
+    ax.fill([], [], color="tab:green", alpha=0.15, label="$g_i(x) \\leq 0$")
+    ax.plot([], [], "-", color="grey", lw=0.8, label="contours of $f$")
+    ax.set_xlabel("$x_1$")
+    ax.set_ylabel("$x_2$")
+    ax.set_aspect("equal")
+    ax.legend(fontsize=8, loc="upper left")
+    return ax
+
+
+def barrier_curves(x, curves, minimisers, ax=None, *, objective=None):
+    """Penalty functions phi(x, r) for several r, with their minimisers (like Fig. 2-113).
+
+    ``curves`` maps a label to phi over ``x``; ``minimisers`` maps the same labels to
+    ``(x_min, phi_min)``; ``objective``, if given, is f over ``x``, drawn dashed."""
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6.0, 4.0))
+    if objective is not None:
+        ax.plot(x, objective, "k--", lw=1.0, label="$f(x) = x$")
+    for label, phi in curves.items():
+        line, = ax.plot(x, phi, lw=1.3, label=label)
+        u, v = minimisers[label]
+        ax.plot(u, v, "o", color=line.get_color(), ms=5)
+    ax.axvline(1.0, color="grey", lw=3, alpha=0.35)
+    ax.set_xlabel("$x$")
+    ax.set_ylabel(r"$\phi(x, r)$")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.25)
+    return ax

@@ -214,3 +214,99 @@ def guidance_slider_crank_figure(theta, d, A, B, C, line_point, direction, path,
     ax.annotate("$C_1$", (C[0].real, C[0].imag), xytext=(6, 4), textcoords="offset points")
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return ax
+
+
+__all__ += ["two_position_figure", "rocker_slider_figure"]
+
+
+def two_position_figure(A, D, B, C, sweep_B, sweep_C, *, x0, ax=None):
+    """Draw a two-position guidance four-bar (exercise 2-27): bisectors, frame line, motion.
+
+    Parameters
+    ----------
+    A, D : complex
+        Fixed pivots.
+    B, C : array_like of complex, shape (2,)
+        The moving hinges in the two positions (the body is the bar B C, drawn thick).
+    sweep_B, sweep_C : array_like of complex, shape (m,)
+        B and C over the motion from the first position to the second (from the analysis).
+    x0 : float
+        The vertical frame line that carries A and D.
+    """
+    ax = _axes(ax, (7.0, 6.0))
+    B, C = np.asarray(B, dtype=complex), np.asarray(C, dtype=complex)
+    sweep_B, sweep_C = np.asarray(sweep_B, dtype=complex), np.asarray(sweep_C, dtype=complex)
+    pts = np.concatenate([B, C, [A, D]])
+    lo, hi = pts.imag.min(), pts.imag.max()
+    pad = 0.15 * (hi - lo)
+    ax.plot([x0, x0], [lo - pad, hi + pad], "-", color="grey", lw=4, alpha=0.35, label=f"frame line x = {x0:g}")
+    for P, Q, pivot, colour in ((B[0], B[1], A, "tab:blue"), (C[0], C[1], D, "tab:orange")):
+        mid = 0.5 * (P + Q)
+        ax.plot([mid.real, pivot.real], [mid.imag, pivot.imag], ":", color=colour, lw=1.2)
+        ax.plot([P.real, Q.real], [P.imag, Q.imag], ":", color=colour, lw=0.8, alpha=0.6)
+    ax.plot(sweep_B.real, sweep_B.imag, "-", color="tab:blue", lw=1.0, alpha=0.7, label="path of B")
+    ax.plot(sweep_C.real, sweep_C.imag, "-", color="tab:orange", lw=1.0, alpha=0.7, label="path of C")
+    for k, (b, c) in enumerate(zip(B, C)):
+        alpha = 1.0 if k == 0 else 0.55
+        ax.plot([A.real, b.real], [A.imag, b.imag], "-o", color="tab:blue", lw=1.6, ms=4, alpha=alpha)
+        ax.plot([D.real, c.real], [D.imag, c.imag], "-o", color="tab:orange", lw=1.6, ms=4, alpha=alpha)
+        ext = 0.25 * (c - b)
+        ax.plot([(b - ext).real, (c + ext).real], [(b - ext).imag, (c + ext).imag], "-", color="black",
+                lw=6, alpha=0.35 * alpha + 0.1, solid_capstyle="butt",
+                label="door, closed (1) and open (2)" if k == 0 else None)
+        ax.annotate(f"$B_{k + 1}$", (b.real, b.imag), xytext=(-18, 4), textcoords="offset points")
+        ax.annotate(f"$C_{k + 1}$", (c.real, c.imag), xytext=(-18, -12), textcoords="offset points")
+    for name, z in (("A", A), ("D", D)):
+        ax.plot(z.real, z.imag, "k^", ms=11)
+        ax.annotate(name, (z.real, z.imag), xytext=(8, -4), textcoords="offset points", fontweight="bold")
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.25)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    return ax
+
+
+def rocker_slider_figure(A, D, B, C, E, F, inverted, centre, *, guide_y, ax=None):
+    """Draw the six-bar of exercise 2-28 at its three positions and the inversion that made it.
+
+    Parameters
+    ----------
+    A, D : complex
+        Fixed pivots of the crank-rocker.
+    B, C, E, F : array_like of complex, shape (3,)
+        Crank pin, rocker pin, hinge on the rocker and slider pin at the three positions.
+    inverted : array_like of complex, shape (3,)
+        The slider pin's positions turned back with the rocker into its first position.
+    centre : complex
+        The hinge E at the first position (centre of the circle through `inverted`).
+    guide_y : float
+        Height of the slider's line.
+    """
+    ax = _axes(ax, (7.5, 5.5))
+    B, C, E, F, inverted = (np.asarray(v, dtype=complex) for v in (B, C, E, F, inverted))
+    xs = np.concatenate([[A, D], B, C, E, F, inverted]).real
+    ax.plot([xs.min() - 20, xs.max() + 20], [guide_y, guide_y], "-", color="grey", lw=3, alpha=0.4,
+            label="slider's line")
+    radius = abs(inverted[0] - centre)
+    ring = centre + radius * np.exp(1j * np.linspace(0.0, 2.0 * np.pi, 361))
+    ax.plot(ring.real, ring.imag, "--", color="tab:green", lw=0.9, label="circle about $E_1$ (inversion)")
+    ax.plot(inverted.real, inverted.imag, "x", color="tab:green", ms=8, mew=2,
+            label="$F_j$ turned back with the rocker")
+    for k in range(3):
+        alpha = 1.0 if k == 0 else 0.5
+        ax.plot([A.real, B[k].real, C[k].real, D.real], [A.imag, B[k].imag, C[k].imag, D.imag], "-o",
+                color="tab:blue", lw=1.8 if k == 0 else 1.0, ms=3, alpha=alpha,
+                label="crank-rocker ABCD" if k == 0 else None)
+        ax.fill([D.real, C[k].real, E[k].real], [D.imag, C[k].imag, E[k].imag], color="tab:blue", alpha=0.12)
+        ax.plot([E[k].real, F[k].real], [E[k].imag, F[k].imag], "-o", color="tab:red", lw=1.8 if k == 0 else 1.0,
+                ms=3, alpha=alpha, label="new link EF" if k == 0 else None)
+        ax.plot(F[k].real, F[k].imag, "s", mfc="none", mec="tab:red", ms=11, mew=1.5, alpha=alpha)
+        ax.annotate(f"$F_{k + 1}$", (F[k].real, F[k].imag), xytext=(-4, -18), textcoords="offset points")
+        ax.annotate(f"$C_{k + 1}$", (C[k].real, C[k].imag), xytext=(4, 4), textcoords="offset points")
+    ax.annotate("$E_1$", (E[0].real, E[0].imag), xytext=(6, -2), textcoords="offset points")
+    for name, z in (("A", A), ("D", D)):
+        ax.plot(z.real, z.imag, "k^", ms=11)
+        ax.annotate(name, (z.real, z.imag), xytext=(6, -14), textcoords="offset points", fontweight="bold")
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.25)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    return ax

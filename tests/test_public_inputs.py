@@ -857,6 +857,8 @@ def _p_slot(defaults, key):
     return ("scalar", lambda v: {**defaults, key: v}, key)
 
 
+_D27 = chapter2_synthesis.EXERCISE_2_27.defaults
+_D28 = chapter2_synthesis.EXERCISE_2_28.defaults
 _D29 = chapter2_synthesis.EXERCISE_2_29.defaults
 _D30 = chapter2_quick_return.EXERCISE_2_30.defaults
 _D31 = chapter2_quick_return.EXERCISE_2_31.defaults
@@ -1043,7 +1045,9 @@ CASES.update({
                                         "rtol": "scalar"},
                                        points=_P22, A=_DESIGN22[0], D=_DESIGN22[3], initial=[_DESIGN22[:4]],
                                        starts=1, seed=0, max_steps=20, tol=1e-10, distinct_tol=1e-6, rtol=1e-9),
-    # ------------------------------------------------------------------------- exercises 2-29 to 2-32
+    # ------------------------------------------------------------------------- exercises 2-27 to 2-32
+    "exercises.chapter2_synthesis.design_2_27": E(lambda: chapter2_synthesis.design_2_27, None, p=_D27),
+    "exercises.chapter2_synthesis.design_2_28": E(lambda: chapter2_synthesis.design_2_28, None, p=_D28),
     "exercises.chapter2_synthesis.design_2_29": E(lambda: chapter2_synthesis.design_2_29,
                                                   {"interior": "bool"},
                                                   p=_D29, interior=False),
@@ -1065,6 +1069,8 @@ CASES.update({
 
 # every entry of the parameter mappings `p` that a function reads, and the exercises' own solve
 _P_FUNCTIONS = [  # (key, function, defaults, the entries it reads, other arguments)
+    ("design_2_27", lambda: chapter2_synthesis.design_2_27, _D27, list(_D27), {}),
+    ("design_2_28", lambda: chapter2_synthesis.design_2_28, _D28, list(_D28), {}),
     ("design_2_29", lambda: chapter2_synthesis.design_2_29, _D29, list(_D29), {}),
     ("designs_2_30", lambda: chapter2_quick_return.designs_2_30, _D30, ["l_CD", "psi", "K", "l_AB"], {"given": "a"}),
     ("designs_2_30", lambda: chapter2_quick_return.designs_2_30, _D30, ["l_BC"], {"given": "b"}),
@@ -1072,11 +1078,11 @@ _P_FUNCTIONS = [  # (key, function, defaults, the entries it reads, other argume
     ("shaper_2_32", lambda: chapter2_quick_return.shaper_2_32, _D32, list(_D32), {}),
 ]
 for _func, _get, _defaults, _read, _extra in _P_FUNCTIONS:
-    _module = "chapter2_synthesis" if _func == "design_2_29" else "chapter2_quick_return"
+    _module = "chapter2_synthesis" if _func.startswith("design_2_") else "chapter2_quick_return"
     for _name in _read:
         CASES[f"exercises.{_module}.{_func}#{_name}"] = E(_get, {"p": _p_slot(_defaults, _name)}, p=_defaults,
                                                          **_extra)
-for _number, _defaults in (("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32)):
+for _number, _defaults in (("2-27", _D27), ("2-28", _D28), ("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32)):
     CASES[f"exercises.Exercise.solve#{_number}"] = E(lambda n=_number: ex.get(n).solve,
                                                      {k: "scalar" for k in _defaults}, **_defaults)
 
@@ -1086,6 +1092,7 @@ RECORDS.update({
         "QuickReturnCrankRocker", "QuickReturnFamily", "QuickReturnGuideBar", "QuickReturnSliderCrank",
         "OptimisationResult", "PathFourBar", "PathSynthesis")},
     "exercises.chapter2_quick_return.Shaper": "result record built by the package (shaper_2_32)",
+    "exercises.chapter2_synthesis.RockerSlider": "result record built by the package (design_2_28)",
 })
 
 

@@ -16,8 +16,9 @@ shown on ``book-analysis-exercises``; they live in :mod:`mech.exercises.chapter2
 and are collected here. The force exercises 2-19, 2-20, 2-21, 2-23 and 2-24 live in
 :mod:`mech.exercises.chapter2_forces` (page ``book-forces-exercises``) and 2-22 in
 :mod:`mech.exercises.chapter2_statics` (page ``book-forces-static-forces``). The synthesis
-exercises 2-29 (:mod:`mech.exercises.chapter2_synthesis`, page
-``book-synthesis-function-generation``) and 2-30 to 2-32
+exercises 2-27 (page ``synthesis-guidance``), 2-28 and 2-29
+(:mod:`mech.exercises.chapter2_synthesis`, page ``book-synthesis-function-generation``)
+and 2-30 to 2-32
 (:mod:`mech.exercises.chapter2_quick_return`, page ``book-synthesis-quick-return``)
 are collected here too. Each solver states its conventions in its solution.
 
@@ -25,7 +26,7 @@ Examples
 --------
 >>> from mech.exercises import chapter2
 >>> [ex.number for ex in chapter2.EXERCISES]
-['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-29', '2-30', '2-31', '2-32']
+['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
 >>> s = chapter2.EXERCISE_2_2.solve()
 >>> [str(iv) for iv in s["AB for a double-rocker"].value]
 ['(15, 45)', '(55, 115)']
@@ -47,7 +48,7 @@ from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
 from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
 from mech.exercises.chapter2_statics import EXERCISE_2_22
-from mech.exercises.chapter2_synthesis import EXERCISE_2_29
+from mech.exercises.chapter2_synthesis import EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29
 from mech.exercises.chapter2_quick_return import EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32
 
 __all__ = [
@@ -64,6 +65,8 @@ __all__ = [
     "EXERCISE_2_22",
     "EXERCISE_2_23",
     "EXERCISE_2_24",
+    "EXERCISE_2_27",
+    "EXERCISE_2_28",
     "EXERCISE_2_29",
     "EXERCISE_2_30",
     "EXERCISE_2_31",
@@ -475,4 +478,4 @@ EXERCISE_2_6 = Exercise(
 
 EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7,
              EXERCISE_2_10, EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23,
-             EXERCISE_2_24, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)
+             EXERCISE_2_24, EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)

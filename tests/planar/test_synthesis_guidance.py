@@ -26,6 +26,16 @@ EX_P = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113
 EX_DEG = np.array([0.0, 8.88, 22.1, 63.68, -3.0])
 
 
+# the catalog's recomputation of example 2-15 (4000 random starts, 6 significant digits):
+# per dyad (centre point A, moving pivot B_1, crank length), for theta_41 = 63.68 and 63.38 deg
+_EX15_CATALOG = [
+    (63.68, [((0.643066, 1.32317), (-81.8776, 72.1637), 108.757), ((189.490, 1.33828), (88.6722, 158.475), 186.698),
+             ((310.819, 859.871), (345.607, 392.762), 468.402), ((8.19817, 1966.30), (262.224, 484.929), 1503.00)]),
+    (63.38, [((0.537736, 1.03926), (-81.8976, 71.7237), 108.590), ((189.785, 1.08356), (89.0339, 158.184), 186.632),
+             ((318.377, 835.118), (349.390, 387.818), 448.374), ((-22.5208, 2088.63), (258.247, 488.930), 1624.15)]),
+]
+
+
 def _coupler_task(seed):
     """Five poses of the coupler of a random crank-rocker, placed anywhere, and its two dyads."""
     rng = np.random.default_rng(seed)
@@ -283,12 +293,7 @@ def test_burmester_against_multistart_and_mpmath(seed):
     assert found.residual < 1e-12
 
 
-@pytest.mark.parametrize("deg4, table", [
-    (63.68, [((0.643066, 1.32317), (-81.8776, 72.1637), 108.757), ((189.490, 1.33828), (88.6722, 158.475), 186.698),
-             ((310.819, 859.871), (345.607, 392.762), 468.402), ((8.19817, 1966.30), (262.224, 484.929), 1503.00)]),
-    (63.38, [((0.537736, 1.03926), (-81.8976, 71.7237), 108.590), ((189.785, 1.08356), (89.0339, 158.184), 186.632),
-             ((318.377, 835.118), (349.390, 387.818), 448.374), ((-22.5208, 2088.63), (258.247, 488.930), 1624.15)]),
-])
+@pytest.mark.parametrize("deg4, table", _EX15_CATALOG)
 def test_example_2_15_burmester(deg4, table):
     """Example 2-15: four real Burmester dyads, for the data's 63.68 deg and the text's 63.38 deg.
     Reference values: the catalog's recomputation (4000 random starts), 6 significant digits."""
@@ -300,6 +305,32 @@ def test_example_2_15_burmester(deg4, table):
         assert abs(k.centre_point - complex(ax, ay)) < 5e-6 * max(abs(complex(ax, ay)), 100)
         assert abs(k.moving_pivot - complex(bx, by)) < 5e-6 * abs(complex(bx, by))
         assert abs(k.length - r) < 5e-6 * r
+
+
+@pytest.mark.parametrize("deg4, table", _EX15_CATALOG)
+def test_example_2_15_burmester_against_mpmath(deg4, table):
+    """Example 2-15 by another route: each dyad of the catalog's table (6 digits, found there
+    by 4000 random starts) refined by mpmath.findroot on the raw equations (2-40) at 50
+    digits; `burmester` matches every one to 1e-9 relative. Four real roots is the most the
+    quartic allows, so none is missing."""
+    deg = EX_DEG.copy()
+    deg[3] = deg4
+    theta = np.radians(deg)
+    found = burmester(theta, EX_P)
+    assert len(found.dyads) == 4 and found.n_complex == 0
+    f = _raw_equations_mp(theta, EX_P)
+    matched = set()
+    with mpmath.workdps(50):
+        for (ax, ay), (bx, by), _ in table:
+            B0, A0 = complex(bx, by), complex(ax, ay)
+            root = [mpmath.re(r) for r in mpmath.findroot(f, (B0.real, B0.imag, A0.real, A0.imag),
+                                                           tol=mpmath.mpf(10) ** -40)]
+            B_ref, A_ref = complex(mpmath.mpc(root[0], root[1])), complex(mpmath.mpc(root[2], root[3]))
+            scale = max(abs(A_ref), abs(B_ref))
+            errs = [abs(j.centre_point - A_ref) + abs(j.moving_pivot - B_ref) for j in found.dyads]
+            assert min(errs) < 1e-9 * scale
+            matched.add(int(np.argmin(errs)))
+    assert matched == {0, 1, 2, 3}
 
 
 def test_example_2_15_fourbar():
@@ -474,3 +505,24 @@ def test_circle_point_curve_bad_input():
         curve = circle_point_curve(theta, d, samples=200)
         i, k = np.argwhere(~curve.valid)[0]
         curve.dyad(int(i), int(k))
+
+
+def test_eq_2_33_2_34_printed_second_lines_are_wrong():
+    """Erratum 46: the second lines of (2-33) and (2-34) swap sine and cosine. As printed,
+    R_y = R'_y sin(theta) + R'_x cos(theta) neither keeps the length of R' nor agrees with
+    `displacement_matrix`; the corrected R_y = R'_x sin(theta) + R'_y cos(theta) does both."""
+    rng = np.random.default_rng(33)
+    for _ in range(20):
+        th1, thi = rng.uniform(-np.pi, np.pi, 2)
+        P1, Pi, B1 = (complex(*rng.normal(size=2)) * 5 for _ in range(3))
+        M = displacement_matrix(th1, P1, thi, Pi)
+        moved = M @ np.array([B1.real, B1.imag, 1.0])
+        t = thi - th1
+        R = B1 - P1                                        # R' of (2-32): from P_1 to B_1
+        Rx = R.real * np.cos(t) - R.imag * np.sin(t)       # first line, printed correctly
+        Ry_printed = R.imag * np.sin(t) + R.real * np.cos(t)
+        Ry_fixed = R.real * np.sin(t) + R.imag * np.cos(t)
+        assert np.allclose(moved[:2], [Pi.real + Rx, Pi.imag + Ry_fixed], rtol=0, atol=1e-12)
+        assert abs(np.hypot(Rx, Ry_fixed) - abs(R)) < 1e-12
+        if abs(np.sin(t) - np.cos(t)) > 0.1 and abs(R.real - R.imag) > 0.1:
+            assert abs(Ry_printed - Ry_fixed) > 1e-3

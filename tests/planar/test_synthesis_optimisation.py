@@ -270,6 +270,29 @@ def test_penalty_method_checkpoint_resume(tmp_path):
     _same(penalty_method(model, START_2_24, checkpoint=path, every=25, **kw), full)
 
 
+def test_penalty_method_ctrl_c_then_resume(tmp_path):
+    """A KeyboardInterrupt (Ctrl-C) in the middle is not masked; the checkpoint it leaves
+    resumes to the result of an uninterrupted run."""
+    model = path_synthesis_model(POINTS_2_24)
+    kw = dict(stages=2, iterations=200)
+    full = penalty_method(model, START_2_24, **kw)
+    calls = [0]
+
+    def objective(x):
+        calls[0] += 1
+        if calls[0] > full.evaluations // 2:
+            raise KeyboardInterrupt
+        return model.objective(x)
+
+    stopped = DesignModel(objective, model.bounds, inequality=model.inequality, equality=model.equality,
+                          names=model.names)
+    path = tmp_path / "ctrl-c.npz"
+    with pytest.raises(KeyboardInterrupt):
+        penalty_method(stopped, START_2_24, checkpoint=path, every=20, **kw)
+    assert path.exists()
+    _same(penalty_method(model, START_2_24, checkpoint=path, every=20, **kw), full)
+
+
 def test_checkpoint_of_another_search_is_refused(tmp_path):
     path = tmp_path / "grid.npz"
     grid_search(steering_trapezoid_model(), points=5, levels=2, checkpoint=path)

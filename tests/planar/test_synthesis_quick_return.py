@@ -366,3 +366,26 @@ def test_family_designs_all_keep_the_permitted_angle():
     outside = [fam.design(lo - 1e-3), fam.design(hi + 1e-3)]
     assert all(q.check().min_transmission_angle < deg(42) for q in outside)
     assert crank_rocker_family(1.2, 80.0, deg(35), min_transmission=deg(80)).intervals == ()
+
+
+def test_eq_2_49_printed_derivative_is_wrong():
+    """Erratum 65: (2-49), the derivative of cos(gamma_min) of (2-48) along the design family
+    (d' = 0 at phi = theta), has -2 a a' b c in its numerator (printed -2 a a' d c) and the
+    denominator -2 b^2 c^2 sin(gamma_min) (printed -4 b^2 c^2 sin(gamma_min)). Checked against
+    mpmath's numerical derivative at 30 digits for random lengths and rates."""
+    rng = np.random.default_rng(49)
+    with mpmath.workdps(30):
+        checked = 0
+        while checked < 10:
+            a, b, c, d, ap, bp = (mpmath.mpf(float(v)) for v in (*rng.uniform(0.5, 2.0, 4), *rng.normal(size=2)))
+            cos_gamma = lambda t: ((b + t * bp) ** 2 + c**2 - (d - a - t * ap) ** 2) / (2 * (b + t * bp) * c)
+            if not abs(cos_gamma(0)) < 0.95:
+                continue
+            checked += 1
+            gamma = mpmath.acos(cos_gamma(0))
+            dgamma = mpmath.diff(lambda t: mpmath.acos(cos_gamma(t)), 0)
+            common = b**2 * bp * c + 2 * ap * b * c * d - bp * c**3 + bp * c * d**2 - 2 * a * bp * c * d + a**2 * bp * c
+            corrected = (common - 2 * a * ap * b * c) / (-2 * b**2 * c**2 * mpmath.sin(gamma))
+            printed = (common - 2 * a * ap * d * c) / (-4 * b**2 * c**2 * mpmath.sin(gamma))
+            assert abs(dgamma - corrected) < mpmath.mpf(10) ** -20 * (1 + abs(dgamma))
+            assert abs(dgamma - printed) > 1e-6 * (1 + abs(float(dgamma)))

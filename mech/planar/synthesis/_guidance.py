@@ -1,9 +1,10 @@
-"""Rigid-body guidance by RR dyads: two to five poses (textbook section 2.4, (2-38) to (2-40)).
+"""Rigid-body guidance by RR dyads: two, three, four and five poses (textbook section 2.4, (2-38) to (2-40)).
 
 A dyad (crank) is a fixed pivot, the centre point, and a moving pivot fixed in the guided
 body, the circle point, whose positions in all the poses lie on one circle about the centre
 point. Two dyads make a four-bar whose coupler is the guided body; `guidance_fourbars`
-builds every such four-bar and proves it by analysis with `mech.planar.FourBar`.
+builds every such four-bar and proves it by analysis with `mech.planar.FourBar`. Four
+poses leave a one-parameter family of dyads, traced as curves by `circle_point_curve`.
 """
 
 from dataclasses import dataclass
@@ -14,10 +15,8 @@ from mech._generated import displacement as _gen
 from mech._validate import nonnegative_int, real_array, real_number
 from mech.planar.synthesis._displacement import complex_array, pose_set
 
-__all__ = [
-    "Dyad", "BurmesterCurve", "BurmesterPoints", "dyad_for_circle_point", "dyad_for_centre_point",
-    "circle_point_curve", "burmester",
-]
+__all__ = ["Dyad", "BurmesterPoints", "BurmesterCurve", "dyad_for_circle_point", "dyad_for_centre_point",
+           "circle_point_curve", "burmester"]
 
 
 @dataclass(frozen=True)
@@ -413,7 +412,7 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
     return BurmesterPoints(tuple(dyads), n_complex, worst)
 
 
-# Four poses: the circle-point and centre-point curves (Burmester's cubics), as curves.
+# --- four poses: the circle-point and centre-point curves (Burmester's cubics), as curves ---------
 @dataclass(frozen=True)
 class BurmesterCurve:
     """The circle-point curve of four poses and the matching centre points.

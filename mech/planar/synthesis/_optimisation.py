@@ -216,13 +216,18 @@ class _NoBar:
 def _bar(progress, total, initial, desc):
     """A tqdm bar on standard output (never standard error, which fails a book build).
 
-    tqdm is imported only when a bar is asked for, so the searches run without it.
+    tqdm is imported only when a bar is asked for, so the searches run without it. In a
+    terminal the bar is redrawn in place and removed at the end. In a Jupyter kernel (a book
+    page) every redraw is kept in the cell's output, so the bar is redrawn at most once a
+    second and its final state is left in place.
     """
     if not progress:
         return _NoBar()
     from tqdm import tqdm
 
-    return tqdm(total=total, initial=initial, desc=desc, file=sys.stdout, leave=False)
+    in_kernel = "ipykernel" in sys.modules
+    return tqdm(total=total, initial=initial, desc=desc, file=sys.stdout, leave=in_kernel,
+                mininterval=1.0 if in_kernel else 0.1)
 
 
 def _load(checkpoint, kind, fingerprint):
