@@ -1,4 +1,4 @@
-"""Circles (小圆) and great circles (大圆) on the unit sphere (the spherical monograph, §1.6).
+"""Circles (小圆) and great circles (大圆) on the unit sphere (the spherical monograph, §1.7).
 
 A circle is its pole N and arc radius r: the points P with N . P = cos r. A great circle
 (r = pi/2) is the spherical straight line; it is directed counter-clockwise about its pole

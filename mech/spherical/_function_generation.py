@@ -150,8 +150,9 @@ def chebyshev_spacing(x0, x1, n):
 
     Notes
     -----
-    Page ``deriv-spherical-function-generation``. The planar textbook's Ex. 2-16 used the
-    half-width in place of the centre (see the errata); this is the formula as printed.
+    Page ``deriv-spherical-function-generation``. This is the corrected formula: the planar
+    textbook's Ex. 2-16 centred its nodes on the half-width instead of the middle of the
+    interval (row 53 of the errata page, ``book/errata.md``).
 
     Examples
     --------

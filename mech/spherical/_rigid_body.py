@@ -1,5 +1,5 @@
 """A rigid body on the sphere: inclinations, turning about a point, the rigid triangle and
-spherical vectors (the spherical monograph, §§1.3 to 1.5).
+spherical vectors (the spherical monograph, §§1.3 to 1.6).
 
 The inclination (倾角) of a directed great circle at a point is the angle from the local x
 axis (`local_frame`) to its direction, counter-clockwise seen from outside the sphere;
