@@ -264,3 +264,119 @@ def test_static_forces_negative_mu_without_sliding_pairs():
     sol = as_linkage(FourBar(1, 3, 2.5, 3)).solve(0.5, order=1)
     with pytest.raises(ValueError, match="Expected `mu` >= 0, got -0.2"):
         static_forces(sol, {"C": -10}, mu=-0.2)
+
+
+def _mp_circle_intersection(p, r, q, s, left_of):
+    """Intersection of the circles |z - p| = r and |z - q| = s (mpmath, closed form), the
+    root on the left of the directed line p -> ``left_of`` (cross product > 0)."""
+    dz = q - p
+    L = abs(dz)
+    along = (r**2 - s**2 + L**2) / (2 * L)
+    h = mpmath.sqrt(r**2 - along**2)
+    base = p + dz / L * along
+    roots = [base + 1j * dz / L * h, base - 1j * dz / L * h]
+    u = left_of - p
+    return [z for z in roots if u.real * (z - p).imag - u.imag * (z - p).real > 0][0]
+
+
+def test_example_2_12_chosen_data_by_hand_free_bodies():
+    """Ex. 2-12 as stated on book page ``book-forces-static-forces`` (FourBar(30, 70, 60, 80),
+    crank at 60 deg, Q = 100 N at E, 40 mm from D on the rocker, against its motion).
+
+    The reference is a hand free-body solution at 50 digits: the coupler is a two-force
+    member, so R23 = F (C - B)/|C - B| with one unknown F, fixed by the rocker's moments about
+    D; R43 closes the rocker's force triangle and M_d balances the crank about A. The rocker's
+    sense of turning comes from a finite difference of the position, not from the package.
+    The printed numbers of the page are pinned too.
+    """
+    mpmath.mp.dps = 50
+    a, b, c, d, de, q = 30, 70, 60, 80, 40, 100
+    D = mpmath.mpc(d, 0)
+
+    def C_of(theta):
+        B = a * mpmath.expjpi(theta / mpmath.pi)
+        return B, _mp_circle_intersection(B, b, D, c, left_of=D)  # branch +1: C left of B->D
+
+    theta = mpmath.radians(60)
+    B, C = C_of(theta)
+    h = mpmath.mpf("1e-20")
+    psi = lambda th: mpmath.arg(C_of(th)[1] - D)
+    omega3 = (psi(theta + h) - psi(theta - h)) / (2 * h)          # crank at +1 rad/s
+    u = (C - D) / c
+    E = D + de * u
+    Q = -mpmath.sign(omega3) * 1j * u * q                          # against the rocker's motion
+    cr = lambda p, f: p.real * f.imag - p.imag * f.real
+    e_bc = (C - B) / b
+    F = -cr(E - D, Q) / cr(C - D, e_bc)                            # moments of the rocker about D
+    R23 = F * e_bc                                                 # on the rocker from the coupler
+    R43 = -(R23 + Q)
+    R21 = -R23                                                     # on the crank from the coupler
+    M_d = -cr(B, R21)                                              # moments of the crank about A
+
+    lk = as_linkage(FourBar(a, b, c, d)).point("E", link="rocker", at=float(de))
+    sol = lk.solve(math.radians(60.0), order=1)
+    u_pkg = sol.direction("rocker")
+    Q_pkg = complex(-np.sign(sol.omegas["rocker"]) * 1j * u_pkg * 100.0)
+    sf = static_forces(sol, {"E": Q_pkg})
+    assert abs(Q_pkg - complex(Q)) < 1e-12
+    assert abs(complex(sf.reactions[("coupler", "rocker")]) - complex(R23)) < 1e-10
+    assert abs(complex(sf.reactions[("ground", "rocker")]) - complex(R43)) < 1e-10
+    assert abs(complex(sf.reactions[("crank", "coupler")]) - complex(-R21)) < 1e-10
+    assert abs(complex(sf.reactions[("ground", "crank")]) - complex(-R21)) < 1e-10
+    assert abs(float(sf.balancing) - float(M_d)) < 1e-9
+    # the numbers the page prints (four significant decimals)
+    assert float(M_d) == pytest.approx(1141.1755, abs=5e-5)
+    assert float(abs(R23)) == pytest.approx(73.7865, abs=5e-4)
+    assert float(abs(R43)) == pytest.approx(45.9468, abs=5e-4)
+
+
+def test_example_2_13_chosen_data_by_hand_free_bodies():
+    """Ex. 2-13 as stated on book page ``book-forces-static-forces`` (SliderCrank(50, 150),
+    crank at 45 deg turning clockwise at 1 rad/s, Q = 1000 N to the left on the slider, pin
+    radius 10 mm with mu0 = 0.15, slider mu = 0.15): M_d with and without friction and eta.
+
+    The reference writes the free bodies by hand at 50 digits: on the rod (a two-force link)
+    the friction moments at B and C oppose its rotation relative to the crank and to the
+    slider; on the slider the frame's reaction has the normal N and the friction mu |N|
+    against the sliding; on the crank the friction moments at B and A oppose its rotation
+    relative to the rod and to the frame. The senses come from the exact velocities of the
+    centric slider-crank, computed here, not from the package. Three equations (rod moments,
+    slider forces) fix the rod force; the crank's moments give M_d.
+    """
+    mpmath.mp.dps = 50
+    r, l, q, rho, mu = 50, 150, 1000, mpmath.mpf("1.5"), mpmath.mpf("0.15")
+    th, w1 = mpmath.radians(45), -1
+    B = r * mpmath.expjpi(th / mpmath.pi)
+    phi = mpmath.asin(-r * mpmath.sin(th) / l)                     # rod angle, C right of B
+    C = B + l * mpmath.expjpi(phi / mpmath.pi)
+    w2 = -r * mpmath.cos(th) * w1 / (l * mpmath.cos(phi))          # d/dt of r sin th + l sin phi = 0
+    v = -r * mpmath.sin(th) * w1 - l * mpmath.sin(phi) * w2        # slider velocity
+    s21, s23, s1, sv = (int(mpmath.sign(x)) for x in (w2 - w1, w2, w1, v))
+    cr = lambda p, f: p.real * f.imag - p.imag * f.real
+
+    def solve(rho, mu):
+        def eqs(fx, fy, n):
+            F = mpmath.mpc(fx, fy)                                  # on the rod at B, from the crank
+            size = abs(F)
+            rod = cr(C - B, -F) - rho * size * s21 - rho * size * s23
+            slider = F - q + mpmath.mpc(-sv * mu * abs(n), n)      # rod pushes the slider with F
+            return rod, slider.real, slider.imag
+        fx, fy, n = mpmath.findroot(eqs, (1000, -300, 300))
+        F = mpmath.mpc(fx, fy)
+        # crank: force -F at B, reaction F at A, friction moments at B and A
+        return -cr(B, -F) - rho * abs(F) * s21 + rho * abs(F) * s1, F
+
+    M_d, F = solve(rho, mu)
+    M_d0, _ = solve(0, 0)
+    sc = as_linkage(SliderCrank(50, 150))
+    sol = sc.solve(math.radians(45.0), order=1, omega=-1.0)
+    load = {("C", "slider"): -1000.0}
+    rough = static_forces(sol, load, rho=friction_circle(0.15, 10.0), mu=0.15)
+    assert abs(float(rough.balancing) - float(M_d)) < 1e-8 * abs(float(M_d))
+    assert abs(float(rough.frictionless["crank"]) - float(M_d0)) < 1e-8 * abs(float(M_d0))
+    assert abs(complex(rough.reactions[("crank", "rod")]) - complex(F)) < 1e-8 * float(abs(F))
+    assert float(rough.efficiency) == pytest.approx(float(M_d0 / M_d), rel=1e-10)
+    # the numbers the page prints
+    assert float(M_d) == pytest.approx(-49754.3, abs=0.05)
+    assert float(M_d0) == pytest.approx(-43930.3, abs=0.05)
+    assert float(M_d0 / M_d) == pytest.approx(0.8829, abs=5e-5)
