@@ -192,3 +192,22 @@ def test_eccentric_clamp_pin_radius_not_disc_radius():
 
 def test_eccentric_clamp_always_locks_when_argument_exceeds_one():
     assert eccentric_clamp_max_angle(5.0, 40.0, 1.0, 0.3) == pytest.approx(0.3 + math.pi / 2)
+
+
+def test_example_2_11_ratio_is_2_26_over_2_28():
+    """Errata rows 36 and 37 (example 2-11, lines 1602-1604). The forward efficiency is (2-26),
+    eta = tan(lam)/tan(lam + 2 phi); the reverse one is (2-28), eta' = tan(lam - 2 phi)/tan(lam);
+    their ratio eta/eta' is (2-26) / (2-28) = tan^2(lam)/(tan(lam + 2 phi) tan(lam - 2 phi)),
+    the first form the text prints, and not (2-28) / (2-26) as the text says. The formulas
+    are typed here from the text; `wedge_press` solves the free bodies."""
+    for lam_deg, phi_deg in [(30, 5), (20, 3), (60, 8), (40, 10)]:
+        lam, phi = math.radians(lam_deg), math.radians(phi_deg)
+        w = wedge_press(lam, phi)
+        eq_2_26 = math.tan(lam) / math.tan(lam + 2 * phi)
+        eq_2_28 = math.tan(lam - 2 * phi) / math.tan(lam)
+        assert w.efficiency == pytest.approx(eq_2_26, rel=1e-12)
+        assert w.reverse_efficiency == pytest.approx(eq_2_28, rel=1e-12)
+        ratio = w.efficiency / w.reverse_efficiency
+        assert ratio == pytest.approx(math.tan(lam) ** 2 / (math.tan(lam + 2 * phi) * math.tan(lam - 2 * phi)),
+                                      rel=1e-12)
+        assert abs(ratio - eq_2_28 / eq_2_26) > 1e-3              # the division as the text words it

@@ -5,6 +5,8 @@ Expected values come from two independent routes: a brute-force simulation of th
 product) and the law of cosines with ``mpmath.acos`` at 50 digits.
 """
 
+import math
+
 import mpmath
 import numpy as np
 import pytest
@@ -204,3 +206,33 @@ def test_limit_positions_rejects_bad_input():
         limit_positions(10, 40, 30, 35, branch=0)
     with pytest.raises(ValueError, match="Expected `d` shorter than the other three links together \\(80.0\\), got 90.0"):
         limit_positions(10, 40, 30, 90)
+
+
+def test_line_669_designs_without_quick_return():
+    """Errata (line 669, catalog A11): the sentence names a crank-rocker with K = 1 (Fig
+    2-100) and the centric slider-crank (Fig 2-22) as designs without quick return, and says
+    an oscillating guide-bar always has K > 1. A crank-rocker has K = 1 exactly when A lies on
+    the line of its two limit positions C1C2, that is when the power of A with respect to the
+    rocker circle, AC1 * AC2 = (b + a)(b - a), equals d^2 - c^2: a^2 + d^2 = b^2 + c^2."""
+    from mech.planar import GuideBar, SliderCrank
+
+    rng = np.random.default_rng(669)
+    checked = 0
+    for _ in range(200):
+        a, c, d = 10.0, rng.uniform(20, 60), rng.uniform(20, 60)
+        b2 = a * a + d * d - c * c
+        if b2 <= 0:
+            continue
+        b = math.sqrt(b2)
+        if grashof(a, b, c, d).kind != "crank-rocker":
+            continue
+        lp = limit_positions(a, b, c, d)
+        assert lp.time_ratio == pytest.approx(1.0, abs=1e-12)
+        assert lp.extreme_angle == pytest.approx(0.0, abs=1e-12)
+        checked += 1
+    assert checked > 20
+    assert limit_positions(10, 40, 30, 35).time_ratio > 1.2          # example 2-1: a^2 + d^2 != b^2 + c^2
+    assert SliderCrank(30.0, 100.0).time_ratio() == pytest.approx(1.0, abs=1e-15)
+    for a, d in rng.uniform(1, 100, (50, 2)):
+        a, d = min(a, d) * 0.99, max(a, d)
+        assert GuideBar(a, d).time_ratio() > 1.0

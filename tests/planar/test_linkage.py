@@ -302,3 +302,129 @@ def test_linkage_instant_centres_agree_with_analytic_rates():
         (Linkage({"A": 0, "D": 35}).crank("crank", pivot="A", tip="B", length=10)
          .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(20, 10))
          .solve(np.array([0.0, 2.0])).instant_centres())
+
+
+# ---------------------------------------------------------------- errata of §2.2 (book/errata.md)
+def test_erratum_10_link_angles_keep_their_quadrant():
+    """Errata row 10 (lines 1095, 1120, 1190): angles as arctg(dy/dx) lose the quadrant. A
+    rocker pointing into the second and third quadrants must give the angle of mpmath's atan2,
+    which differs from arctan(dy/dx) by pi there."""
+    a, b, c, d = 20.0, 60.0, 45.0, 70.0
+    lk = (Linkage({"A": 0, "D": d}).crank("crank", pivot="A", tip="B", length=a)
+          .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(b, c)))
+    theta = np.linspace(-math.pi, math.pi, 37)
+    sol = lk.solve(theta)
+    C = np.asarray(sol.points["C"])
+    for t, got, z in zip(theta, sol.angles["rocker"], C):
+        ref = rrr_ref(a * expi(t), mpmath.mpf(d), b, c, 1)
+        want = mpmath.atan2((ref - d).imag, (ref - d).real)
+        assert abs(got - float(want)) < 1e-12
+        assert abs(z - complex(ref)) < 1e-11
+    dz = C - d
+    assert np.all(dz.real < 0)                                     # C left of D: quadrants II, III
+    assert np.allclose(np.abs(sol.angles["rocker"] - np.arctan(dz.imag / dz.real)), math.pi)
+
+
+@pytest.mark.parametrize("make", ["fourbar", "slider_crank", "guide_bar"])
+def test_erratum_12_groups_are_class_ii(make):
+    """Errata row 12 (captions of Figs 2-54, 2-55) and row 41 (example 2-12): the groups of a
+    four-bar, a slider-crank and a guide-bar are class II (II 级): two links and three lower
+    pairs, 3n - 2 P_L = 0, statically determinate. Each group label names its pairs (R, P)
+    and its links; the whole linkage must then have one degree of freedom (Gruebler)."""
+    from mech.planar.forces._statics import as_linkage
+
+    if make == "fourbar":
+        lk = as_linkage(FourBar(1.0, 3.0, 2.5, 3.0))
+    elif make == "slider_crank":
+        lk = as_linkage(SliderCrank(1.0, 3.0))
+    else:
+        lk = (Linkage({"A": 0, "D": 2.0j}).crank("crank", pivot="A", tip="B", length=1.0)
+              .rpr(("bar", "block"), pins=("D", "B")))
+    driver, *groups = lk.groups
+    assert driver.split()[0] == "crank"
+    for label in groups:
+        kind, links = label.split()
+        n, pairs = len(links.split("-")), len(kind)
+        assert set(kind) <= {"R", "P"} and (n, pairs) == (2, 3)
+        assert 3 * n - 2 * pairs == 0
+    moving = 1 + 2 * len(groups)                                   # crank and the groups' links
+    lower_pairs = 1 + 3 * len(groups)
+    assert 3 * moving - 2 * lower_pairs == 1
+
+
+def test_erratum_a8_five_bar_turn_counts():
+    """Errata (line 322, catalog A8): for the two-crank five-bar the text gives
+    i14 = omega1/omega4 = -m/n and says that crank 1 turns n times and crank 4 m times per
+    cycle of C. With the ratio as printed the counts are the other way round: crank 1 turns
+    m times and crank 4 n times. Here m = 1, n = 2: C's path closes after crank 4 has made
+    two turns (crank 1 one), not earlier, and the printed counts would need omega1/omega4
+    = -2."""
+    m, n = 1, 2
+    lk = (Linkage({"A": 0, "E": 3.0})
+          .crank("crank1", pivot="A", tip="B", length=1.0, driver="t1")
+          .crank("crank4", pivot="E", tip="D", length=1.0, driver="t4")
+          .rrr(("link2", "link3"), pins=("B", "D"), joint="C", lengths=(3.0, 3.0)))
+    t = np.linspace(0.0, 2.0 * math.pi * n, 4001)                  # crank 4 angle, omega4 = 1
+    sol = lk.solve({"t1": -m / n * t, "t4": t}, order=1, omega={"t1": -m / n, "t4": 1.0}, strict=True)
+    C = np.asarray(sol.points["C"])
+    w = sol.omegas
+    assert np.allclose(np.asarray(w["crank1"]) / np.asarray(w["crank4"]), -m / n)
+    turns1, turns4 = abs(-m / n * t[-1]) / (2 * math.pi), t[-1] / (2 * math.pi)
+    assert (turns1, turns4) == pytest.approx((m, n))
+    assert abs(C[-1] - C[0]) < 1e-12                               # one cycle of C
+    assert abs(C[len(t) // n] - C[0]) > 0.1                        # not after one turn of crank 4
+
+
+def _dwell_six_bar_reference(theta):
+    """Lines 503-509 (catalog A31) by hand in NumPy: four-bar A = 0, D = 1.15, AB = 0.43,
+    BC = CD = 1; M on the coupler with CM = 1 and angle BCM = 95 deg; F from AF = 2.51,
+    DF = 1.47 (below AD); E from EM = R = 3.34 and EF = 0.41. Returns E - F."""
+    def meet(p, r, q, s, side):
+        g = q - p
+        L = np.abs(g)
+        along = (r * r - s * s + L * L) / (2 * L)
+        return p + g / L * (along + 1j * side * np.sqrt(r * r - along * along))
+
+    B = 0.43 * np.exp(1j * theta)
+    C = meet(B, 1.0, 1.15 + 0j, 1.0, 1)                           # C left of B->D (branch +1)
+    M = C + (B - C) * np.exp(-1j * math.radians(95.0))
+    F = meet(0j, 2.51, 1.15 + 0j, 1.47, -1)
+    E = meet(M, 3.34, F * np.ones_like(M), 0.41, 1)
+    return E - F
+
+
+def test_erratum_a31_dwell_six_bar_printed_data_has_no_dwell():
+    """Errata (lines 503-509, catalog A31): the double-dwell six-bar built from the printed
+    relative lengths assembles through a full crank turn and swings its rocker EF by 52.37
+    deg, but stays near its two limit positions no longer than a harmonic rocker of the same
+    swing: within 0.25 deg of them for 16.0 and 11.5 deg of crank turn (a harmonic swing:
+    15.8 deg). `Linkage` is checked against the NumPy construction above."""
+    theta = np.linspace(0.0, 2.0 * math.pi, 36001)
+    ref = _dwell_six_bar_reference(theta)
+    assert not np.isnan(ref).any()
+    found = False
+    for branch in (1, -1):
+        lk = (Linkage({"A": 0, "D": 1.15, "F": _dwell_F()})
+              .crank("crank", pivot="A", tip="B", length=0.43)
+              .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(1.0, 1.0))
+              .point("M", link="coupler", at=1.0 - np.exp(-1j * math.radians(95.0)))
+              .rrr(("rod", "swing"), pins=("M", "F"), joint="E", lengths=(3.34, 0.41), branch=branch))
+        sol = lk.solve(theta)
+        got = np.asarray(sol.points["E"]) - _dwell_F()
+        if np.all(sol.valid) and np.max(np.abs(got - ref)) < 1e-9:
+            found = True
+    assert found
+    angle = np.degrees(np.unwrap(np.angle(ref)))
+    swing = angle.max() - angle.min()
+    assert swing == pytest.approx(52.37, abs=0.01)
+    near_top = 360.0 * np.mean(angle.max() - angle < 0.25)
+    near_bottom = 360.0 * np.mean(angle - angle.min() < 0.25)
+    harmonic = 2.0 * math.degrees(math.acos(1.0 - 0.25 / (swing / 2.0)))
+    assert near_top == pytest.approx(16.0, abs=0.1) and near_bottom == pytest.approx(11.5, abs=0.1)
+    assert max(near_top, near_bottom) < 1.05 * harmonic
+
+
+def _dwell_F():
+    g = 1.15
+    along = (2.51**2 - 1.47**2 + g * g) / (2 * g)
+    return complex(along, -math.sqrt(2.51**2 - along**2))

@@ -344,3 +344,17 @@ def test_solve_bad_input():
         mech.solve([0.0, np.inf])
     with pytest.raises(ValueError, match="Expected finite `omega`"):
         mech.solve(0.0, order=1, omega=np.nan)
+
+
+def test_fig_2_7c_joint_c_rocks_when_b_exceeds_a():
+    """Errata row 5 (caption of Fig 2-7c): with b > a joint C rocks. The slider does not
+    turn, so the relative rotation at C is the rod angle phi; over a full crank turn it must
+    sweep exactly [-asin(a/b), asin(a/b)] (sin phi = -a sin(theta)/b, evaluated in mpmath),
+    never a full turn."""
+    theta = np.linspace(0.0, 2.0 * np.pi, 4001)
+    for a, b in [(1.0, 2.0), (1.0, 1.25), (3.0, 3.01), (1.0, 40.0)]:
+        phi = SliderCrank(a, b).solve(theta).phi
+        bound = float(mpmath.asin(mpmath.mpf(a) / b))
+        assert np.max(phi) == pytest.approx(bound, rel=1e-6)
+        assert np.min(phi) == pytest.approx(-bound, rel=1e-6)
+        assert np.ptp(phi) < np.pi
