@@ -12,8 +12,9 @@ other valid numbers. Solutions render themselves as Markdown.
 >>> round(float(sol["time ratio K"].value), 4)
 1.2299
 
-From the command line: ``python -m mech.exercises list``, ``... show 2-3`` and
-``... variant 2-3 --seed 7``.
+From the command line: ``python -m mech.exercises list``, ``... show 2-3``,
+``... variant 2-3 --seed 7``, and for a class ``... sheet --students 30 --seed 2026 --out DIR``
+(one variant per student, with an answer key) and ``... check 2-3 --seed 7 --answer K=1.2``.
 """
 
 from types import MappingProxyType

@@ -1,0 +1,275 @@
+"""Problem sheets for a class, their answer keys, and checking a student's numbers.
+
+A sheet gives every student their own variant of each chosen exercise. The variants come
+from one class seed: student ``k`` gets the seed :func:`student_seeds` derives from it, and
+the same seed reproduces that student's numbers with ``python -m mech.exercises variant``
+or checks their answers with ``python -m mech.exercises check``. Only NumPy is imported
+here; the HTML converter (markdown-it-py, which MyST already uses) is imported when HTML is
+asked for.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import unicodedata
+from dataclasses import dataclass
+
+import numpy as np
+
+from mech._validate import integer, real_number
+
+__all__ = [
+    "DEFAULT_EXERCISES",
+    "Quantity",
+    "Verdict",
+    "answer_quantities",
+    "check_answers",
+    "make_sheet",
+    "markdown_to_html",
+    "solved_variant",
+    "student_seeds",
+]
+
+#: Exercises of a sheet when none are named: quick to solve, with numeric answers.
+DEFAULT_EXERCISES = ("2-3", "2-6", "2-20", "2-24")
+
+_GREEK = {
+    "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "epsilon", "η": "eta",
+    "θ": "theta", "λ": "lambda", "μ": "mu", "ρ": "rho", "φ": "phi", "ψ": "psi", "ω": "omega",
+}
+
+
+def _normal(text):
+    """Lower case, Greek letters spelt out, every other run of symbols one underscore."""
+    text = "".join(_GREEK.get(ch, ch) for ch in unicodedata.normalize("NFC", text.strip().lower()))
+    return re.sub(r"[^0-9a-z]+", "_", text).strip("_")
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A numeric answer of an exercise: its result name, the key to answer it by, its value
+    in the unit a student uses (degrees for angles) and that unit."""
+
+    name: str
+    key: str
+    value: float
+    unit: str
+
+
+_SYMBOL = re.compile(r"[A-Z][A-Za-z0-9]{0,3}|[A-Za-z][A-Za-z0-9]*_[A-Za-z0-9_]+|[α-ω](?:_[A-Za-z0-9]+)?")
+
+
+def _symbol(name):
+    """The first word of a result name that reads as a symbol (K, H, l_AB, γ_min), or None."""
+    for word in name.split():
+        word = word.strip("(),:;")
+        if _SYMBOL.fullmatch(word):
+            return word
+    return None
+
+
+def answer_quantities(solution):
+    """The numeric results of a :class:`~mech.exercises.Solution` as a tuple of `Quantity`.
+
+    Only finite real results count (not yes/no, text, joint sets or intervals). Angles are
+    given in degrees. A quantity's key is the symbol in its name, spelt in ASCII ("time
+    ratio K" -> ``K``, "crank angle θ" -> ``theta``) when no other quantity has the same
+    symbol, else its whole name as one word (``crank_angle_at_gamma_min``), numbered
+    ``_2``, ``_3`` ... if names repeat.
+    """
+    found = []
+    for r in solution.results():
+        v = r.value
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)):
+            continue
+        v = float(v)
+        if not math.isfinite(v):
+            continue
+        unit = r.unit
+        if unit == "rad":
+            v, unit = math.degrees(v), "deg"
+        found.append((r.name, v, unit))
+    symbols = [_symbol(name) for name, _, _ in found]
+    spelt = [None if s is None else "".join(_GREEK.get(ch, ch) for ch in s) for s in symbols]
+    out, used = [], set()
+    for (name, v, unit), key in zip(found, spelt):
+        if key is None or sum(_normal(k or "") == _normal(key) for k in spelt) > 1:
+            key = _normal(name) or "value"
+        base, n = key, 1
+        while _normal(key) in used:
+            n += 1
+            key = f"{base}_{n}"
+        used.add(_normal(key))
+        out.append(Quantity(name, key, v, unit))
+    return tuple(out)
+
+
+def _lookup(quantities, given, number):
+    """The quantity that the answer name ``given`` means (by key or full name)."""
+    want = _normal(given)
+    hits = [q for q in quantities if want == _normal(q.key)]
+    hits = hits or [q for q in quantities if want == _normal(q.name)]
+    if len(hits) == 1:
+        return hits[0]
+    keys = ", ".join(q.key for q in quantities)
+    several = [q.key for q in quantities if _symbol(q.name) and _normal(
+        "".join(_GREEK.get(ch, ch) for ch in _symbol(q.name))) == want]
+    if len(several) > 1:
+        raise ValueError(f"Expected one quantity of exercise {number} for the answer name {given!r}, "
+                         f"got several: {', '.join(several)}; use one of these keys")
+    raise ValueError(f"Expected an answer name of exercise {number} among {keys}, got {given!r}")
+
+
+def solved_variant(exercise, seed, *, max_tries=1000):
+    """Draw the variant of ``seed`` (as ``exercise.variant(seed)`` does) and solve it.
+
+    Returns ``(params, solution)``. The variant is solvable (the solver accepted it and
+    checked it by analysis: simulation, closure or the defining equations, as each exercise
+    states), and every numeric answer is finite; otherwise ``ValueError``.
+    """
+    params = exercise.variant(seed, max_tries=max_tries)
+    solution = exercise.solve(params)
+    bad = [r.name for r in solution.results()
+           if isinstance(r.value, (float, np.floating)) and not math.isfinite(float(r.value))]
+    if bad:
+        raise ValueError(f"Expected finite results for exercise {exercise.number} with seed {seed}, "
+                         f"got {bad[0]!r} = {solution[bad[0]].value}")
+    return params, solution
+
+
+def student_seeds(seed, students):
+    """The variant seed of each student of a class (a list of int, one per student).
+
+    Derived from the class ``seed`` by NumPy's ``SeedSequence``, so one class seed always
+    gives the same list, and lists for different class seeds are unrelated.
+    """
+    seed = integer("seed", seed, minimum=0)
+    students = integer("students", students, minimum=1, maximum=1000)
+    children = np.random.SeedSequence(seed).spawn(students)
+    return [int(c.generate_state(1, np.uint32)[0] >> 1) for c in children]
+
+
+def make_sheet(numbers=DEFAULT_EXERCISES, *, students=30, seed=0, title="Problem sheet"):
+    """Build a problem sheet and its answer key as two Markdown strings.
+
+    Parameters
+    ----------
+    numbers : sequence of str
+        Exercise numbers, e.g. ``("2-3", "2-6")``.
+    students : int
+        Number of students (1 to 1000); each gets their own variant of every exercise.
+    seed : int
+        The class seed; see `student_seeds`.
+    title : str
+        Heading of both documents.
+
+    Returns
+    -------
+    sheet, key : str
+        The problems (numbers only) and the answer key (every solution, with the numbers
+        to check and their keys for ``check``).
+    """
+    from mech.exercises import get
+
+    if isinstance(numbers, str):
+        numbers = (numbers,)
+    exercises = [get(n) for n in numbers]
+    if not exercises:
+        raise ValueError("Expected at least one exercise number, got none")
+    seeds = student_seeds(seed, students)
+    head = (f"Class seed {seed}, {students} students. Each student has a seed of their own: "
+            "`python -m mech.exercises check NUMBER --seed SEED --answer KEY=VALUE ...` "
+            "checks answers against it (angles in degrees).")
+    sheet = [f"# {title}", "", head, ""]
+    key = [f"# {title}: answer key", "", head, ""]
+    for k, s in enumerate(seeds, start=1):
+        sheet += [f"## Student {k:02d} (seed {s})", ""]
+        key += [f"## Student {k:02d} (seed {s})", ""]
+        for ex in exercises:
+            params, solution = solved_variant(ex, s)
+            quantities = answer_quantities(solution)
+            keys = "; ".join(f"`{q.key}` ({q.name})" for q in quantities)
+            sheet += [f"### Exercise {ex.number}: {ex.title}", "", ex.statement_text(params), ""]
+            if keys:
+                sheet += [f"Answer keys for `check`: {keys}.", ""]
+            key += [f"### Exercise {ex.number}", "", "| key | quantity | value |", "|---|---|---|"]
+            key += [f"| `{q.key}` | {q.name} | {q.value:.6g} {q.unit} |" for q in quantities]
+            key += ["", solution.as_markdown(), ""]
+    return "\n".join(sheet).rstrip() + "\n", "\n".join(key).rstrip() + "\n"
+
+
+def markdown_to_html(text, *, title="Problem sheet"):
+    """Convert the Markdown of a sheet to a standalone HTML page (markdown-it-py, tables,
+    ``$...$`` math kept as TeX in ``math`` elements; no file outside the page is loaded)."""
+    from html import escape
+
+    from markdown_it import MarkdownIt
+    from mdit_py_plugins.dollarmath import dollarmath_plugin
+
+    md = MarkdownIt("commonmark").enable("table").use(dollarmath_plugin)
+    body = md.render(text)
+    style = ("body{font-family:sans-serif;max-width:52em;margin:2em auto;line-height:1.45}"
+             "table{border-collapse:collapse}td,th{border:1px solid #999;padding:2px 6px}"
+             "h2{page-break-before:always;border-top:1px solid #ccc;padding-top:.5em}"
+             ".math{font-family:serif}")
+    return (f"<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+            f"<title>{escape(title)}</title>\n<style>{style}</style>\n</head>\n<body>\n{body}</body>\n</html>\n")
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One checked answer: the quantity, the number given, and whether it is right."""
+
+    quantity: Quantity
+    given: float
+    right: bool
+
+    def line(self):
+        q = self.quantity
+        unit = f" {q.unit}" if q.unit else ""
+        if self.right:
+            return f"right  {q.key} ({q.name}) = {self.given:g}{unit}"
+        sense = "too high" if self.given > q.value else "too low"
+        return f"WRONG  {q.key} ({q.name}) = {self.given:g}{unit}: {sense}"
+
+
+def check_answers(exercise, seed, answers, *, rtol=0.01, atol=0.01):
+    """Check a student's numbers for the variant ``seed`` of ``exercise``.
+
+    Parameters
+    ----------
+    exercise : Exercise
+    seed : int
+        The student's seed (as on their sheet, or as given to ``variant``).
+    answers : mapping or sequence of (str, float)
+        Answer names (keys as on the sheet, or full result names) and values; angles in
+        degrees.
+    rtol, atol : float
+        An answer is right when ``|given - value| <= rtol * |value| + atol`` (defaults: 1 %
+        plus 0.01 in the quantity's unit).
+
+    Returns
+    -------
+    tuple of Verdict
+
+    Raises
+    ------
+    ValueError
+        Naming an answer name that the exercise does not have, or a bad tolerance.
+    """
+    rtol = real_number("rtol", rtol)
+    atol = real_number("atol", atol)
+    if rtol < 0 or atol < 0 or rtol + atol == 0:
+        raise ValueError(f"Expected `rtol`, `atol` >= 0, not both zero, got rtol={rtol!r}, atol={atol!r}")
+    pairs = list(answers.items()) if hasattr(answers, "items") else list(answers)
+    if not pairs:
+        raise ValueError(f"Expected at least one answer NAME=VALUE for exercise {exercise.number}, got none")
+    _, solution = solved_variant(exercise, seed)
+    quantities = answer_quantities(solution)
+    out = []
+    for name, value in pairs:
+        q = _lookup(quantities, name, exercise.number)
+        value = real_number(name, value)
+        out.append(Verdict(q, value, bool(abs(value - q.value) <= rtol * abs(q.value) + atol)))
+    return tuple(out)
