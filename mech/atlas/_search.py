@@ -1,0 +1,261 @@
+"""Search an atlas for the four-bars whose coupler curves look like a target (issue 13, item 4).
+
+Two stages. The signature stage ranks every atlas entry by the distance from its signature
+to the nearest of the target's four normal forms (brute force on NumPy blocks). The
+alignment stage takes a short list from it, rebuilds each curve, and finds the similarity,
+start and direction that bring it closest to the target exactly, by FFT cross-correlation
+over all starts (with band-limited interpolation between samples); it ranks by the remaining
+RMS distance and places each linkage, and its two Roberts-Chebyshev cognates, on the target.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from mech._validate import bool_flag, instance, integer, planar_points
+from mech.atlas._signature import _curves, _resample_rows, normal_form
+from mech.atlas._store import Atlas
+from mech.planar.kinematics._fourbar import FourBar
+
+__all__ = ["Match", "PlacedLinkage", "query"]
+
+_BLOCK = 1 << 15
+_UPSAMPLE = 16
+
+
+@dataclass(frozen=True)
+class PlacedLinkage:
+    """A four-bar in its standard frame and the similarity that places it on the target.
+
+    Attributes
+    ----------
+    name : str
+        "ABCD" for the match itself, "AEGK" and "DFHK" for its cognates (Fig. 2-32).
+    fourbar : FourBar
+        The linkage at the target's scale, in its standard frame (A = 0, D = d on +x).
+    origin : complex
+        Where the crank pivot A lies in the target's frame.
+    rotation : float
+        Angle of the ground line A->D in the target's frame, radians.
+    """
+
+    name: str
+    fourbar: FourBar
+    origin: complex
+    rotation: float
+
+    def place(self, z):
+        """Map standard-frame points `z` into the target's frame: ``origin + exp(1j*rotation)*z``."""
+        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
+
+    @property
+    def pivots(self):
+        """The two ground pivots A and D in the target's frame."""
+        return self.origin, self.origin + np.exp(1j * self.rotation) * self.fourbar.d
+
+
+@dataclass(frozen=True)
+class Match:
+    """One linkage found by `query`, placed on the target.
+
+    Attributes
+    ----------
+    rank : int
+        0 for the best match.
+    index : int
+        Its row in the atlas.
+    linkage : PlacedLinkage
+        The match, scaled and placed so that its coupler curve lies on the target.
+    cognates : tuple of PlacedLinkage
+        Its two Roberts-Chebyshev cognates AEGK and DFHK, placed on the target (they trace
+        the same curve); empty if the coupler point lies on a pin (no cognates).
+    direction : int
+        +1 if the target is run in the direction of the stored curve (input angle
+        increasing along the curve as sampled), -1 if against it.
+    error : float
+        RMS distance between the target and the placed coupler curve, both at equal
+        arc-length steps and best aligned, in the target's units.
+    relative_error : float
+        `error` over the RMS distance of the target from its centroid.
+    distance : float
+        Distance of the signatures (the first stage's ranking).
+    kind : str
+        Grashof type.
+    gamma_min : float
+        Smallest transmission angle over the input range, radians.
+    full_turn : bool
+        True if the crank turns fully; otherwise it rocks over `theta_range`.
+    theta_range : (float, float)
+        Input range, radians.
+    curve : ndarray of complex, shape (samples,)
+        The placed coupler curve at the atlas's equal arc-length steps (for drawing).
+    """
+
+    rank: int
+    index: int
+    linkage: PlacedLinkage
+    cognates: tuple
+    direction: int
+    error: float
+    relative_error: float
+    distance: float
+    kind: str
+    gamma_min: float
+    full_turn: bool
+    theta_range: tuple
+    curve: np.ndarray
+
+
+def _signature_distances(signatures, candidates):
+    """Smallest distance from each row of `signatures` to any of `candidates` (4, D)."""
+    out = np.empty(signatures.shape[0])
+    cc = np.sum(candidates**2, axis=1)
+    for start in range(0, signatures.shape[0], _BLOCK):
+        s = signatures[start:start + _BLOCK]
+        d2 = np.sum(s**2, axis=1)[:, None] - 2.0 * (s @ candidates.T) + cc[None, :]
+        out[start:start + _BLOCK] = np.min(d2, axis=1)
+    return np.sqrt(np.maximum(out, 0.0))
+
+
+def _align(target, curves):
+    """Best similarity, start and direction of each curve onto the target (all (N,) samples).
+
+    Returns (residual RMS, w, direction, centroid of curve) per row; the target point
+    nearest ``w * (z - centroid) + centroid(target)`` with z on the curve.
+    """
+    n = target.shape[0]
+    t = target - target.mean()
+    T = np.fft.fft(t)
+    tt = np.sum(np.abs(t) ** 2)
+    k = np.fft.fftfreq(n, 1.0 / n).astype(int)
+    keep = np.abs(k) < n // 2 if n % 2 == 0 else np.ones(n, bool)
+    results = []
+    for direction in (1, -1):
+        z = curves if direction == 1 else np.roll(curves[:, ::-1], 1, axis=1)
+        centroid = z.mean(axis=1)
+        a = z - centroid[:, None]
+        A = np.fft.fft(a, axis=1)
+        aa = np.sum(np.abs(a) ** 2, axis=1)
+        X = np.zeros((a.shape[0], n * _UPSAMPLE), dtype=complex)
+        X[:, k[keep] % (n * _UPSAMPLE)] = np.conj(A[:, keep]) * T[keep]
+        r = np.fft.fft(X, axis=1) / n                     # r[s] = sum_j conj(a[j + s/U]) t[j]
+        best = np.argmax(np.abs(r), axis=1)
+        rb = r[np.arange(a.shape[0]), best]
+        resid = np.maximum(tt - np.abs(rb) ** 2 / aa, 0.0)
+        results.append((np.sqrt(resid / n), rb / aa, centroid))
+    pick = results[0][0] <= results[1][0]
+    err = np.where(pick, results[0][0], results[1][0])
+    w = np.where(pick, results[0][1], results[1][1])
+    centroid = np.where(pick, results[0][2], results[1][2])
+    return err, w, np.where(pick, 1, -1), centroid, np.sqrt(tt / n)
+
+
+def _scaled(a, b, c, d, p, q, branch, s):
+    return FourBar(a * s, b * s, c * s, d * s, branch=branch, coupler=(p * s, q * s))
+
+
+def _placed_cognates(fourbar, origin, w):
+    from mech.planar.coupler._cognates import cognates
+
+    try:
+        trio = cognates(fourbar)
+    except ValueError:                      # the coupler point on a pin: no cognates
+        return ()
+    out = []
+    for cog in (trio.aegk, trio.dfhk):
+        f = cog.fourbar
+        out.append(PlacedLinkage(cog.name, _scaled(f.a, f.b, f.c, f.d, *f.coupler, f.branch, abs(w)),
+                                 complex(origin + w * cog.origin), float(np.angle(w * cog.rotation))))
+    return tuple(out)
+
+
+def query(atlas, target, *, k=5, shortlist=64, resampled=False):
+    """Find the four-bars of an atlas whose coupler curves best match a closed target curve.
+
+    Parameters
+    ----------
+    atlas : Atlas
+        The atlas to search (`build_atlas`, `Atlas.from_parquet`).
+    target : array_like, complex, shape (m,)
+        Points ``x + 1j*y`` along a closed curve, in order, m >= 3; any placement, size,
+        start and direction (read a CSV file with `read_points`).
+    k : int, optional
+        Number of matches returned, 1 <= k <= shortlist.
+    shortlist : int, optional
+        Entries taken from the signature stage to the exact alignment stage.
+    resampled : bool, optional
+        True if `target` is already at equal arc-length steps (used as given).
+
+    Returns
+    -------
+    list of Match
+        Best first, by the RMS distance between the target and the placed coupler curve.
+
+    Raises
+    ------
+    ValueError
+        For a target that is not finite points, has fewer than 3 or all equal, or bad
+        options (named).
+
+    Notes
+    -----
+    The signature stage compares each atlas signature with all four normal forms of the
+    target (:ref:`deriv-shape-signature`), so it needs no tie-break; the alignment stage
+    then removes the normalisation's sensitivity (a nearly circular first harmonic) by
+    aligning exactly. Matches are linkages of the atlas scaled, turned and moved; their
+    cognates trace the same curve with other pivots.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.atlas import build_atlas, query
+    >>> atlas = build_atlas(300, seed=2)
+    >>> curve = atlas.curves(17)[0]                     # a curve of the atlas, moved
+    >>> target = 5 + 2j + 3 * np.exp(1j) * np.roll(curve, 40)[::-1]
+    >>> best = query(atlas, target, k=3)[0]
+    >>> best.index, best.relative_error < 1e-3
+    (17, True)
+    >>> len(best.cognates)
+    2
+    """
+    instance("atlas", atlas, Atlas)
+    k = integer("k", k, minimum=1, maximum=10**4)
+    shortlist = integer("shortlist", shortlist, minimum=1, maximum=10**5)
+    resampled = bool_flag("resampled", resampled)
+    if k > shortlist:
+        raise ValueError(f"Expected `k` <= shortlist = {shortlist}, got {k}")
+    z, lead = _curves(target, True)
+    if lead != (1,) and lead != ():
+        raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
+    n = atlas.samples
+    if resampled:
+        if z.shape[1] != n:
+            raise ValueError(f"Expected {n} points in a resampled `target` (the atlas's samples), got {z.shape[1]}")
+        t = z
+    else:
+        t = _resample_rows(z, n, True)
+    form = normal_form(t, atlas.harmonics)
+    dist = _signature_distances(atlas.signatures, form.candidates[0])
+    m = min(shortlist, len(atlas))
+    short = np.argpartition(dist, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    curves = _resample_rows(atlas.curves(short), n, True)
+    err, w, direction, centroid, radius = _align(t[0], curves)
+    order = np.argsort(err, kind="stable")[:k]
+    cols = atlas.linkages
+    out = []
+    for rank, j in enumerate(order):
+        row = int(short[j])
+        s = abs(w[j])
+        origin = t[0].mean() - w[j] * centroid[j]
+        fb = _scaled(cols.a[row], cols.b[row], cols.c[row], cols.d[row], cols.p[row], cols.q[row],
+                     int(cols.branch[row]), s)
+        unit = FourBar(cols.a[row], cols.b[row], cols.c[row], cols.d[row], branch=int(cols.branch[row]),
+                       coupler=(cols.p[row], cols.q[row]))
+        out.append(Match(rank, row, PlacedLinkage("ABCD", fb, complex(origin), float(np.angle(w[j]))),
+                         _placed_cognates(unit, origin, w[j]), int(direction[j]), float(err[j]),
+                         float(err[j] / radius), float(dist[row]), str(cols.kind[row]),
+                         float(cols.gamma_min[row]), bool(cols.full_turn[row]),
+                         (float(cols.theta_lo[row]), float(cols.theta_hi[row])), origin + w[j] * curves[j]))
+    return out
+
+
