@@ -16,6 +16,7 @@ import numpy as np
 from mech._generated.fourbar_position import fourbar_assembly_gaps, fourbar_position
 from mech._generated.grashof import grashof_margins
 from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal, fourbar_transmission
+from mech._errors import InputTypeError
 from mech._validate import _show, branch_sign, integer, nonnegative_number, real_tuple
 from mech.planar.kinematics._fourbar import FourBar
 
@@ -76,8 +77,9 @@ class FourBarSamples:
         return int(self.a.shape[0])
 
     def take(self, index):
-        """The samples at `index` (an integer array or a boolean mask), as a new record."""
-        return FourBarSamples(**{f.name: getattr(self, f.name)[index] for f in fields(self)})
+        """The samples at `index` (integers, or a boolean mask of length n), as a new record."""
+        return FourBarSamples(**{f.name: getattr(self, f.name)[rows("index", index, len(self))]
+                                 for f in fields(self)})
 
     def columns(self):
         """The fields as a dict of arrays, in declaration order."""
@@ -106,6 +108,26 @@ class FourBarSamples:
         """
         samples = integer("samples", samples, minimum=4, maximum=1 << 16)
         return coupler_curves(self.columns(), samples)
+
+
+def rows(name, index, n):
+    """Check row numbers (an integer, integers, or a boolean mask of length n) of a table of n rows."""
+    if isinstance(index, (int, np.integer)) and not isinstance(index, (bool, np.bool_)):
+        index = [index]
+    if isinstance(index, (bool, np.bool_)) or index is None or isinstance(index, (str, bytes, dict)):
+        raise InputTypeError(f"Expected `{name}` to be row numbers or a boolean mask, got {_show(index)}")
+    try:
+        arr = np.asarray(index)
+    except Exception:
+        raise InputTypeError(f"Expected `{name}` to be row numbers or a boolean mask, got {_show(index)}") from None
+    if arr.dtype.kind == "b" and arr.shape == (n,):
+        return arr
+    if arr.dtype.kind not in "iu" or arr.ndim != 1:
+        raise InputTypeError(f"Expected `{name}` to be row numbers or a boolean mask of length {n}, "
+                             f"got {_show(index)}")
+    if np.any((arr < -n) | (arr >= n)):
+        raise ValueError(f"Expected `{name}` in [-{n}, {n}), got {_show(index)}")
+    return arr
 
 
 def _input_ranges(a, b, c, d, branch):

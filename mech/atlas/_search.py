@@ -21,6 +21,9 @@ __all__ = ["Match", "PlacedLinkage", "query"]
 
 _BLOCK = 1 << 15
 _UPSAMPLE = 16
+_DENSE = 4
+_REFINE = 8
+_LEVELS = 6
 
 
 @dataclass(frozen=True)
@@ -118,36 +121,47 @@ def _signature_distances(signatures, candidates):
 
 
 def _align(target, curves):
-    """Best similarity, start and direction of each curve onto the target (all (N,) samples).
+    """Best start and direction of each curve against the target (all rows of N samples).
 
-    Returns (residual RMS, w, direction, centroid of curve) per row; the target point
-    nearest ``w * (z - centroid) + centroid(target)`` with z on the curve.
+    By FFT cross-correlation over all starts, `_UPSAMPLE` per sample step (band-limited
+    interpolation): returns the direction (+1, -1) and the start, as a fraction of the
+    curve's length, that maximise the correlation, per row.
     """
     n = target.shape[0]
-    t = target - target.mean()
-    T = np.fft.fft(t)
-    tt = np.sum(np.abs(t) ** 2)
+    T = np.fft.fft(target - target.mean())
     k = np.fft.fftfreq(n, 1.0 / n).astype(int)
     keep = np.abs(k) < n // 2 if n % 2 == 0 else np.ones(n, bool)
-    results = []
+    best = []
     for direction in (1, -1):
         z = curves if direction == 1 else np.roll(curves[:, ::-1], 1, axis=1)
-        centroid = z.mean(axis=1)
-        a = z - centroid[:, None]
+        a = z - z.mean(axis=1)[:, None]
         A = np.fft.fft(a, axis=1)
-        aa = np.sum(np.abs(a) ** 2, axis=1)
         X = np.zeros((a.shape[0], n * _UPSAMPLE), dtype=complex)
         X[:, k[keep] % (n * _UPSAMPLE)] = np.conj(A[:, keep]) * T[keep]
-        r = np.fft.fft(X, axis=1) / n                     # r[s] = sum_j conj(a[j + s/U]) t[j]
-        best = np.argmax(np.abs(r), axis=1)
-        rb = r[np.arange(a.shape[0]), best]
-        resid = np.maximum(tt - np.abs(rb) ** 2 / aa, 0.0)
-        results.append((np.sqrt(resid / n), rb / aa, centroid))
-    pick = results[0][0] <= results[1][0]
-    err = np.where(pick, results[0][0], results[1][0])
-    w = np.where(pick, results[0][1], results[1][1])
-    centroid = np.where(pick, results[0][2], results[1][2])
-    return err, w, np.where(pick, 1, -1), centroid, np.sqrt(tt / n)
+        r = np.abs(np.fft.fft(X, axis=1))            # |sum_j conj(a[j + s/U]) t[j]| over s
+        s = np.argmax(r, axis=1)
+        best.append((r[np.arange(a.shape[0]), s] / np.sqrt(np.sum(np.abs(a) ** 2, axis=1)), s))
+    pick = best[0][0] >= best[1][0]
+    direction = np.where(pick, 1, -1)
+    start = np.where(pick, best[0][1], best[1][1]) / (n * _UPSAMPLE)
+    return direction, start
+
+
+def _fit(target, dense, direction, start):
+    """Similarity of each dense curve, run in `direction` from `start`, onto the target.
+
+    Returns (RMS error, w, centroid): target point j is nearest ``centroid(target) +
+    w * (z_j - centroid)`` with z_j the curve's j-th equal arc-length point.
+    """
+    n = target.shape[0]
+    oriented = np.where(direction[:, None] == 1, dense, np.roll(dense[:, ::-1], 1, axis=1))
+    z = _resample_rows(oriented, n, True, offset=start)
+    centroid = z.mean(axis=1)
+    a = z - centroid[:, None]
+    t = target - target.mean()
+    w = (a.conj() @ t) / np.sum(np.abs(a) ** 2, axis=1)
+    err = np.sqrt(np.mean(np.abs(t[None, :] - w[:, None] * a) ** 2, axis=1))
+    return err, w, centroid, np.sqrt(np.mean(np.abs(t) ** 2)), z
 
 
 def _scaled(a, b, c, d, p, q, branch, s):
@@ -213,7 +227,7 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False):
     >>> curve = atlas.curves(17)[0]                     # a curve of the atlas, moved
     >>> target = 5 + 2j + 3 * np.exp(1j) * np.roll(curve, 40)[::-1]
     >>> best = query(atlas, target, k=3)[0]
-    >>> best.index, best.relative_error < 1e-3
+    >>> best.index, best.relative_error < 1e-2
     (17, True)
     >>> len(best.cognates)
     2
@@ -224,7 +238,7 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False):
     resampled = bool_flag("resampled", resampled)
     if k > shortlist:
         raise ValueError(f"Expected `k` <= shortlist = {shortlist}, got {k}")
-    z, lead = _curves(target, True)
+    z, lead = _curves(target, True, "target")
     if lead != (1,) and lead != ():
         raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
     n = atlas.samples
@@ -238,8 +252,22 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False):
     dist = _signature_distances(atlas.signatures, form.candidates[0])
     m = min(shortlist, len(atlas))
     short = np.argpartition(dist, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
-    curves = _resample_rows(atlas.curves(short), n, True)
-    err, w, direction, centroid, radius = _align(t[0], curves)
+    dense = atlas.curves(short, _DENSE * n)
+    direction, start = _align(t[0], _resample_rows(dense, n, True))
+    err = _fit(t[0], dense, direction, start)[0]
+    # refine the start of the best few by bisection on the exact error (the FFT peak of a
+    # curve that is not band-limited can be off by a fraction of a sample step)
+    best = np.argsort(err, kind="stable")[:max(k, _REFINE)]
+    short, dense, direction, start = short[best], dense[best], direction[best], start[best]
+    err = err[best]
+    step = 0.5 / n
+    for _ in range(_LEVELS):
+        for trial in (start - step, start + step):
+            e = _fit(t[0], dense, direction, trial % 1.0)[0]
+            better = e < err
+            start, err = np.where(better, trial % 1.0, start), np.where(better, e, err)
+        step *= 0.5
+    err, w, centroid, radius, curves = _fit(t[0], dense, direction, start)
     order = np.argsort(err, kind="stable")[:k]
     cols = atlas.linkages
     out = []

@@ -22,19 +22,19 @@ HARMONICS = 8
 _MAX_SAMPLES = 1 << 16
 
 
-def _curves(points, closed):
+def _curves(points, closed, name="points"):
     """Check a curve or a stack of curves; return them as a 2-D complex array and the lead shape."""
-    z = planar_points("points", points)
+    z = planar_points(name, points)
     least = 3 if closed else 2
     if z.ndim == 0 or z.shape[-1] < least:
-        raise ValueError(f"Expected `points` of shape (..., m) with m >= {least}, got shape {z.shape}")
+        raise ValueError(f"Expected `{name}` of shape (..., m) with m >= {least}, got shape {z.shape}: {_show(points)}")
     lead = z.shape[:-1]
     flat = z.reshape(-1, z.shape[-1])
     span = np.max(np.abs(flat - flat[:, :1]), axis=1)
     if not np.all(span > 0.0):
         row = int(np.flatnonzero(~(span > 0.0))[0])
         where = f" (curve {row})" if lead else ""
-        raise ValueError(f"Expected `points` that are not all equal{where}, got {_show(flat[row])}")
+        raise ValueError(f"Expected `{name}` that are not all equal{where}, got {_show(flat[row])}")
     return flat, lead
 
 
@@ -47,8 +47,11 @@ def _samples(samples, *, even=False, harmonics=None):
     return samples
 
 
-def _resample_rows(z, n, closed):
-    """Points at `n` equal arc-length steps along each row of `z` (rows checked already)."""
+def _resample_rows(z, n, closed, offset=None):
+    """Points at `n` equal arc-length steps along each row of `z` (rows checked already).
+
+    A closed row may start `offset[i]` of its length after its first point.
+    """
     if closed:
         z = np.concatenate([z, z[:, :1]], axis=1)
     seg = np.abs(np.diff(z, axis=1))
@@ -57,7 +60,8 @@ def _resample_rows(z, n, closed):
     last = seg.shape[1] - 1
     out = np.empty((z.shape[0], n), dtype=complex)
     for i in range(z.shape[0]):
-        s = fractions * cum[i, -1]
+        f = fractions if offset is None else (fractions + offset[i]) % 1.0
+        s = f * cum[i, -1]
         j = np.clip(np.searchsorted(cum[i], s, side="right") - 1, 0, last)
         length = seg[i, j]
         f = np.divide(s - cum[i, j], length, out=np.zeros(n), where=length > 0.0)

@@ -67,10 +67,13 @@ class Atlas:
         return int(self.settings["samples"])
 
     def curves(self, index, samples=None):
-        """Closed coupler curves of the rows `index`, shape (len(index), samples), complex."""
+        """Closed coupler curves of the rows `index`, shape (rows, samples), complex.
+
+        `index` is a row number, row numbers or a boolean mask; `samples` defaults to the
+        atlas's (see `FourBarSamples.curves` for how the input is stepped).
+        """
         samples = self.samples if samples is None else integer("samples", samples, minimum=4, maximum=1 << 16)
-        rows = self.linkages.take(np.atleast_1d(np.asarray(index, dtype=np.int64)))
-        return coupler_curves(rows.columns(), samples)
+        return coupler_curves(self.linkages.take(index).columns(), samples)
 
     def to_parquet(self, path, *, append=False):
         """Write the atlas to the folder `path` as one new Parquet part.
