@@ -1188,6 +1188,9 @@ CASES.update({
     "atlas.query": E(lambda: functools.partial(at.query, _small_atlas()),
                      {"target": "point", "k": "count", "shortlist": "count", "resampled": "bool"},
                      target=_SQUARE, k=2, shortlist=8, resampled=False),
+    "atlas.refine": E(lambda: functools.partial(at.refine, at.query(_small_atlas(), _SQUARE, k=1)[0]),
+                      {"target": "point", "samples": "count", "iterations": "count"},
+                      target=_SQUARE, samples=32, iterations=3),
     "atlas.PlacedLinkage.place": E(lambda: at.query(_small_atlas(), _SQUARE, k=1)[0].linkage.place,
                                    {"z": "point"}, z=[0.0, 1 + 1j]),
 })

@@ -13,11 +13,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import bool_flag, instance, integer, planar_points
-from mech.atlas._signature import _curves, _resample_rows, normal_form
+from mech.atlas._signature import _curves, _resample_rows, _samples, normal_form
 from mech.atlas._store import Atlas
 from mech.planar.kinematics._fourbar import FourBar
 
-__all__ = ["Match", "PlacedLinkage", "query"]
+__all__ = ["Match", "PlacedLinkage", "query", "refine"]
 
 _BLOCK = 1 << 15
 _UPSAMPLE = 16
@@ -92,6 +92,9 @@ class Match:
         Input range, radians.
     curve : ndarray of complex, shape (samples,)
         The placed coupler curve at the atlas's equal arc-length steps (for drawing).
+    refined : bool
+        True for a match returned by `refine` (its linkage is no longer the atlas row
+        `index`, from which the refinement started).
     """
 
     rank: int
@@ -107,6 +110,7 @@ class Match:
     full_turn: bool
     theta_range: tuple
     curve: np.ndarray
+    refined: bool = False
 
 
 def _signature_distances(signatures, candidates):
@@ -253,37 +257,138 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False):
     m = min(shortlist, len(atlas))
     short = np.argpartition(dist, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
     dense = atlas.curves(short, _DENSE * n)
-    direction, start = _align(t[0], _resample_rows(dense, n, True))
-    err = _fit(t[0], dense, direction, start)[0]
+    err, w, centroid, radius, curves, direction = _best_fits(t[0], dense, max(k, _REFINE))
+    return [_match(rank, int(short[j]), atlas.linkages.take([short[j]]), t[0], w[j], centroid[j], err[j],
+                   radius, direction[j], float(dist[short[j]]), curves[j])
+            for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+
+
+def _best_fits(t, dense, keep, levels=None):
+    """Align every dense curve with the target `t` (N,): start and direction by FFT for all,
+    then bisection on the exact error for the best `keep`. Returns arrays over all rows
+    (error, w, centroid, radius, placed-frame samples, direction); rows past the best
+    `keep` have the unrefined error."""
+    n = t.shape[0]
+    direction, start = _align(t, _resample_rows(dense, n, True))
+    err = _fit(t, dense, direction, start)[0]
     # refine the start of the best few by bisection on the exact error (the FFT peak of a
     # curve that is not band-limited can be off by a fraction of a sample step)
-    best = np.argsort(err, kind="stable")[:max(k, _REFINE)]
-    short, dense, direction, start = short[best], dense[best], direction[best], start[best]
-    err = err[best]
+    best = np.argsort(err, kind="stable")[:keep]
     step = 0.5 / n
-    for _ in range(_LEVELS):
-        for trial in (start - step, start + step):
-            e = _fit(t[0], dense, direction, trial % 1.0)[0]
-            better = e < err
-            start, err = np.where(better, trial % 1.0, start), np.where(better, e, err)
+    for _ in range(_LEVELS if levels is None else levels):
+        for trial in (start[best] - step, start[best] + step):
+            e = _fit(t, dense[best], direction[best], trial % 1.0)[0]
+            better = e < err[best]
+            start[best] = np.where(better, trial % 1.0, start[best])
+            err[best] = np.where(better, e, err[best])
         step *= 0.5
-    err, w, centroid, radius, curves = _fit(t[0], dense, direction, start)
-    order = np.argsort(err, kind="stable")[:k]
-    cols = atlas.linkages
-    out = []
-    for rank, j in enumerate(order):
-        row = int(short[j])
-        s = abs(w[j])
-        origin = t[0].mean() - w[j] * centroid[j]
-        fb = _scaled(cols.a[row], cols.b[row], cols.c[row], cols.d[row], cols.p[row], cols.q[row],
-                     int(cols.branch[row]), s)
-        unit = FourBar(cols.a[row], cols.b[row], cols.c[row], cols.d[row], branch=int(cols.branch[row]),
-                       coupler=(cols.p[row], cols.q[row]))
-        out.append(Match(rank, row, PlacedLinkage("ABCD", fb, complex(origin), float(np.angle(w[j]))),
-                         _placed_cognates(unit, origin, w[j]), int(direction[j]), float(err[j]),
-                         float(err[j] / radius), float(dist[row]), str(cols.kind[row]),
-                         float(cols.gamma_min[row]), bool(cols.full_turn[row]),
-                         (float(cols.theta_lo[row]), float(cols.theta_hi[row])), origin + w[j] * curves[j]))
-    return out
+    err, w, centroid, radius, curves = _fit(t, dense, direction, start)
+    return err, w, centroid, radius, curves, direction
 
 
+def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, curve, refined=False):
+    """The `Match` of one linkage (a one-row FourBarSamples) placed by ``z -> origin + w z``."""
+    a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
+    branch = int(row.branch[0])
+    origin = t.mean() - w * centroid
+    s = abs(w)
+    unit = FourBar(a, b, c, d, branch=branch, coupler=(p, q))
+    return Match(rank, index, PlacedLinkage("ABCD", _scaled(a, b, c, d, p, q, branch, s), complex(origin),
+                                            float(np.angle(w))),
+                 _placed_cognates(unit, origin, w), int(direction), float(err), float(err / radius), distance,
+                 str(row.kind[0]), float(row.gamma_min[0]), bool(row.full_turn[0]),
+                 (float(row.theta_lo[0]), float(row.theta_hi[0])), origin + w * curve, refined)
+
+
+
+
+def _refine_objective(t, branch, dense_samples):
+    """Relative RMS error of the best-aligned curve for x = (log a, log b, log c, u, v), rows of X."""
+    from mech.atlas._sampling import coupler_curves, describe
+
+    def objective(X):
+        X = np.asarray(X, dtype=float)
+        flat = X.reshape(-1, 5)
+        out = np.full(flat.shape[0], np.inf)
+        a, b, c = np.exp(flat[:, 0]), np.exp(flat[:, 1]), np.exp(flat[:, 2])
+        rows = describe(a, b, c, np.ones_like(a), b * flat[:, 3], b * flat[:, 4], np.full(a.shape, branch))
+        ok = np.flatnonzero(rows.movable)
+        if ok.size:
+            dense = coupler_curves(rows.take(ok).columns(), dense_samples)
+            fine = np.all(np.isfinite(dense), axis=1)
+            if fine.any():
+                err, *_, radius, _, _ = _best_fits(t, dense[fine], ok.size, levels=3)
+                out[ok[fine]] = err / radius
+        return out.reshape(X.shape[:-1])
+
+    return objective
+
+
+def refine(match, target, *, samples=128, iterations=400):
+    """Refine a match by optimisation on the real curve error (the path synthesis of chapter 2).
+
+    Starting from the matched linkage, the crank, coupler and rocker (as ratios to the ground)
+    and the coupler point are moved by a Nelder-Mead search (`mech.planar.synthesis`'s
+    `penalty_method` on a `DesignModel`) to reduce the RMS distance between the target and
+    the coupler curve, best aligned (placement, scale, start and direction) at every step.
+
+    Parameters
+    ----------
+    match : Match
+        A result of `query` (its branch is kept).
+    target : array_like, complex, shape (m,)
+        The closed target curve given to `query`.
+    samples : int, optional
+        Equal arc-length steps at which the curves are compared.
+    iterations : int, optional
+        Largest number of simplex iterations.
+
+    Returns
+    -------
+    Match
+        With ``refined=True``, the refined linkage placed on the target, its error, type,
+        minimum transmission angle and cognates; the starting match if no better one was
+        found.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.atlas import build_atlas, query, refine
+    >>> from mech.planar import FourBar
+    >>> t = np.linspace(0, 2 * np.pi, 400, endpoint=False)
+    >>> target = FourBar(1.0, 2.7, 2.4, 3.1, coupler=(1.5, 0.8)).solve(t).P   # not in the atlas
+    >>> first = query(build_atlas(2000, seed=3), target, k=1)[0]
+    >>> better = refine(first, target, iterations=150)
+    >>> better.refined, better.relative_error < first.relative_error
+    (True, True)
+    """
+    from mech.planar.synthesis import DesignModel, penalty_method
+
+    instance("match", match, Match)
+    samples = _samples(samples, harmonics=1)
+    iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
+    z, lead = _curves(target, True, "target")
+    if lead not in ((), (1,)):
+        raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
+    t = _resample_rows(z, samples, True)[0]
+    f = match.linkage.fourbar
+    branch = f.branch
+    x0 = np.array([np.log(f.a / f.d), np.log(f.b / f.d), np.log(f.c / f.d), f.coupler[0] / f.b, f.coupler[1] / f.b])
+    width = np.array([1.5, 1.5, 1.5, 1.0, 1.0])
+    model = DesignModel(_refine_objective(t, branch, _DENSE * samples), np.stack([x0 - width, x0 + width], axis=1),
+                        names=("log a", "log b", "log c", "u", "v"))
+    start = float(model.f(x0))
+    if not np.isfinite(start):
+        return match
+    result = penalty_method(model, x0, r0=1e-12, stages=1, iterations=iterations, step=0.05, ftol=1e-10)
+    if not result.fun < start:
+        return match
+    from mech.atlas._sampling import coupler_curves, describe
+
+    x = result.x
+    a, b, c = np.exp(x[:3])
+    row = describe([a], [b], [c], [1.0], [b * x[3]], [b * x[4]], [branch])
+    dense = coupler_curves(row.columns(), _DENSE * samples)
+    err, w, centroid, radius, curves, direction = _best_fits(t, dense, 1)
+    return _match(match.rank, match.index, row, t, w[0], centroid[0], err[0], radius, direction[0],
+                  match.distance, curves[0], refined=True)

@@ -123,3 +123,36 @@ def test_query_bad_inputs_named(atlas, kwargs, message):
 def test_query_atlas_type():
     with pytest.raises(TypeError, match="Expected `atlas` to be a Atlas"):
         query("atlas.parquet", [0, 1, 1j])
+
+
+def test_refine_improves_a_linkage_not_in_the_atlas(atlas):
+    """A four-bar outside the atlas: refinement lowers the error of the best matches."""
+    from mech.atlas import refine
+
+    u = np.linspace(0, 2 * np.pi, 400, endpoint=False)
+    target = 3 - 1j + 2.0 * np.exp(0.4j) * FourBar(1.0, 2.7, 2.4, 3.1, coupler=(1.5, 0.8)).solve(u).P
+    first = query(atlas, target, k=2)
+    for m in first:
+        better = refine(m, target, iterations=120)
+        assert better.refined and better.relative_error < m.relative_error
+        assert better.rank == m.rank and better.index == m.index
+        # the refined linkage really traces the reported curve, placed on the target
+        f = better.linkage.fourbar
+        lo, hi = better.theta_range
+        theta = u if better.full_turn else 0.5 * (lo + hi) + 0.5 * (hi - lo) * np.sin(u)
+        P = np.concatenate([f.solve(theta).P, FourBar(f.a, f.b, f.c, f.d, branch=-f.branch,
+                                                      coupler=f.coupler).solve(theta).P])
+        P = better.linkage.place(P[np.isfinite(P)])
+        assert np.max(np.min(np.abs(better.curve[:, None] - P[None, :]), axis=1)) < 0.05 * abs(f.d)
+
+
+def test_refine_bad_inputs_named(atlas):
+    from mech.atlas import refine
+
+    m = query(atlas, [0, 1, 1 + 1j, 1j], k=1)[0]
+    with pytest.raises(TypeError, match="Expected `match`"):
+        refine("m", [0, 1, 1j])
+    with pytest.raises(ValueError, match="Expected `iterations`"):
+        refine(m, [0, 1, 1j], iterations=0)
+    with pytest.raises(ValueError, match="Expected `target` that are not all equal"):
+        refine(m, [1, 1, 1])
