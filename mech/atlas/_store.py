@@ -12,6 +12,7 @@ import json
 import os
 import time
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -55,6 +56,11 @@ class Atlas:
 
     def __len__(self):
         return len(self.linkages)
+
+    @cached_property
+    def _norms(self):
+        """Squared norms of the signatures (the search's brute force reuses them)."""
+        return np.einsum("ij,ij->i", self.signatures, self.signatures)
 
     @property
     def harmonics(self):
