@@ -47,6 +47,24 @@ class Atlas:
     settings : dict
         ``version``, ``harmonics``, ``samples`` (arc-length points per curve), ``lengths``,
         ``coupler`` and ``min_transmission`` of the builds.
+
+    Notes
+    -----
+    On disk an atlas is a folder of Parquet parts (pyarrow, imported only to read or write);
+    `to_parquet` with ``append=True`` adds a part built with other seeds, and parts of
+    another format version (`ATLAS_VERSION`) or other settings are refused. Signatures are
+    derived in :ref:`deriv-shape-signature`.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from mech.atlas import Atlas, build_atlas
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     _ = build_atlas(100, seed=1).to_parquet(folder)
+    ...     _ = build_atlas(50, seed=2).to_parquet(folder, append=True)
+    ...     atlas = Atlas.from_parquet(folder)
+    >>> len(atlas), sorted(set(atlas.seeds.tolist()))
+    (150, [1, 2])
     """
 
     linkages: FourBarSamples
