@@ -3,9 +3,10 @@
 Two stages. The signature stage ranks every atlas entry by the distance from its signature
 to the nearest of the target's four normal forms (brute force on NumPy blocks). The
 alignment stage takes a short list from it, rebuilds each curve, and finds the similarity,
-start and direction that bring it closest to the target exactly, by FFT cross-correlation
-over all starts (with band-limited interpolation between samples); it ranks by the remaining
-RMS distance and places each linkage, and its two Roberts-Chebyshev cognates, on the target.
+start and direction that bring it closest to the target, by FFT cross-correlation over all
+starts (band-limited interpolation between samples) and then bisection of the start on the
+exact error; it ranks by the remaining RMS distance and places each linkage, and its two
+Roberts-Chebyshev cognates, on the target. `refine` improves a match by optimisation.
 """
 
 from dataclasses import dataclass
@@ -156,8 +157,9 @@ def _align(target, curves):
 def _fit(target, dense, direction, start):
     """Similarity of each dense curve, run in `direction` from `start`, onto the target.
 
-    Returns (RMS error, w, centroid): target point j is nearest ``centroid(target) +
-    w * (z_j - centroid)`` with z_j the curve's j-th equal arc-length point.
+    Returns (RMS error, w, centroid, RMS radius of the target, z) per row: target point j
+    is nearest ``centroid(target) + w * (z_j - centroid)``, z_j the curve's j-th equal
+    arc-length point from `start` (the rows of z).
     """
     n = target.shape[0]
     oriented = np.where(direction[:, None] == 1, dense, np.roll(dense[:, ::-1], 1, axis=1))
