@@ -401,3 +401,38 @@ def displacement_figure(positions, pole_point, *, axes=None):
         ax.set_xlim(pts.real.min() - pad, pts.real.max() + pad)
         ax.set_ylim(pts.imag.min() - pad, pts.imag.max() + pad)
     return axes
+
+
+__all__ += ["mirrored_pair_figure"]
+
+
+def mirrored_pair_figure(links, paths, axis_x, *, ax=None):
+    """Two guidance four-bars side by side, mirror images across a vertical line (like Fig. 2-86).
+
+    Parameters
+    ----------
+    links : sequence of two dict
+        Joint positions ``{"A", "B", "C", "D", "P"}`` (complex, ground frame) of each
+        four-bar at the drawn instant; P is the guided point (the claw's tip).
+    paths : sequence of two array_like of complex
+        The path of each P over a full crank turn.
+    axis_x : float
+        The mirror line (the middle of the conveyor).
+    """
+    ax = _axes(ax, (8.0, 5.5))
+    for k, (pts, path) in enumerate(zip(links, paths)):
+        colour = _DYAD_COLOURS[k]
+        path = np.asarray(path, dtype=complex)
+        ax.plot(path.real, path.imag, "-", color=colour, lw=1.0, alpha=0.7)
+        A, B, C, D, P = (complex(pts[n]) for n in "ABCDP")
+        ax.plot([A.real, B.real, C.real, D.real], [A.imag, B.imag, C.imag, D.imag], "-o", color=colour, lw=2.0, ms=4)
+        ax.fill([B.real, C.real, P.real], [B.imag, C.imag, P.imag], color=colour, alpha=0.25)
+        ax.plot([A.real, D.real], [A.imag, D.imag], "k^", ms=10)
+        ax.plot(P.real, P.imag, "o", color=colour, ms=7)
+    top = max(np.max(np.asarray(p).imag) for p in paths)
+    low = min(min(np.asarray(p).imag.min(), *(complex(z).imag for z in l.values())) for p, l in zip(paths, links))
+    ax.plot([axis_x, axis_x], [low, top], "-.", color="grey", lw=1.0, label="mirror line (conveyor axis)")
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.25)
+    ax.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0))
+    return ax
