@@ -159,13 +159,11 @@ def _seg(ax, u, v, **style):
     ax.plot([u.real, v.real], [u.imag, v.imag], **style)
 
 
-def _arc_mark(ax, centre, radius, start, stop, text, *, color="k", scale=1.35, fontsize=10):
+def _arc_mark(ax, centre, radius, start, stop, text, *, color="k", scale=1.35):
     """An angle from direction `start` to `stop` (radians, counter-clockwise) with a label."""
-    t = np.linspace(start, stop, 50)
-    arc = centre + radius * np.exp(1j * t)
-    ax.plot(arc.real, arc.imag, color=color, lw=0.9)
-    mid = centre + scale * radius * np.exp(0.5j * (start + stop))
-    ax.text(mid.real, mid.imag, text, color=color, ha="center", va="center", fontsize=fontsize)
+    from figures.limit_positions import _angle_arc
+
+    _angle_arc(ax, centre, radius, start, stop, text, color, scale=scale, fontsize=10, short=False)
 
 
 def _length_label(ax, u, v, text, *, side=1.0, color="k", offset=10):

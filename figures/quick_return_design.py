@@ -5,6 +5,8 @@ classes. Nothing runs at import; Matplotlib is imported by the functions."""
 
 import numpy as np
 
+from figures.limit_positions import _angle_arc
+
 __all__ = ["crank_rocker_limits", "slider_crank_limits", "guide_bar_limits", "gamma_alpha_curves", "shaper",
            "marked_table", "crank_rocker_construction", "slider_crank_construction", "fourbar_limits"]
 
@@ -120,7 +122,7 @@ def guide_bar_limits(design, ax=None, *, title=None):
         ax.plot([B.real], [B.imag], "s", ms=7, mfc="w", mec="k")
         _label(ax, B, "B" + name, -14 if B.real < 0 else 6, 6 if B.imag > 0 else -14)
     # the bisector of the guide's swing is the frame line; the swing equals theta
-    _angle(ax, complex(d), 0.45 * d, float(pose.psi[0]), float(_turn(pose.psi[0], pose.psi[1])), "θ",
+    _angle(ax, complex(d), 0.45 * d, float(pose.psi[0]), float(pose.psi[1]), "θ",
            color="tab:red", scale=1.2)
     ax.plot([0.0, d], [0.0, 0.0], "ks", ms=6)
     _label(ax, 0j, "A", -12, -12)
@@ -170,13 +172,8 @@ def shaper(design, ax=None, *, title=None):
 
 
 def _angle(ax, centre, radius, start, stop, text, *, color="k", scale=1.3):
-    """Mark the angle from direction `start` to `stop` (radians) at `centre` with an arc and a label."""
-    t = np.linspace(start, stop, 60)
-    arc = centre + radius * np.exp(1j * t)
-    ax.plot(arc.real, arc.imag, color=color, lw=0.9)
-    mid = centre + scale * radius * np.exp(0.5j * (start + stop))
-    ax.text(mid.real, mid.imag, text, color=color, ha="center", va="center", fontsize=10,
-            bbox=dict(boxstyle="round,pad=0.1", fc="w", ec="none", alpha=0.8))
+    """Mark the angle between directions `start` and `stop` (radians, the short way) at `centre`."""
+    _angle_arc(ax, centre, radius, start, stop, text, color, scale=scale, fontsize=10)
 
 
 def _circle(ax, centre, radius, **style):
@@ -196,11 +193,6 @@ def _circumcentre(p, q, r):
 
 def _direction(p, q):
     return float(np.angle(q - p))
-
-
-def _turn(start, stop):
-    """`stop` moved by whole turns to lie within half a turn of `start` (for angle arcs)."""
-    return start + (stop - start + np.pi) % (2 * np.pi) - np.pi
 
 
 def crank_rocker_construction(design, ax=None, *, given="crank", title=None):
@@ -257,11 +249,11 @@ def crank_rocker_construction(design, ax=None, *, given="crank", title=None):
         ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(off.real - 4, off.imag - 4),
                     fontsize=10)
     r = 0.18 * size
-    _angle(ax, A, r, _direction(A, C1), _turn(_direction(A, C1), _direction(A, C2)), "θ")
-    _angle(ax, N, r, _direction(N, C1), _turn(_direction(N, C1), _direction(N, C2)), "θ", color="tab:green")
-    _angle(ax, O, 0.25 * R, _direction(O, C1), _turn(_direction(O, C1), _direction(O, A)), "α",
+    _angle(ax, A, r, _direction(A, C1), _direction(A, C2), "θ")
+    _angle(ax, N, r, _direction(N, C1), _direction(N, C2), "θ", color="tab:green")
+    _angle(ax, O, 0.25 * R, _direction(O, C1), _direction(O, A), "α",
            color="tab:green", scale=1.45)
-    _angle(ax, D, 0.3 * c, _direction(D, C1), _turn(_direction(D, C1), _direction(D, C2)), "φ", color="tab:red")
+    _angle(ax, D, 0.3 * c, _direction(D, C1), _direction(D, C2), "φ", color="tab:red")
     ax.text(*((O + 0.55 * (A - O)).real, (O + 0.55 * (A - O)).imag), "R", color="tab:green", fontsize=10)
     mid = 0.5 * (O + D)
     ax.annotate("H", (mid.real, mid.imag), textcoords="offset points", xytext=(8, -4), color="0.4", fontsize=10)
@@ -276,7 +268,7 @@ def crank_rocker_construction(design, ax=None, *, given="crank", title=None):
         ax.plot([A2.real], [A2.imag], "o", ms=5, mfc="w", mec="tab:purple", zorder=5)
         ax.annotate("A'", (A2.real, A2.imag), textcoords="offset points", xytext=(-14, 4), color="tab:purple",
                     fontsize=10)
-        _angle(ax, A2, 1.5 * r, _direction(A2, C1), _turn(_direction(A2, C1), _direction(A2, C2)),
+        _angle(ax, A2, 1.5 * r, _direction(A2, C1), _direction(A2, C2),
                "θ/2", color="tab:purple", scale=1.6)
         pts["A'"] = A2
     # the view: the first circle and every named point (the theta/2 circle may leave it)
@@ -323,8 +315,8 @@ def slider_crank_construction(design, ax=None, *, title=None):
         ax.plot([C.real], [C.imag], "s", ms=9, mfc="w", mec="tab:red", zorder=5)
     _segment(ax, A, C1, color="0.6", lw=0.8, ls="--")
     r = 0.12 * design.stroke
-    _angle(ax, A, 1.5 * r, _direction(A, C2), _turn(_direction(A, C2), _direction(A, C1)), "θ", scale=1.35)
-    _angle(ax, O, 0.3 * R, _direction(O, C1), _turn(_direction(O, C1), _direction(O, A)), "α",
+    _angle(ax, A, 1.5 * r, _direction(A, C2), _direction(A, C1), "θ", scale=1.35)
+    _angle(ax, O, 0.3 * R, _direction(O, C1), _direction(O, A), "α",
            color="tab:green", scale=1.35)
     ax.annotate("", xy=(C2.real, e + 0.12 * design.stroke), xytext=(C1.real, e + 0.12 * design.stroke),
                 arrowprops=dict(arrowstyle="<->", color="k", lw=0.8))
@@ -362,7 +354,7 @@ def fourbar_limits(fourbar, ax=None, *, title=None):
         _label(ax, B, "B" + name)
         _label(ax, C, "C" + name)
     _angle(ax, complex(d), 0.35 * fourbar.c, _direction(complex(d), C1),
-           _turn(_direction(complex(d), C1), _direction(complex(d), C2)), "φ", color="tab:red")
+           _direction(complex(d), C2), "φ", color="tab:red")
     ax.plot([0.0, d], [0.0, 0.0], "ks", ms=6)
     _label(ax, 0j, "A", 4, -14)
     _label(ax, complex(d), "D", 4, -12)
