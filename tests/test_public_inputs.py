@@ -71,13 +71,19 @@ BAD = {
     "one_string": ("1", ["'1'"]),
     "int_for_bool": (1, ["1"]),
     "bogus_option": ("bogus", ["'bogus'"]),
+    # NumPy reads the data under a mask, registers timedelta64 as an integer type, and
+    # overflows on an int beyond the float range inside a list (audit of issue 11)
+    "masked": (np.ma.array([0.5, 1.0], mask=[False, True]), ["--"]),
+    "timedelta": (np.timedelta64(5, "s"), ["timedelta64"]),
+    "huge_int_list": ([1.0, 10**400], ["10000000000"]),
 }
 
 _NUMERIC = ["complex", "complex_array", "complex_zero_imag", "numeric_string", "true", "false",
             "bool_array", "none", "object", "nan", "inf", "-inf", "list_with_string", "ragged",
-            "dict"]
+            "dict", "masked", "timedelta", "huge_int_list"]
 _POINT = ["numeric_string", "true", "false", "bool_array", "none", "object", "nan", "inf",
-          "-inf", "complex_nan", "complex_inf", "list_with_string", "ragged", "dict"]
+          "-inf", "complex_nan", "complex_inf", "list_with_string", "ragged", "dict", "masked",
+          "timedelta", "huge_int_list"]
 
 #: slot kind -> bad kinds tried there
 KINDS = {
@@ -92,14 +98,14 @@ KINDS = {
     "vec3": _NUMERIC + ["short_vector", "matrix_4x4"],  # shape (..., 3)
     "matrix": _NUMERIC + ["short_vector", "matrix_4x4"],  # a fixed shape (3, 3)
     "int": ["float_for_int", "true", "numeric_string", "none", "object", "complex", "nan",
-            "bool_array", "dict", "empty_list"],
+            "bool_array", "dict", "empty_list", "timedelta"],
     "count": ["float_for_int", "negative_int", "true", "numeric_string", "none", "object",
-              "complex", "nan", "dict"],
+              "complex", "nan", "dict", "timedelta"],
     "order": ["float_for_int", "negative_int", "two_branch_over", "true", "numeric_string",
-              "none", "object", "complex"],
+              "none", "object", "complex", "timedelta"],
     "bool": ["int_for_bool", "one_string", "none", "object", "bool_array", "float_for_int"],
     "branch": ["true", "false", "zero_branch", "two_branch", "one_string", "none", "object",
-               "float_for_int", "complex"],
+               "float_for_int", "complex", "timedelta"],
     "option": ["bogus_option", "int_for_bool", "none", "object"],
     "tolerance": [b for b in _NUMERIC if b != "inf"] + ["empty_list"],  # one number; inf skips a check
     "real_nan": [b for b in _NUMERIC if b != "nan"],    # NaN passes through (did not assemble)
@@ -1363,3 +1369,73 @@ def test_path_coupler_point_keeps_nan_of_unassembled_poses():
     assert np.isfinite(out[0]) and np.isnan(out[1]) and np.isfinite(out[2])
     with pytest.raises(ValueError, match=r"Expected finite `w`"):
         _path().to_ground(complex(math.nan, 0.0))
+
+
+# ----------------------------------------------------------------------------- audit of issue 11
+def test_masked_entries_rejected_unmasked_arrays_accepted():
+    """NumPy reads the arbitrary data under a mask: a masked entry is an error, not a number."""
+    four_bar = pl.FourBar(10, 40, 30, 35)
+    theta = np.ma.array([0.5, 99.0], mask=[False, True])
+    with pytest.raises(ValueError, match=r"Expected `theta` without masked entries, got \[0.5 --\]"):
+        four_bar.solve(theta)
+    with pytest.raises(ValueError, match="Expected `bounds` without masked entries"):
+        sy.DesignModel(objective=lambda x: (x ** 2).sum(-1), bounds=[theta, (0, 1)])
+    with pytest.raises(ValueError, match="Expected `at` without masked entries"):
+        pl.Linkage().ground("A", np.ma.array([1 + 1j], mask=[True]))
+    plain = np.ma.array([0.5, 1.0], mask=[False, False])
+    np.testing.assert_array_equal(four_bar.solve(plain).psi, four_bar.solve(np.array([0.5, 1.0])).psi)
+
+
+@pytest.mark.parametrize("value", [np.timedelta64(1), np.timedelta64(2, "s"), np.datetime64("2020-01-01")])
+def test_time_values_are_not_numbers(value):
+    """`timedelta64` is a NumPy integer type: ``order=np.timedelta64(1)`` solved order 1."""
+    four_bar = pl.FourBar(10, 40, 30, 35)
+    with pytest.raises(mech.InputTypeError, match="Expected `order`"):
+        four_bar.solve(0.3, order=value)
+    with pytest.raises(mech.InputTypeError, match="Expected `branch`"):
+        pl.FourBar(10, 40, 30, 35, branch=value)
+    with pytest.raises(mech.InputTypeError, match="Expected `coupler`"):
+        pl.FourBar(10, 40, 30, 35, coupler=(value, 1.0))
+    with pytest.raises(mech.InputTypeError, match="Expected `n`"):
+        pl.centre_count(value)
+
+
+def test_huge_int_inside_point_list_named():
+    """``[1.0, 10**400]`` overflowed with a bare OverflowError where points are read."""
+    with pytest.raises(mech.InputTypeError, match=r"Expected `at` to be points.*10000000000"):
+        pl.Linkage().ground("A", [1.0, 10**400])
+    with pytest.raises(mech.InputTypeError, match="Expected `theta`"):
+        pl.FourBar(10, 40, 30, 35).solve([1.0, 10**400])
+
+
+def test_integer_message_shows_the_users_entries():
+    """The message shows ``False`` and ``2j`` as given, not NumPy's ``0.`` and ``0.+2.j``."""
+    with pytest.raises(mech.InputTypeError, match=r"got \[1.0, False\]"):
+        pl.coupler_dashes(1, 2, 2.5, 3, [0.5 + 0.5j], n=[1.0, False])
+    with pytest.raises(mech.InputTypeError, match=r"got \[1.0, 2j\]"):
+        sph.chebyshev_spacing(0.0, 1.0, [1.0, 2j])
+
+
+def test_sample_counts_are_bounded():
+    """``samples=10**400`` reached NumPy's "Maximum allowed size exceeded" without a name."""
+    x = np.linspace(0.0, 1.0, 7)
+    with pytest.raises(ValueError, match="Expected `samples` to be an integer in"):
+        sy.least_squares(x, 0.6 * x ** 1.2, theta0=0.5, psi0=1.0, samples=10**400)
+
+
+@pytest.mark.parametrize("bad", [np.array([1, 2]), True, [1, 2]])
+def test_link_names_reject_flags_and_arrays(bad):
+    """``omega_ratio(..., i=True)`` matched link 1 (``True == 1``); an array raised NumPy's
+    "truth value ... is ambiguous" without a name."""
+    centres = pl.instant_centres(4, {(1, 4): 0j, (1, 2): 3 + 4j, (2, 3): 8 + 0j, (3, 4): pl.prismatic(1)})
+    with pytest.raises(ValueError, match="Expected `i` among"):
+        pl.omega_ratio(centres, bad, 3, frame=1)
+    with pytest.raises(ValueError, match="Expected `driver` among"):
+        pl.centre_velocities(centres, frame=4, driver=bad, omega=2.0)
+
+
+@pytest.mark.parametrize("links", [np.array(4.0 + 2j), [[1], [1, 2]], [1, float("nan")], [True, False]])
+def test_instant_centres_links_named(links):
+    """A 0-d array, unhashable, NaN or boolean link labels raised bare errors or unnamed ones."""
+    with pytest.raises(ValueError, match="Expected `links`"):
+        pl.instant_centres(links, {(1, 2): 0j})

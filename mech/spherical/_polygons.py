@@ -23,7 +23,7 @@ from types import MappingProxyType
 import numpy as np
 
 from mech._generated import spherical_polygons as _gen
-from mech._validate import arc_array as _arcs, finite_array, option
+from mech._validate import arc_array as _arcs, finite_array, integer, option
 from mech.spherical._coordinates import _norm
 
 __all__ = [
@@ -54,9 +54,7 @@ def _polygon_arrays(arcs, angles):
 
 
 def _axis_number(name, value, n):
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 1 <= value <= n:
-        raise ValueError(f"Expected `{name}` to be an axis number in 1..{n}, got {value!r}")
-    return int(value)
+    return integer(name, value, minimum=1, maximum=n)
 
 
 def _chain(arcs, angles):
@@ -472,9 +470,8 @@ def law_count(n):
     >>> law_count(4)
     {'sine': 12, 'sine-cosine': 12, 'cosine': 6, 'total': 30}
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
-        raise ValueError(f"Expected `n` to be an integer >= 3, got {n!r}")
-    pairs = int(n) * (int(n) - 1)
+    n = integer("n", n, minimum=3)
+    pairs = n * (n - 1)
     counts = {"sine": pairs, "sine-cosine": pairs, "cosine": pairs // 2}
     counts["total"] = sum(counts.values())
     return counts
