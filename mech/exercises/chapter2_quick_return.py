@@ -358,8 +358,8 @@ def shaper_2_32(p):
     l_DE = positive_length("l_DE", p["l_DE"])
     H = positive_length("H", p["H"])
     theta = float(extreme_angle(real_number("K", p["K"])))
-    if not 0.0 < theta < math.pi:
-        raise ValueError(f"Expected `K` > 1, got {p['K']!r}")
+    if not 0.0 < theta < math.pi:     # K beyond about 1e16 rounds the extreme angle to pi
+        raise ValueError(f"Expected `K` > 1 with an extreme angle pi (K - 1)/(K + 1) below pi, got {p['K']!r}")
     AC = a / math.sin(theta / 2)
     l_CD = H / (2 * math.sin(theta / 2))
     sagitta = l_CD * (1 - math.cos(theta / 2))

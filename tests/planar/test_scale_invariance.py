@@ -117,6 +117,18 @@ def test_tangent_mechanism_overflow_is_quiet():
     assert pose.valid.tolist() == [False, False, True] and np.isnan(pose.v[:2]).all()
 
 
+def test_rate_overflow_near_a_dead_point_is_quiet():
+    """Near a dead point a unit rate of 1e8 times a length of 1e300 leaves the float range.
+
+    The product was taken outside ``np.errstate``: a RuntimeWarning escaped on valid input.
+    Beyond the float range the rate is masked like a dead point's (NaN, ``valid`` False).
+    """
+    theta = np.linspace(-np.pi, np.pi, 721)      # hits -5 pi / 6 of the slider-crank
+    pose = _quiet(SliderCrank(3e300, 2e300, 0.5e300).solve, theta, order=2)
+    for value in (pose.v, pose.acc):
+        assert np.all(np.isfinite(value[pose.valid])) and np.all(np.isnan(value[~pose.valid]))
+
+
 @pytest.mark.parametrize("scale", SCALES)
 def test_rccc_scale_invariance(scale):
     def build(s):

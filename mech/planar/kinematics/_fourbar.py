@@ -32,9 +32,10 @@ def fourbar_lengths(a, b, c, d):
     exponent = math.frexp(max(raw))[1]
     scaled = [math.ldexp(x, -exponent) for x in raw]
     total = math.fsum(scaled)
-    for name, value, x in zip("abcd", raw, scaled):
+    for k, (name, value, x) in enumerate(zip("abcd", raw, scaled)):
         if x >= total - x:
-            rest = math.ldexp(total - x, exponent) if total - x > 0.0 else 0.0
+            # from the unscaled lengths: scaled, a length 2**-1075 times the longest is 0.0
+            rest = math.fsum(raw[:k] + raw[k + 1:])
             raise ValueError(
                 f"Expected `{name}` shorter than the other three links together "
                 f"({rest!r}), got {value!r}"

@@ -160,7 +160,8 @@ class GuideBar:
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
         shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
         fields = {k: np.array(np.broadcast_to(v, shape))[()] for k, v in fields.items()}
-        fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        with np.errstate(over="ignore"):      # a rate near a dead point may overflow: masked below
+            fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
         if order >= 1:
             mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
         return GuideBarPose(order, fields)

@@ -235,7 +235,8 @@ class SliderCrank:
                 nan = np.nan + 1j * np.nan if np.iscomplexobj(value) else np.nan
                 value = np.where(np.broadcast_to(valid, shape), value, nan)
             if name in _LINEAR:
-                value = value * self._scale
+                with np.errstate(over="ignore"):  # a rate near a dead point may overflow: masked below
+                    value = value * self._scale
             fields[name] = np.array(value)[()]
         if order >= 1:
             mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])

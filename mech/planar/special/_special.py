@@ -171,7 +171,8 @@ class RotatingGuideBar:
                 ag, as_, aB = _gen.rotating_guide_bar_acceleration(a, d, theta, omega, alpha)
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
         fields = _finish(fields)
-        fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        with np.errstate(over="ignore"):      # a rate near a dead point may overflow: masked below
+            fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
         if order >= 1:
             mask_singular_rates(fields, ("omega_guide", "v_slide", "alpha_guide", "a_slide")[: 2 * order])
         return RotatingGuideBarPose(order, fields)
