@@ -48,6 +48,7 @@ __all__ = [
     "planar_point",
     "planar_points",
     "function_pairs",
+    "common_shape",
 ]
 
 
@@ -407,12 +408,17 @@ def motion_inputs(name, angle, order, omega, alpha):
         inputs.append(finite_array("omega", omega))
     if order >= 2:
         inputs.append(finite_array("alpha", alpha))
-    try:
-        shape = np.broadcast_shapes(*(x.shape for x in inputs))
-    except ValueError:
-        shapes = ", ".join(f"`{n}` {x.shape}" for n, x in zip((name, "omega", "alpha"), inputs))
-        raise ValueError(f"Expected shapes that broadcast together, got {shapes}") from None
+    shape = common_shape(**dict(zip((name, "omega", "alpha"), inputs)))
     return order, shape, [np.broadcast_to(x, shape) for x in inputs]
+
+
+def common_shape(**arrays):
+    """The broadcast shape of the named arrays; a ValueError naming each shape if none."""
+    try:
+        return np.broadcast_shapes(*(np.shape(x) for x in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"`{n}` {np.shape(x)}" for n, x in arrays.items())
+        raise ValueError(f"Expected shapes that broadcast together, got {shapes}") from None
 
 
 def function_pairs(x, y, minimum):

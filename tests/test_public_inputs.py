@@ -1439,3 +1439,66 @@ def test_instant_centres_links_named(links):
     """A 0-d array, unhashable, NaN or boolean link labels raised bare errors or unnamed ones."""
     with pytest.raises(ValueError, match="Expected `links`"):
         pl.instant_centres(links, {(1, 2): 0j})
+
+
+def _motion_calls():
+    """Solvers of a driver angle with rates, each as ``call(theta, omega, alpha)``."""
+    fb = pl.FourBar(10, 40, 30, 35)
+    return {
+        "FourBar": lambda t, w, a: fb.solve(t, order=2, omega=w, alpha=a),
+        "SliderCrank": lambda t, w, a: _slider().solve(t, order=2, omega=w, alpha=a),
+        "GuideBar": lambda t, w, a: pl.GuideBar(150.0, 300.0).solve(t, order=2, omega=w, alpha=a),
+        "RotatingGuideBar": lambda t, w, a: pl.RotatingGuideBar(2.0, 1.0).solve(t, order=2, omega=w, alpha=a),
+        "SwingingBlock": lambda t, w, a: pl.SwingingBlock(1.0, 2.0).solve(t, order=2, omega=w, alpha=a),
+        "EllipticTrammel": lambda t, w, a: pl.EllipticTrammel(2.0).solve(t, order=2, omega=w, alpha=a),
+        "Linkage": lambda t, w, a: _linkage().solve(t, order=2, omega=w, alpha=a),
+        "RSSR": lambda t, w, a: _rssr().solve(t, order=2, omega=w, alpha=a),
+        "SphericalFourBar": lambda t, w, a: _sfb().solve(t, order=2, omega=w, alpha=a),
+    }
+
+
+@pytest.mark.parametrize("name", sorted(_motion_calls()))
+def test_rates_of_another_shape_are_named(name):
+    """``omega`` of shape (2,) with ``theta`` of shape (3,) raised NumPy's "operands could not
+    be broadcast together" naming no argument (all but `FourBar`, `RSSR` and the sphere)."""
+    call = _motion_calls()[name]
+    with pytest.raises(ValueError, match=r"Expected shapes that broadcast together, got .*`omega` \(2,\)"):
+        call([0.1, 0.2, 0.3], [1.0, 2.0], 0.0)
+    with pytest.raises(ValueError, match=r"Expected shapes that broadcast together, got .*`alpha` \(2,\)"):
+        call([0.1, 0.2, 0.3], 1.0, [1.0, 2.0])
+
+
+@pytest.mark.parametrize("name", sorted(_motion_calls()))
+def test_empty_input_solves_to_empty_poses(name):
+    """An empty `theta` is valid input: ``order >= 1`` raised "cannot reshape array of size 0"."""
+    pose = _motion_calls()[name](np.zeros((0, 3)), 1.0, 0.0)
+    assert np.shape(pose.valid) == (0, 3)
+
+
+@pytest.mark.parametrize("call, names", [
+    (lambda: sph.to_xyz([1.0, 2.0], [1.0, 2.0, 3.0]), ("lon", "lat")),
+    (lambda: sph.distance_lonlat([1.0, 2.0], 0.0, [1.0, 2.0, 3.0], 0.0), ("lon1", "lon2")),
+    (lambda: sph.rotate_about(np.eye(3)[:2], [0.0, 0.0, 1.0], [0.1, 0.2, 0.3]), ("p", "angle")),
+    (lambda: sph.point_at(np.eye(3)[:2], 0.5, [0.1, 0.2, 0.3]), ("a", "inclination")),
+    (lambda: sp.hooke_output([0.1, 0.2, 0.3], [0.2, 0.3]), ("theta1", "alpha")),
+    (lambda: sp.hooke_acceleration([0.1, 0.2, 0.3], 0.2, omega=[1.0, 2.0]), ("theta1", "omega")),
+    (lambda: pl.slider_state([0.1, 0.2, 0.3], [0.2, 0.3]), ("alpha", "phi")),
+    (lambda: pl.journal_state([0.1, 0.2, 0.3], [0.2, 0.3]), ("h", "rho")),
+    (lambda: sy.displacement_matrix([0.1, 0.2], [1j, 2j], [0.1, 0.2, 0.3], [1j, 2j]), ("theta_1", "theta_i")),
+])
+def test_arguments_of_other_shapes_are_named(call, names):
+    with pytest.raises(ValueError, match="Expected shapes that broadcast together") as info:
+        call()
+    assert all(f"`{n}`" in str(info.value) for n in names), str(info.value)
+
+
+def test_static_loads_of_another_shape_are_named():
+    sol = pl.as_linkage(pl.FourBar(1, 3, 2.5, 3)).solve([0.5, 0.6], order=1)
+    with pytest.raises(ValueError, match=r"Expected shapes that broadcast together, got `couples\['rocker'\]` \(3,\)"):
+        pl.static_forces(sol, couples={"rocker": [1.0, 2.0, 3.0]})
+
+
+def test_tilt_angle_radii_are_single_numbers():
+    """An array `rho_a` reached ``float()`` and raised "only 0-dimensional arrays ..."."""
+    with pytest.raises(ValueError, match="Expected `rho_a` to be a single number"):
+        pl.two_force_tilt_angle(10.0, np.array([]), 0.5)

@@ -12,7 +12,8 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
-from mech._validate import arc as _arc, bool_flag, finite_array, function_pairs, integer, MAX_COUNT, option, real_number
+from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, function_pairs, integer,
+                            MAX_COUNT, option, real_number)
 
 __all__ = [
     "FunctionGenerator",
@@ -216,6 +217,7 @@ class FunctionGenerator:
     def structural_error(self, x, y):
         """Structural error psi_sim(theta0 + x) - (psi0 + y), wrapped to (-pi, pi], eq. (7)."""
         x, y = finite_array("x", x), finite_array("y", y)
+        common_shape(x=x, y=y)
         psi, _ = _simulate(self.arcs, self.theta0 + x, self.branch)
         return _wrap(psi - self.psi0 - y)
 

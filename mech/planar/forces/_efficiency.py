@@ -15,7 +15,7 @@ import numpy as np
 from mech._generated.efficiency import push_rod as _push_rod
 from mech._generated.efficiency import spreading_wedge, wedge_press as _wedge_press
 from mech._generated.friction import eccentric_clamp
-from mech._validate import bool_flag, finite_array
+from mech._validate import bool_flag, common_shape, finite_array
 from mech.planar.forces._friction import _nonnegative, _out, _positive
 
 __all__ = [
@@ -471,6 +471,7 @@ def eccentric_clamp_locks(alpha, e, r_disc, rho_pin, phi):
     """
     e, r, rho, phi = _clamp_args(e, r_disc, rho_pin, phi)
     alpha = finite_array("alpha", alpha)
+    common_shape(alpha=alpha, e=e, r_disc=r, rho_pin=rho, phi=phi)
     with np.errstate(invalid="ignore"):      # the largest angle (unused here) is NaN when x > 1
         margin, _ = eccentric_clamp(alpha, e, r, rho, phi)
     return _out(np.asarray(margin) >= 0)

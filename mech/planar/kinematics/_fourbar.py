@@ -256,7 +256,8 @@ class FourBar:
         """Solve one block of flat inputs, writing into the views in `out`."""
         a, b, c, d, p, q = self._unit
         branch, theta = self._branch, inputs[0]
-        with np.errstate(invalid="ignore", divide="ignore"):
+        # over: 1 / |BD|^2 where B all but meets D (theta ~ 1e-160 with a = d) cannot assemble
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             if self._kite:
                 B, C, P, S, ratios = kite_pose(a, b, self._gaps[2], self._m4, p, q, theta, branch)
                 out["B"][...], out["C"][...], out["P"][...] = B, C, P

@@ -3,7 +3,7 @@
 import numpy as np
 
 from mech._generated import slider_crank as _gen
-from mech._validate import finite_array, nonnegative_int, positive_length
+from mech._validate import common_shape, finite_array, nonnegative_int, positive_length
 from mech._pose import Pose, mask_singular_rates
 from mech._scaling import length_scale
 
@@ -152,10 +152,12 @@ class GuideBar:
         fields = {"theta": theta, "valid": np.ones(theta.shape, dtype=bool), "psi": psi, "rho": rho, "B": B}
         if order >= 1:
             omega = finite_array("omega", omega)
+            common_shape(theta=theta, omega=omega)
             wg, vs, vB = _gen.guide_bar_velocity(*self._unit, theta, omega)
             fields.update(omega_guide=wg, v_slide=vs, vB=vB)
         if order >= 2:
             alpha = finite_array("alpha", alpha)
+            common_shape(theta=theta, omega=omega, alpha=alpha)
             ag, as_, aB = _gen.guide_bar_acceleration(*self._unit, theta, omega, alpha)
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
         shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))

@@ -17,8 +17,7 @@ from mech._errors import AssemblyError, InputTypeError
 from mech._generated import assur_groups as _g
 from mech.planar.kinematics import _linkage_modes
 from mech._validate import (
-    bool_flag, branch_sign, finite_array, integer, known_name, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number,
-)
+    bool_flag, branch_sign, finite_array, integer, known_name, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number, common_shape)
 
 __all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
 
@@ -448,7 +447,8 @@ class Linkage:
         order = nonnegative_int("order", order, 2)
         q, w, al = (self._per_driver(x, name) for x, name in
                     ((inputs, "inputs"), (omega, "omega"), (alpha, "alpha")))
-        shape = np.broadcast_shapes(*(np.shape(x) for x in (*q.values(), *w.values(), *al.values())))
+        shape = common_shape(**{f"{what}[{d!r}]" if len(x) > 1 else what: v for what, x in
+                                (("inputs", q), ("omega", w), ("alpha", al)) for d, v in x.items()})
         unit, steps = self._unit_steps()
         # distance inputs (sliders, actuators) are measured in the same unit as the lengths
         far = self._distance_drivers()

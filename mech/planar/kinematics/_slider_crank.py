@@ -8,8 +8,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
 from mech._validate import (
-    bool_flag, branch_sign, finite_array, nonnegative_int, positive_length, real_number,
-)
+    bool_flag, branch_sign, finite_array, nonnegative_int, positive_length, real_number, common_shape)
 from mech._pose import mask_singular_rates, Pose
 from mech._scaling import length_scale
 
@@ -222,10 +221,12 @@ class SliderCrank:
             fields = {"theta": theta, "valid": valid, "x": x, "phi": phi, "B": B, "C": C}
             if order >= 1:
                 omega = finite_array("omega", omega)
+                common_shape(theta=theta, omega=omega)
                 w2, v, vB = _gen.slider_crank_velocity(*args, theta, self._branch, omega)
                 fields.update(omega_coupler=w2, v=v, vB=vB)
             if order >= 2:
                 alpha = finite_array("alpha", alpha)
+                common_shape(theta=theta, omega=omega, alpha=alpha)
                 a2, acc, aB = _gen.slider_crank_acceleration(*args, theta, self._branch, omega, alpha)
                 fields.update(alpha_coupler=a2, acc=acc, aB=aB)
         shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
@@ -391,6 +392,7 @@ class SliderCrank:
             )
         theta = finite_array("theta", theta)
         omega = finite_array("omega", omega)
+        common_shape(theta=theta, omega=omega)
         a, b, _ = self._unit
         x, v, acc, cos_phi = _gen.slider_crank_series(a, a / b, theta, omega)
         shape = np.broadcast_shapes(theta.shape, omega.shape)

@@ -8,7 +8,7 @@ roles of crank and rod exchanged; see :ref:`deriv-special-mechanisms`.
 import numpy as np
 
 from mech._generated import special_mechanisms as _gen
-from mech._validate import bool_flag, finite_array, nonnegative_int, positive_length
+from mech._validate import bool_flag, common_shape, finite_array, nonnegative_int, positive_length
 from mech.planar.kinematics._guide_bar import GuideBar
 from mech._pose import Pose, mask_singular_rates
 from mech._scaling import length_scale
@@ -27,6 +27,7 @@ def _inputs(order, theta, omega, alpha):
     theta = finite_array("theta", theta)
     omega = finite_array("omega", omega) if order >= 1 else omega
     alpha = finite_array("alpha", alpha) if order >= 2 else alpha
+    common_shape(**dict(list({"theta": theta, "omega": omega, "alpha": alpha}.items())[: order + 1]))
     return order, theta, omega, alpha
 
 

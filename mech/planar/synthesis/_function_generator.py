@@ -10,7 +10,7 @@ import numpy as np
 
 from mech._generated.function_generation import fg_coefficients, fg_lengths
 from mech._validate import (MAX_COUNT, branch_sign, finite_array, function_pairs, integer, positive_length,
-                            real_array, real_number)
+                            real_array, real_number, common_shape)
 from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["FunctionGenerator", "FunctionMap", "freudenstein_coefficients", "lengths_from_coefficients"]
@@ -375,6 +375,7 @@ class FunctionGenerator:
                 raise ValueError("Expected `y` (this design has no `target`), got None")
             y = self._target(x)
         y = finite_array("y", y)
+        common_shape(x=x, y=y)
         return _wrap(self._psi(x) - self.psi0 - y)
 
     def _target(self, x):
