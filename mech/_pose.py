@@ -1,8 +1,10 @@
 """The immutable result record shared by every `solve` of the package."""
 
+import functools
+
 import numpy as np
 
-__all__ = ["Pose", "mask_singular_rates"]
+__all__ = ["Pose", "mask_singular_rates", "quiet_overflow"]
 
 
 class Pose:
@@ -60,6 +62,20 @@ class Pose:
         valid = np.asarray(self._fields["valid"])
         return (f"{type(self).__name__}(order={self.order}, shape={valid.shape}, "
                 f"valid={int(valid.sum())}/{valid.size})")
+
+
+def quiet_overflow(solve):
+    """Run `solve` with NumPy's overflow warnings off: a rate beyond the float range (an
+    angular velocity of 1e200 squared) becomes inf, and 0 times it NaN, which `Pose` then
+    masks like a dead point's rate (``valid`` False, NaN). Only for solvers returning a
+    `Pose` (the mask is the warning), or whose formulas cannot make 0 times inf."""
+
+    @functools.wraps(solve)
+    def quiet(*args, **kwargs):
+        with np.errstate(over="ignore", invalid="ignore"):
+            return solve(*args, **kwargs)
+
+    return quiet
 
 
 def _keep_promise(fields):

@@ -12,6 +12,7 @@ too strict fails too. A completeness check makes every new public callable regis
 """
 
 import dataclasses
+import warnings
 import inspect
 import math
 import re
@@ -1502,3 +1503,50 @@ def test_tilt_angle_radii_are_single_numbers():
     """An array `rho_a` reached ``float()`` and raised "only 0-dimensional arrays ..."."""
     with pytest.raises(ValueError, match="Expected `rho_a` to be a single number"):
         pl.two_force_tilt_angle(10.0, np.array([]), 0.5)
+
+
+def test_coupler_below_the_float_range_of_the_longest_link_named():
+    """b = 5e-324 beside 80 scaled to 0.0 and raised ZeroDivisionError in the generated code."""
+    with pytest.raises(ValueError, match="Expected `b` at least 2\\*\\*-1022 times the longest link, got 5e-324"):
+        pl.FourBar(30, 5e-324, 60, 80)
+    with pytest.raises(ValueError, match="Expected `b`"):
+        pl.fourbar_mechanical_advantage(30, 5e-324, 60, 80, 1.0)
+
+
+def test_freudenstein_coefficients_beyond_the_float_range_named():
+    """k2 = 1e300 squared raised a bare OverflowError (Python floats in the generated code)."""
+    k = [float(v) for v in sph.freudenstein_coefficients(0.4, 0.9, 0.7, 1.0)]
+    with pytest.raises(ValueError, match="Expected `k1` .. `k4`"):
+        sph.arcs_from_coefficients(k[0], 1e300, 1e300, k[3])
+    with pytest.raises(ValueError, match="Expected \\|cos b\\| < 1"):
+        sph.arcs_from_coefficients(k[0], k[1], k[2], 1e300)
+    arcs = sph.arcs_from_coefficients(k[0], 1e300, k[2], k[3])      # a tiny crank arc: fine
+    assert np.all(np.isfinite(arcs)) and 0.0 < arcs[0] < 1e-299
+
+
+def test_steering_model_ratio_beyond_the_float_range_named():
+    with pytest.raises(ValueError, match="Expected `a` / `h` within the float range"):
+        sy.steering_trapezoid_model(a=1480.0, h=5e-324, theta_max=0.5, steps=5, arm_range=(0.1, 0.4))
+
+
+@pytest.mark.parametrize("name", sorted(_motion_calls()))
+def test_huge_input_speed_is_quiet_and_masked(name):
+    """omega = 1e200: omega**2 overflowed with a RuntimeWarning (guide bars, double sliders).
+    Beyond the float range a rate is masked: never inf or NaN where `valid` is True."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pose = _motion_calls()[name](np.array([0.0, 0.3, 1.0]), 1e200, 0.0)
+    valid = np.asarray(pose.valid)
+    fields = getattr(pose, "_fields", {})
+    for key, value in fields.items():
+        value = np.asarray(value)
+        if value.dtype.kind in "fc" and value.shape[: valid.ndim] == valid.shape:
+            finite = np.isfinite(value).reshape(valid.shape + (-1,)).all(axis=-1)
+            assert np.all(finite | ~valid), key
+
+
+def test_hooke_acceleration_huge_speed_at_a_stationary_angle():
+    """At theta1 = 0 the slope of the ratio is 0: 0 * (1e200)**2 gave NaN (0 times inf)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert sp.hooke_acceleration(0.0, 0.5, omega=1e200) == 0.0

@@ -9,6 +9,7 @@ from mech._generated.hooke import (
     hooke_output_angle,
     hooke_ratio_terms,
 )
+from mech._pose import quiet_overflow
 from mech._validate import common_shape, finite_array, nonnegative_int, real_number, _show
 
 __all__ = [
@@ -126,6 +127,7 @@ def hooke_ratio(theta1, alpha):
     return _out(ratio)
 
 
+@quiet_overflow
 def hooke_acceleration(theta1, alpha, omega=1.0, epsilon=0.0):
     """Angular acceleration of the output shaft of a universal joint.
 
@@ -175,7 +177,8 @@ def hooke_acceleration(theta1, alpha, omega=1.0, epsilon=0.0):
     epsilon = finite_array("epsilon", epsilon)
     common_shape(theta1=theta1, alpha=alpha, omega=omega, epsilon=epsilon)
     ratio, slope = hooke_ratio_terms(theta1, alpha)
-    return _out(slope * omega**2 + ratio * epsilon)
+    # (slope omega) omega: where slope = 0 a square beyond the float range gave 0 inf = NaN
+    return _out(slope * omega * omega + ratio * epsilon)
 
 
 @dataclass(frozen=True)
@@ -248,6 +251,7 @@ class DoubleUniversalJoint:
         return (f"DoubleUniversalJoint({self.alpha1!r}, {self.alpha2!r}, "
                 f"phase={self.phase!r})")
 
+    @quiet_overflow
     def solve(self, theta1, order=0, omega=1.0, epsilon=0.0):
         """Solve the double joint at input angles `theta1`.
 
@@ -290,8 +294,8 @@ class DoubleUniversalJoint:
         if order == 2:
             epsilon = finite_array("epsilon", epsilon)
             common_shape(theta1=theta1, omega=omega, epsilon=epsilon)
-            epsilon_c = slope_a * omega**2 + ratio_a * epsilon
-            epsilon3 = slope_b * omega_c**2 + ratio_b * epsilon_c
+            epsilon_c = slope_a * omega * omega + ratio_a * epsilon      # no 0 inf where slope_a = 0
+            epsilon3 = slope_b * omega_c * omega_c + ratio_b * epsilon_c
             fields.update(epsilon_c=_out(epsilon_c), epsilon3=_out(epsilon3))
         return DoubleJointPose(order, _out(theta_c), _out(theta3), **fields)
 

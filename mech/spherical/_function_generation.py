@@ -120,10 +120,17 @@ def arcs_from_coefficients(k1, k2, k3, k4):
     k = [real_number(f"k{i + 1}", v) for i, v in enumerate((k1, k2, k3, k4))]
     if not abs(k[0]) < 1.0:
         raise ValueError(f"Expected |`k1`| < 1 (k1 = cos d), got {k[0]!r}")
-    with np.errstate(invalid="ignore"):
-        a, b, c, d, cos_b = sfg_arcs(*k)
+    with np.errstate(invalid="ignore", over="ignore"):
+        # NumPy floats: on Python floats a square beyond the float range raises OverflowError
+        a, b, c, d, cos_b = sfg_arcs(*(np.float64(v) for v in k))
+    beyond = ValueError(f"Expected `k1` .. `k4` of a linkage whose arcs are within the float range, got "
+                        f"{[float(v) for v in k]!r}")
+    if not np.isfinite(cos_b):
+        raise beyond
     if not abs(cos_b) < 1.0:
         raise ValueError(f"Expected |cos b| < 1 for a real coupler arc, got cos b = {float(cos_b)!r}")
+    if not np.all(np.isfinite([a, b, c, d])):
+        raise beyond
     return np.array([a, b, c, d], dtype=float)
 
 

@@ -10,6 +10,7 @@ import numpy as np
 
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
+from mech._scaling import length_scale
 from mech._validate import branch_sign, finite_array, positive_length, real_number
 from mech.spherical._dual import Dual
 
@@ -189,6 +190,10 @@ def rssr_from_transference(l1, l2, l3, s0, s3, h0, lam, phi01, *, branch=1):
     s0, s3, h0, lam = (real_number(n, v) for n, v in (("s0", s0), ("s3", s3), ("h0", h0), ("lam", lam)))
     sigma = branch_sign(branch)
     phi01 = finite_array("phi01", phi01)
+    # angles only: in units of a power of two near the longest length, so that no square of
+    # a length leaves the float range (lengths of 1e+-300 gave NaN)
+    unit = length_scale(l1, l2, l3, s0, s3, h0)
+    l1, l2, l3, s0, s3, h0 = (x / unit for x in (l1, l2, l3, s0, s3, h0))
     samples = (np.arange(8) + 0.5) * (np.pi / 4)
     th = Dual(phi01[..., None], s0)
     ps = Dual(np.broadcast_to(samples, phi01.shape + (8,)), s3)

@@ -192,3 +192,10 @@ def test_eccentric_clamp_pin_radius_not_disc_radius():
 
 def test_eccentric_clamp_always_locks_when_argument_exceeds_one():
     assert eccentric_clamp_max_angle(5.0, 40.0, 1.0, 0.3) == pytest.approx(0.3 + math.pi / 2)
+
+
+@pytest.mark.parametrize("phi", [np.pi / 2, 3.0, 1e300])
+def test_eccentric_clamp_friction_angle_below_right_angle(phi):
+    """A friction angle atan(mu) is below pi/2; phi = 1e300 returned NaN without a word."""
+    with pytest.raises(ValueError, match=r"Expected `phi` in \[0, pi/2\)"):
+        eccentric_clamp_max_angle(10.0, 40.0, 1.0, phi)

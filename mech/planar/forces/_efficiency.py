@@ -408,7 +408,7 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
     rho_pin : array_like
         Friction-circle radius of the pivot, >= 0 (:func:`~mech.planar.forces._friction.friction_circle`).
     phi : array_like
-        Friction angle disc-workpiece, radians, >= 0.
+        Friction angle disc-workpiece, radians, in [0, pi/2).
 
     Returns
     -------
@@ -418,7 +418,7 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
     Raises
     ------
     ValueError
-        If a length is out of range or `phi` < 0.
+        If a length is out of range or `phi` is outside [0, pi/2).
 
     Notes
     -----
@@ -478,5 +478,7 @@ def eccentric_clamp_locks(alpha, e, r_disc, rho_pin, phi):
 
 
 def _clamp_args(e, r_disc, rho_pin, phi):
-    return (_positive("e", e), _positive("r_disc", r_disc), _nonnegative("rho_pin", rho_pin),
-            _nonnegative("phi", phi))
+    phi = _nonnegative("phi", phi)
+    if np.any(phi >= np.pi / 2):             # a friction angle atan(mu) is below pi/2
+        raise ValueError(f"Expected `phi` in [0, pi/2), got {float(phi[phi >= np.pi / 2].ravel()[0])!r}")
+    return (_positive("e", e), _positive("r_disc", r_disc), _nonnegative("rho_pin", rho_pin), phi)

@@ -157,6 +157,10 @@ class FourBar:
 
     def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), rtol=1e-12):
         (a_, b_, c_, d_), self._exponent = fourbar_lengths(a, b, c, d)
+        if b_ < 2.0**-1022:
+            # the coupler's direction is C - B divided by b: lost once b underflows
+            raise ValueError(f"Expected `b` at least 2**-1022 times the longest link, got {float(b)!r} "
+                             f"with the longest {max(float(a), float(b), float(c), float(d))!r}")
         self._a, self._b, self._c, self._d = (float(v) for v in (a, b, c, d))
         self._branch = branch_sign(branch)
         self._coupler = p, q = real_tuple("coupler", coupler, 2)

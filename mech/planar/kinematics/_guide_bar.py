@@ -4,7 +4,7 @@ import numpy as np
 
 from mech._generated import slider_crank as _gen
 from mech._validate import common_shape, finite_array, nonnegative_int, positive_length
-from mech._pose import Pose, mask_singular_rates
+from mech._pose import mask_singular_rates, Pose, quiet_overflow
 from mech._scaling import length_scale
 
 __all__ = ["GuideBar", "GuideBarPose"]
@@ -111,6 +111,7 @@ class GuideBar:
             raise ValueError(f"Expected `swing` < pi, got {swing!r}")
         return cls(float(_gen.guide_bar_crank(d, swing)), d)
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0):
         """Guide angle, block distance and their rates at crank angles `theta`.
 

@@ -9,7 +9,7 @@ from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
 from mech._validate import (
     bool_flag, branch_sign, finite_array, nonnegative_int, positive_length, real_number, common_shape)
-from mech._pose import mask_singular_rates, Pose
+from mech._pose import mask_singular_rates, Pose, quiet_overflow
 from mech._scaling import length_scale
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
@@ -363,6 +363,7 @@ class SliderCrank:
         gamma_min = float(_gen.slider_crank_min_transmission(*self._unit))
         return gamma_min, (np.pi / 2 if self._e < 0 else -np.pi / 2)
 
+    @quiet_overflow
     def approximate(self, theta, omega=1.0):
         """The textbook's two-term series (2-10) for a centred slider-crank.
 

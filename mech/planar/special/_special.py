@@ -10,7 +10,7 @@ import numpy as np
 from mech._generated import special_mechanisms as _gen
 from mech._validate import bool_flag, common_shape, finite_array, nonnegative_int, positive_length
 from mech.planar.kinematics._guide_bar import GuideBar
-from mech._pose import Pose, mask_singular_rates
+from mech._pose import mask_singular_rates, Pose, quiet_overflow
 from mech._scaling import length_scale
 
 __all__ = ["RotatingGuideBar", "RotatingGuideBarPose", "SwingingBlock"]
@@ -118,6 +118,7 @@ class RotatingGuideBar:
     def __repr__(self):
         return f"RotatingGuideBar(a={self._a!r}, d={self._d!r})"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Guide angle, block position and their rates at crank angles `theta`.
 
@@ -243,6 +244,7 @@ class SwingingBlock:
     def __repr__(self):
         return f"SwingingBlock(a={self._a!r}, d={self._d!r})"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Block angle ``psi``, rod length ``rho`` and their rates (see `GuideBar.solve`).
 
