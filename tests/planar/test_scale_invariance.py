@@ -344,3 +344,34 @@ def test_slider_crank_dead_point_samples_valid_in_every_unit(lengths):
             pose = _quiet(SliderCrank(*(x * s for x in lengths)).solve, theta, order=order)
             np.testing.assert_array_equal(pose.valid, ref.valid)
             np.testing.assert_array_equal(pose.assembled, ref.assembled)
+
+
+@pytest.mark.parametrize("lengths", [(1, 2, -2), (1, 2, 2), (3, 2, 0.5)])
+def test_linkage_slider_dead_point_samples_valid_in_every_unit(lengths):
+    """The RRP group of a `Linkage` (the slider-crank by `as_linkage`) on a grid that lands on
+    its dead points: the masks were scale-dependent (39 of 624 nice cases)."""
+    from mech.planar import as_linkage
+
+    theta = np.linspace(-np.pi, np.pi, 721)
+    for order in (0, 1):
+        ref = as_linkage(SliderCrank(*lengths)).solve(theta, order=order).valid
+        np.testing.assert_array_equal(ref, SliderCrank(*lengths).solve(theta, order=order).valid)
+        for s in [1e-300, 3.7, 1e300]:
+            got = _quiet(as_linkage(SliderCrank(*(x * s for x in lengths))).solve, theta, order=order).valid
+            np.testing.assert_array_equal(got, ref)
+
+
+@pytest.mark.parametrize("dims", [(1, 2, 1, 0.0, 0.0, 1.0, 0.0), (1, 2, 1, 0.0, 1.0, 1.0, np.pi / 2),
+                                  (2, 4, 1, 0.5, 1.0, 3.0, 1.0)])
+def test_rssr_limit_position_samples_valid_in_every_unit(dims):
+    """RSSR limit positions on a nice grid (79 of 2958 nice cases had scale-dependent masks)."""
+    from mech.spatial import RSSR
+
+    theta = np.linspace(-np.pi, np.pi, 721)
+    *lengths, lam = dims
+    for order in (0, 1):
+        ref = RSSR(*lengths, lam).solve(theta, order=order)
+        for s in [1e-300, 3.7, 1e300]:
+            got = _quiet(RSSR(*(x * s for x in lengths), lam).solve, theta, order=order)
+            np.testing.assert_array_equal(got.valid, ref.valid)
+            np.testing.assert_array_equal(got.assembled, ref.assembled)

@@ -695,7 +695,13 @@ class Linkage:
         Q, e, vQ, aQ, wK, aK = self._guide_state(st, guide)
         P1 = st.P[p1]
         (gx, gy), (ex, ey) = _re_im(Q - P1), _re_im(e)
-        rho, ok = _signed_root(st, step, _g.rrp_position(gx, gy, ex, ey, r1, 1.0)[3])
+        radicand = _g.rrp_position(gx, gy, ex, ey, r1, 1.0)[3]
+        # within DEAD_POINT_RTOL of a dead point (the pin's distance from the guide = r1),
+        # and away from a change point, the input is the dead point
+        across = ex * gy - ey * gx
+        dead = np.abs(np.abs(across) - np.abs(r1)) <= DEAD_POINT_RTOL * (np.abs(r1) + np.hypot(gx, gy))
+        radicand, dead = _dead_point(st, step, radicand, dead)
+        rho, ok = _signed_root(st, step, radicand)
         s, ux, uy = _g.rrp_position_root(gx, gy, ex, ey, rho)
         u1 = ux + 1j * uy
         P3 = P1 + u1
@@ -703,6 +709,7 @@ class Linkage:
         slide = Slide(s=s, direction=np.broadcast_to(e, np.shape(s)))
         if st.order >= 1:
             W1, ds = _g.rrp_velocity(ux, uy, *_re_im(e), r1, s, *_re_im(st.V[p1]), *_re_im(vQ), wK)
+            W1, ds = (np.where(dead, np.nan, x) for x in (W1, ds))      # infinite at a dead point
             v3 = _cx(*_g.rigid_body_velocity(*_re_im(st.V[p1]), ux, uy, W1))
             slide = Slide(s, slide.direction, ds)
         if st.order >= 2:
