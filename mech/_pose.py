@@ -1,8 +1,10 @@
 """The immutable result record shared by every `solve` of the package."""
 
+import functools
+
 import numpy as np
 
-__all__ = ["Pose", "mask_singular_rates"]
+__all__ = ["Pose", "mask_singular_rates", "quiet_overflow"]
 
 
 class Pose:
@@ -29,7 +31,7 @@ class Pose:
 
     def __init__(self, order, fields):
         object.__setattr__(self, "order", order)
-        object.__setattr__(self, "_fields", fields)
+        object.__setattr__(self, "_fields", _keep_promise(fields))
 
     def __getattr__(self, name):
         fields = self.__dict__.get("_fields", {})
@@ -62,6 +64,57 @@ class Pose:
                 f"valid={int(valid.sum())}/{valid.size})")
 
 
+def quiet_overflow(solve):
+    """Run `solve` with NumPy's overflow warnings off: a rate beyond the float range (an
+    angular velocity of 1e200 squared) becomes inf, and 0 times it NaN, which `Pose` then
+    masks like a dead point's rate (``valid`` False, NaN). Only for solvers returning a
+    `Pose` (the mask is the warning), or whose formulas cannot make 0 times inf."""
+
+    @functools.wraps(solve)
+    def quiet(*args, **kwargs):
+        with np.errstate(over="ignore", invalid="ignore"):
+            return solve(*args, **kwargs)
+
+    return quiet
+
+
+def _keep_promise(fields):
+    """Make ``valid`` False wherever a solved field is not finite, whatever the cause.
+
+    The solvers mark the poses that cannot be assembled and the dead points themselves;
+    this last check catches what no formula flags: a value beyond the float range (a rate
+    of 1e8 near a dead point times a length of 1e300, an angular velocity of 1e200 times a
+    crank of 1e200). There the field is set to NaN and ``assembled`` keeps the incoming
+    mask, as at a dead point. Fields are the shape of ``valid``, maybe with trailing axes.
+    """
+    valid = fields.get("valid")
+    if valid is None or np.asarray(valid).dtype != bool:
+        return fields
+    valid = np.asarray(valid)
+    ok = valid.copy()
+    checked = {}
+    for name, value in fields.items():
+        if name in ("valid", "assembled", "theta"):
+            continue
+        value = np.asarray(value)
+        if value.dtype.kind not in "fc" or value.shape[: valid.ndim] != valid.shape:
+            continue
+        with np.errstate(invalid="ignore"):
+            finite = np.isfinite(value)
+        checked[name] = (value, finite)
+        ok &= finite.all(axis=tuple(range(valid.ndim, finite.ndim)))
+    if np.array_equal(ok, valid):
+        return fields
+    fields = dict(fields)
+    for name, (value, finite) in checked.items():
+        if not finite.all():
+            nan = np.nan + 1j * np.nan if np.iscomplexobj(value) else np.nan
+            fields[name] = np.where(finite, value, nan)[()]
+    fields.setdefault("assembled", valid[()])
+    fields["valid"] = ok[()]
+    return fields
+
+
 def mask_singular_rates(fields, names):
     """Mark dead points in solved `fields`: ``valid`` False there, ``assembled`` kept.
 
@@ -77,7 +130,7 @@ def mask_singular_rates(fields, names):
     values = {name: np.asarray(fields[name]) for name in names}
     for value in values.values():
         finite = np.isfinite(value)
-        ok &= finite.reshape(valid.shape + (-1,)).all(axis=-1)
+        ok &= finite.all(axis=tuple(range(valid.ndim, finite.ndim)))
     for name, value in values.items():
         keep = ok.reshape(ok.shape + (1,) * (value.ndim - ok.ndim))
         nan = np.nan + 1j * np.nan if np.iscomplexobj(value) else np.nan

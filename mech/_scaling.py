@@ -13,7 +13,14 @@ import math
 
 import numpy as np
 
-__all__ = ["length_scale", "length_scale_array"]
+__all__ = ["DEAD_POINT_RTOL", "length_scale", "length_scale_array"]
+
+#: An input within this fraction of a linkage's size (the sum of its lengths) of a dead
+#: point counts as the dead point. Whether a float input on a dead point assembles is
+#: decided by a rounding of a few ulps, which the same linkage in another unit of length
+#: (its lengths then not exactly proportional) may decide the other way; 64 ulps cover it,
+#: so `valid` does not depend on the unit. Not a modelling tolerance: 2**-46 ~ 1.4e-14.
+DEAD_POINT_RTOL = 2.0**-46
 
 
 def length_scale(*lengths):

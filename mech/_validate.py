@@ -48,11 +48,19 @@ __all__ = [
     "planar_point",
     "planar_points",
     "function_pairs",
+    "common_shape",
 ]
 
 
 def _show(value):
     """A short, safe text of ``value`` for an error message."""
+    if isinstance(value, np.ma.MaskedArray):
+        text = str(value)         # masked entries show as --
+        return text if len(text) <= 80 else text[:77] + "..."
+    if isinstance(value, (list, tuple)):
+        # the user's own entries (``False``, ``2j``), not NumPy's conversion of them
+        text = repr(value)
+        return text if len(text) <= 80 else text[:77] + "..."
     try:
         arr = np.asarray(value)
     except Exception:  # pragma: no cover - objects that refuse even to be wrapped
@@ -76,10 +84,35 @@ MAX_COUNT = 10**7
 
 _NONE_BAD = object()
 
+#: NumPy registers `timedelta64` as an integer type (and so a ``numbers.Real``), and
+#: ``int(np.datetime64(...))`` works: neither is a number of the package.
+_TIME = (np.datetime64, np.timedelta64)
+
+
+def _is_int(value):
+    """True for Python and NumPy integers; not booleans, not NumPy's time types."""
+    return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_, *_TIME))
+
+
+def _has_masked(value):
+    """True if ``value``, or an array inside nested lists and tuples, has a masked entry."""
+    if isinstance(value, np.ma.MaskedArray):
+        return bool(np.ma.is_masked(value))
+    if isinstance(value, (list, tuple)):
+        return any(_has_masked(item) for item in value)
+    return False
+
+
+def _masked(name, value):
+    """Reject masked entries (NumPy would read the arbitrary data under the mask)."""
+    if _has_masked(value):
+        raise ValueError(f"Expected `{name}` without masked entries, got {_show(value)}")
+    return np.ma.getdata(value) if isinstance(value, np.ma.MaskedArray) else value
+
 
 def _first_bad_object(arr, allowed=numbers.Real):
     for item in arr.ravel():
-        if isinstance(item, (bool, np.bool_)) or not isinstance(item, allowed):
+        if isinstance(item, (bool, np.bool_, *_TIME)) or not isinstance(item, allowed):
             return item
     return _NONE_BAD
 
@@ -109,7 +142,7 @@ def _first_bad_leaf(value, allowed):
         return _NONE_BAD
     if isinstance(value, np.ndarray) and value.dtype.kind in "iufc":
         return _NONE_BAD
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, allowed):
+    if isinstance(value, (bool, np.bool_, *_TIME)) or not isinstance(value, allowed):
         return value
     return _NONE_BAD
 
@@ -144,8 +177,9 @@ def real_array(name, value, *, finite=True):
     :class:`~mech.InputTypeError`, and (with ``finite=True``) NaN and infinities with a
     ``ValueError``; every message names the argument ``name`` and shows the bad value.
     """
-    if value is None or isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
+    if value is None or isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating, *_TIME)):
         raise InputTypeError(f"Expected `{name}` to be a real number, got {value!r}")
+    value = _masked(name, value)
     try:
         arr = np.asarray(value)
     except Exception as exc:
@@ -248,7 +282,7 @@ def vector3(name, value):
 
 def branch_sign(value, name="branch"):
     """Return ``value`` as the int +1 or -1."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, numbers.Real)):
+    if isinstance(value, (bool, np.bool_, *_TIME)) or not isinstance(value, (numbers.Integral, numbers.Real)):
         raise InputTypeError(f"Expected `{name}` to be +1 or -1, got {value!r}")
     if value not in (1, -1):
         raise ValueError(f"Expected `{name}` to be +1 or -1, got {value!r}")
@@ -257,7 +291,7 @@ def branch_sign(value, name="branch"):
 
 def nonnegative_int(name, value, maximum):
     """Return ``value`` as an int in ``[0, maximum]``."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+    if not _is_int(value):
         raise InputTypeError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
     if not 0 <= value <= maximum:
         raise ValueError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
@@ -280,7 +314,7 @@ def integer(name, value, *, minimum=None, maximum=None):
     """
     bounds = {(None, None): "", (None, maximum): f" <= {maximum}", (minimum, None): f" >= {minimum}"}.get(
         (minimum, maximum), f" in [{minimum}, {maximum}]")
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+    if not _is_int(value):
         raise InputTypeError(f"Expected `{name}` to be an integer{bounds}, got {_show(value)}")
     if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
         raise ValueError(f"Expected `{name}` to be an integer{bounds}, got {value!r}")
@@ -305,8 +339,10 @@ def instance(name, value, cls):
 def known_name(name, value, names):
     """Return ``value`` after checking that it is one of ``names`` (point or link names)."""
     try:
-        known = value in names
-    except TypeError:            # an unhashable value is no name
+        hash(value)              # an unhashable value (a list, an array) is no name
+        # ``True == 1``: a flag is no name even where a link is labelled 1
+        known = not isinstance(value, (bool, np.bool_)) and value in names
+    except (TypeError, ValueError):
         known = False
     if not known:
         listed = ", ".join(repr(n) for n in names)
@@ -321,8 +357,9 @@ def planar_points(name, value):
     both accepted; booleans, strings, ``None``, other objects, NaN and infinities (in
     either part) are rejected by name.
     """
-    if value is None or isinstance(value, (str, bytes, bool, np.bool_)):
+    if value is None or isinstance(value, (str, bytes, bool, np.bool_, *_TIME)):
         raise InputTypeError(f"Expected `{name}` to be a point x + 1j*y, got {value!r}")
+    value = _masked(name, value)
     try:
         arr = np.asarray(value)
     except Exception as exc:
@@ -335,7 +372,10 @@ def planar_points(name, value):
         if bad is not _NONE_BAD or arr.ndim == 0:
             bad = value if bad is _NONE_BAD else bad
             raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {bad!r} in {_show(value)}")
-        arr = arr.astype(complex)
+        try:
+            arr = arr.astype(complex)
+        except (TypeError, ValueError, OverflowError):       # an int beyond the float range
+            raise InputTypeError(f"Expected `{name}` to be points x + 1j*y, got {_show(value)}") from None
     elif arr.dtype.kind not in "iufc":
         raise InputTypeError(
             f"Expected `{name}` to be points x + 1j*y, got a {_kind_name(arr)} value {_first_text(arr, value)}"
@@ -368,12 +408,17 @@ def motion_inputs(name, angle, order, omega, alpha):
         inputs.append(finite_array("omega", omega))
     if order >= 2:
         inputs.append(finite_array("alpha", alpha))
-    try:
-        shape = np.broadcast_shapes(*(x.shape for x in inputs))
-    except ValueError:
-        shapes = ", ".join(f"`{n}` {x.shape}" for n, x in zip((name, "omega", "alpha"), inputs))
-        raise ValueError(f"Expected shapes that broadcast together, got {shapes}") from None
+    shape = common_shape(**dict(zip((name, "omega", "alpha"), inputs)))
     return order, shape, [np.broadcast_to(x, shape) for x in inputs]
+
+
+def common_shape(**arrays):
+    """The broadcast shape of the named arrays; a ValueError naming each shape if none."""
+    try:
+        return np.broadcast_shapes(*(np.shape(x) for x in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"`{n}` {np.shape(x)}" for n, x in arrays.items())
+        raise ValueError(f"Expected shapes that broadcast together, got {shapes}") from None
 
 
 def function_pairs(x, y, minimum):

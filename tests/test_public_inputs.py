@@ -13,6 +13,7 @@ too strict fails too. A completeness check makes every new public callable regis
 
 import dataclasses
 import functools
+import warnings
 import inspect
 import math
 import re
@@ -73,13 +74,19 @@ BAD = {
     "one_string": ("1", ["'1'"]),
     "int_for_bool": (1, ["1"]),
     "bogus_option": ("bogus", ["'bogus'"]),
+    # NumPy reads the data under a mask, registers timedelta64 as an integer type, and
+    # overflows on an int beyond the float range inside a list (audit of issue 11)
+    "masked": (np.ma.array([0.5, 1.0], mask=[False, True]), ["--"]),
+    "timedelta": (np.timedelta64(5, "s"), ["timedelta64"]),
+    "huge_int_list": ([1.0, 10**400], ["10000000000"]),
 }
 
 _NUMERIC = ["complex", "complex_array", "complex_zero_imag", "numeric_string", "true", "false",
             "bool_array", "none", "object", "nan", "inf", "-inf", "list_with_string", "ragged",
-            "dict"]
+            "dict", "masked", "timedelta", "huge_int_list"]
 _POINT = ["numeric_string", "true", "false", "bool_array", "none", "object", "nan", "inf",
-          "-inf", "complex_nan", "complex_inf", "list_with_string", "ragged", "dict"]
+          "-inf", "complex_nan", "complex_inf", "list_with_string", "ragged", "dict", "masked",
+          "timedelta", "huge_int_list"]
 
 #: slot kind -> bad kinds tried there
 KINDS = {
@@ -94,14 +101,14 @@ KINDS = {
     "vec3": _NUMERIC + ["short_vector", "matrix_4x4"],  # shape (..., 3)
     "matrix": _NUMERIC + ["short_vector", "matrix_4x4"],  # a fixed shape (3, 3)
     "int": ["float_for_int", "true", "numeric_string", "none", "object", "complex", "nan",
-            "bool_array", "dict", "empty_list"],
+            "bool_array", "dict", "empty_list", "timedelta"],
     "count": ["float_for_int", "negative_int", "true", "numeric_string", "none", "object",
-              "complex", "nan", "dict"],
+              "complex", "nan", "dict", "timedelta"],
     "order": ["float_for_int", "negative_int", "two_branch_over", "true", "numeric_string",
-              "none", "object", "complex"],
+              "none", "object", "complex", "timedelta"],
     "bool": ["int_for_bool", "one_string", "none", "object", "bool_array", "float_for_int"],
     "branch": ["true", "false", "zero_branch", "two_branch", "one_string", "none", "object",
-               "float_for_int", "complex"],
+               "float_for_int", "complex", "timedelta"],
     "option": ["bogus_option", "int_for_bool", "none", "object"],
     "tolerance": [b for b in _NUMERIC if b != "inf"] + ["empty_list"],  # one number; inf skips a check
     "real_nan": [b for b in _NUMERIC if b != "nan"],    # NaN passes through (did not assemble)
@@ -1444,3 +1451,183 @@ def test_path_coupler_point_keeps_nan_of_unassembled_poses():
     assert np.isfinite(out[0]) and np.isnan(out[1]) and np.isfinite(out[2])
     with pytest.raises(ValueError, match=r"Expected finite `w`"):
         _path().to_ground(complex(math.nan, 0.0))
+
+
+# ----------------------------------------------------------------------------- audit of issue 11
+def test_masked_entries_rejected_unmasked_arrays_accepted():
+    """NumPy reads the arbitrary data under a mask: a masked entry is an error, not a number."""
+    four_bar = pl.FourBar(10, 40, 30, 35)
+    theta = np.ma.array([0.5, 99.0], mask=[False, True])
+    with pytest.raises(ValueError, match=r"Expected `theta` without masked entries, got \[0.5 --\]"):
+        four_bar.solve(theta)
+    with pytest.raises(ValueError, match="Expected `bounds` without masked entries"):
+        sy.DesignModel(objective=lambda x: (x ** 2).sum(-1), bounds=[theta, (0, 1)])
+    with pytest.raises(ValueError, match="Expected `at` without masked entries"):
+        pl.Linkage().ground("A", np.ma.array([1 + 1j], mask=[True]))
+    plain = np.ma.array([0.5, 1.0], mask=[False, False])
+    np.testing.assert_array_equal(four_bar.solve(plain).psi, four_bar.solve(np.array([0.5, 1.0])).psi)
+
+
+@pytest.mark.parametrize("value", [np.timedelta64(1), np.timedelta64(2, "s"), np.datetime64("2020-01-01")])
+def test_time_values_are_not_numbers(value):
+    """`timedelta64` is a NumPy integer type: ``order=np.timedelta64(1)`` solved order 1."""
+    four_bar = pl.FourBar(10, 40, 30, 35)
+    with pytest.raises(mech.InputTypeError, match="Expected `order`"):
+        four_bar.solve(0.3, order=value)
+    with pytest.raises(mech.InputTypeError, match="Expected `branch`"):
+        pl.FourBar(10, 40, 30, 35, branch=value)
+    with pytest.raises(mech.InputTypeError, match="Expected `coupler`"):
+        pl.FourBar(10, 40, 30, 35, coupler=(value, 1.0))
+    with pytest.raises(mech.InputTypeError, match="Expected `n`"):
+        pl.centre_count(value)
+
+
+def test_huge_int_inside_point_list_named():
+    """``[1.0, 10**400]`` overflowed with a bare OverflowError where points are read."""
+    with pytest.raises(mech.InputTypeError, match=r"Expected `at` to be points.*10000000000"):
+        pl.Linkage().ground("A", [1.0, 10**400])
+    with pytest.raises(mech.InputTypeError, match="Expected `theta`"):
+        pl.FourBar(10, 40, 30, 35).solve([1.0, 10**400])
+
+
+def test_integer_message_shows_the_users_entries():
+    """The message shows ``False`` and ``2j`` as given, not NumPy's ``0.`` and ``0.+2.j``."""
+    with pytest.raises(mech.InputTypeError, match=r"got \[1.0, False\]"):
+        pl.coupler_dashes(1, 2, 2.5, 3, [0.5 + 0.5j], n=[1.0, False])
+    with pytest.raises(mech.InputTypeError, match=r"got \[1.0, 2j\]"):
+        sph.chebyshev_spacing(0.0, 1.0, [1.0, 2j])
+
+
+def test_sample_counts_are_bounded():
+    """``samples=10**400`` reached NumPy's "Maximum allowed size exceeded" without a name."""
+    x = np.linspace(0.0, 1.0, 7)
+    with pytest.raises(ValueError, match="Expected `samples` to be an integer in"):
+        sy.least_squares(x, 0.6 * x ** 1.2, theta0=0.5, psi0=1.0, samples=10**400)
+
+
+@pytest.mark.parametrize("bad", [np.array([1, 2]), True, [1, 2]])
+def test_link_names_reject_flags_and_arrays(bad):
+    """``omega_ratio(..., i=True)`` matched link 1 (``True == 1``); an array raised NumPy's
+    "truth value ... is ambiguous" without a name."""
+    centres = pl.instant_centres(4, {(1, 4): 0j, (1, 2): 3 + 4j, (2, 3): 8 + 0j, (3, 4): pl.prismatic(1)})
+    with pytest.raises(ValueError, match="Expected `i` among"):
+        pl.omega_ratio(centres, bad, 3, frame=1)
+    with pytest.raises(ValueError, match="Expected `driver` among"):
+        pl.centre_velocities(centres, frame=4, driver=bad, omega=2.0)
+
+
+@pytest.mark.parametrize("links", [np.array(4.0 + 2j), [[1], [1, 2]], [1, float("nan")], [True, False]])
+def test_instant_centres_links_named(links):
+    """A 0-d array, unhashable, NaN or boolean link labels raised bare errors or unnamed ones."""
+    with pytest.raises(ValueError, match="Expected `links`"):
+        pl.instant_centres(links, {(1, 2): 0j})
+
+
+def _motion_calls():
+    """Solvers of a driver angle with rates, each as ``call(theta, omega, alpha)``."""
+    fb = pl.FourBar(10, 40, 30, 35)
+    return {
+        "FourBar": lambda t, w, a: fb.solve(t, order=2, omega=w, alpha=a),
+        "SliderCrank": lambda t, w, a: _slider().solve(t, order=2, omega=w, alpha=a),
+        "GuideBar": lambda t, w, a: pl.GuideBar(150.0, 300.0).solve(t, order=2, omega=w, alpha=a),
+        "RotatingGuideBar": lambda t, w, a: pl.RotatingGuideBar(2.0, 1.0).solve(t, order=2, omega=w, alpha=a),
+        "SwingingBlock": lambda t, w, a: pl.SwingingBlock(1.0, 2.0).solve(t, order=2, omega=w, alpha=a),
+        "EllipticTrammel": lambda t, w, a: pl.EllipticTrammel(2.0).solve(t, order=2, omega=w, alpha=a),
+        "Linkage": lambda t, w, a: _linkage().solve(t, order=2, omega=w, alpha=a),
+        "RSSR": lambda t, w, a: _rssr().solve(t, order=2, omega=w, alpha=a),
+        "SphericalFourBar": lambda t, w, a: _sfb().solve(t, order=2, omega=w, alpha=a),
+    }
+
+
+@pytest.mark.parametrize("name", sorted(_motion_calls()))
+def test_rates_of_another_shape_are_named(name):
+    """``omega`` of shape (2,) with ``theta`` of shape (3,) raised NumPy's "operands could not
+    be broadcast together" naming no argument (all but `FourBar`, `RSSR` and the sphere)."""
+    call = _motion_calls()[name]
+    with pytest.raises(ValueError, match=r"Expected shapes that broadcast together, got .*`omega` \(2,\)"):
+        call([0.1, 0.2, 0.3], [1.0, 2.0], 0.0)
+    with pytest.raises(ValueError, match=r"Expected shapes that broadcast together, got .*`alpha` \(2,\)"):
+        call([0.1, 0.2, 0.3], 1.0, [1.0, 2.0])
+
+
+@pytest.mark.parametrize("name", sorted(_motion_calls()))
+def test_empty_input_solves_to_empty_poses(name):
+    """An empty `theta` is valid input: ``order >= 1`` raised "cannot reshape array of size 0"."""
+    pose = _motion_calls()[name](np.zeros((0, 3)), 1.0, 0.0)
+    assert np.shape(pose.valid) == (0, 3)
+
+
+@pytest.mark.parametrize("call, names", [
+    (lambda: sph.to_xyz([1.0, 2.0], [1.0, 2.0, 3.0]), ("lon", "lat")),
+    (lambda: sph.distance_lonlat([1.0, 2.0], 0.0, [1.0, 2.0, 3.0], 0.0), ("lon1", "lon2")),
+    (lambda: sph.rotate_about(np.eye(3)[:2], [0.0, 0.0, 1.0], [0.1, 0.2, 0.3]), ("p", "angle")),
+    (lambda: sph.point_at(np.eye(3)[:2], 0.5, [0.1, 0.2, 0.3]), ("a", "inclination")),
+    (lambda: sp.hooke_output([0.1, 0.2, 0.3], [0.2, 0.3]), ("theta1", "alpha")),
+    (lambda: sp.hooke_acceleration([0.1, 0.2, 0.3], 0.2, omega=[1.0, 2.0]), ("theta1", "omega")),
+    (lambda: pl.slider_state([0.1, 0.2, 0.3], [0.2, 0.3]), ("alpha", "phi")),
+    (lambda: pl.journal_state([0.1, 0.2, 0.3], [0.2, 0.3]), ("h", "rho")),
+    (lambda: sy.displacement_matrix([0.1, 0.2], [1j, 2j], [0.1, 0.2, 0.3], [1j, 2j]), ("theta_1", "theta_i")),
+])
+def test_arguments_of_other_shapes_are_named(call, names):
+    with pytest.raises(ValueError, match="Expected shapes that broadcast together") as info:
+        call()
+    assert all(f"`{n}`" in str(info.value) for n in names), str(info.value)
+
+
+def test_static_loads_of_another_shape_are_named():
+    sol = pl.as_linkage(pl.FourBar(1, 3, 2.5, 3)).solve([0.5, 0.6], order=1)
+    with pytest.raises(ValueError, match=r"Expected shapes that broadcast together, got `couples\['rocker'\]` \(3,\)"):
+        pl.static_forces(sol, couples={"rocker": [1.0, 2.0, 3.0]})
+
+
+def test_tilt_angle_radii_are_single_numbers():
+    """An array `rho_a` reached ``float()`` and raised "only 0-dimensional arrays ..."."""
+    with pytest.raises(ValueError, match="Expected `rho_a` to be a single number"):
+        pl.two_force_tilt_angle(10.0, np.array([]), 0.5)
+
+
+def test_coupler_below_the_float_range_of_the_longest_link_named():
+    """b = 5e-324 beside 80 scaled to 0.0 and raised ZeroDivisionError in the generated code."""
+    with pytest.raises(ValueError, match="Expected `b` at least 2\\*\\*-1022 times the longest link, got 5e-324"):
+        pl.FourBar(30, 5e-324, 60, 80)
+    with pytest.raises(ValueError, match="Expected `b`"):
+        pl.fourbar_mechanical_advantage(30, 5e-324, 60, 80, 1.0)
+
+
+def test_freudenstein_coefficients_beyond_the_float_range_named():
+    """k2 = 1e300 squared raised a bare OverflowError (Python floats in the generated code)."""
+    k = [float(v) for v in sph.freudenstein_coefficients(0.4, 0.9, 0.7, 1.0)]
+    with pytest.raises(ValueError, match="Expected `k1` .. `k4`"):
+        sph.arcs_from_coefficients(k[0], 1e300, 1e300, k[3])
+    with pytest.raises(ValueError, match="Expected \\|cos b\\| < 1"):
+        sph.arcs_from_coefficients(k[0], k[1], k[2], 1e300)
+    arcs = sph.arcs_from_coefficients(k[0], 1e300, k[2], k[3])      # a tiny crank arc: fine
+    assert np.all(np.isfinite(arcs)) and 0.0 < arcs[0] < 1e-299
+
+
+def test_steering_model_ratio_beyond_the_float_range_named():
+    with pytest.raises(ValueError, match="Expected `a` / `h` within the float range"):
+        sy.steering_trapezoid_model(a=1480.0, h=5e-324, theta_max=0.5, steps=5, arm_range=(0.1, 0.4))
+
+
+@pytest.mark.parametrize("name", sorted(_motion_calls()))
+def test_huge_input_speed_is_quiet_and_masked(name):
+    """omega = 1e200: omega**2 overflowed with a RuntimeWarning (guide bars, double sliders).
+    Beyond the float range a rate is masked: never inf or NaN where `valid` is True."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pose = _motion_calls()[name](np.array([0.0, 0.3, 1.0]), 1e200, 0.0)
+    valid = np.asarray(pose.valid)
+    fields = getattr(pose, "_fields", {})
+    for key, value in fields.items():
+        value = np.asarray(value)
+        if value.dtype.kind in "fc" and value.shape[: valid.ndim] == valid.shape:
+            finite = np.isfinite(value).reshape(valid.shape + (-1,)).all(axis=-1)
+            assert np.all(finite | ~valid), key
+
+
+def test_hooke_acceleration_huge_speed_at_a_stationary_angle():
+    """At theta1 = 0 the slope of the ratio is 0: 0 * (1e200)**2 gave NaN (0 times inf)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert sp.hooke_acceleration(0.0, 0.5, omega=1e200) == 0.0

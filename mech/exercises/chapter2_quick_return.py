@@ -208,13 +208,17 @@ def designs_2_31(p):
     out = []
     for turn in (1, -1):
         u = C / abs(C) * np.exp(1j * turn * theta)
-        half = d * u.real
-        disc = half**2 - d**2 + c**2
-        for t in {half + math.sqrt(disc), half - math.sqrt(disc)} if disc >= 0 else ():
+        # in units of max(c, d), so that no square leaves the float range
+        unit = max(c, d)
+        half = d / unit * u.real
+        disc = half**2 - (d / unit) ** 2 + (c / unit) ** 2
+        for t in {(half + math.sqrt(disc)) * unit, (half - math.sqrt(disc)) * unit} if disc >= 0 else ():
             if t <= 0:
                 continue
             long_, short = max(abs(C), t), min(abs(C), t)
             a, b = (long_ - short) / 2, (long_ + short) / 2
+            if not a > 0.0:             # the two diagonals agree to rounding: no crank
+                continue
             if not grashof(a, b, c, d).kind == "crank-rocker":
                 continue
             limit = "extended" if abs(C) > t else "folded"
@@ -305,16 +309,23 @@ class Shaper:
 
     def ram(self, theta, order=0):
         """Ram position y_E (and its velocity with ``order=1``, unit crank speed) at `theta`."""
+        y, *rate = self._ram_below_link(theta, order)
+        return y + self.l_DE if order == 0 else (y + self.l_DE, *rate)
+
+    def _ram_below_link(self, theta, order):
+        """y_E - l_DE, which keeps the ram's motion however long DE is (y_E alone loses it
+        once l_DE / H is near 1e16), and with ``order=1`` the ram's velocity."""
         pose = self.guide_bar.solve(theta, order=order)
         D = self.guide_bar.d + self.l_CD * np.exp(1j * pose.psi)
         dx = self.x_ram - D.real
-        w = dx + 1j * np.sqrt(self.l_DE**2 - dx**2)
-        E = D + w
+        r = dx / self.l_DE
+        height = self.l_DE * np.sqrt((1.0 - r) * (1.0 + r))   # |E - D| = l_DE, no square overflows
+        below = D.imag - dx * r / (1.0 + np.sqrt((1.0 - r) * (1.0 + r)))   # D.imag + height - l_DE
         if order == 0:
-            return E.imag
+            return (below,)
         vD = 1j * self.l_CD * pose.omega_guide * np.exp(1j * pose.psi)
-        # E moves along y only and keeps |E - D|: Re(conj(w) (vE - vD)) = 0
-        return E.imag, np.real(np.conj(w) * vD) / w.imag
+        # E moves along y only and keeps |E - D|: Re(conj(w) (vE - vD)) = 0, w = dx + i height
+        return below, (dx * vD.real + height * vD.imag) / height
 
     def pressure_angle(self, theta):
         """Angle between the link DE (the force on the ram) and the ram's path, at `theta`."""
@@ -327,13 +338,14 @@ class Shaper:
         samples = integer("samples", samples, minimum=16, maximum=10**7)
         xtol = positive_length("xtol", xtol)
         t = np.linspace(0.0, 2 * math.pi, samples, endpoint=False)
-        v = self.ram(t, order=1)[1]
+        v = self._ram_below_link(t, 1)[1]
         idx = np.flatnonzero(np.sign(v) != np.sign(np.roll(v, -1)))
         step = t[1] - t[0]
-        stops = [_optimize().brentq(lambda u: float(self.ram(np.array([u]), 1)[1][0]), t[i], t[i] + step, xtol=xtol) for i in idx]
+        stops = [_optimize().brentq(lambda u: float(self._ram_below_link(np.array([u]), 1)[1][0]), t[i], t[i] + step,
+                                    xtol=xtol) for i in idx]
         if len(stops) != 2:
             raise ValueError(f"Expected a ram with two limit positions per turn, got {len(stops)}")
-        y = self.ram(np.array(stops))
+        y = self._ram_below_link(np.array(stops), 0)[0]
         forward = (stops[int(np.argmax(y))] - stops[int(np.argmin(y))]) % (2 * math.pi)
         K = max(forward, 2 * math.pi - forward) / min(forward, 2 * math.pi - forward)
         worst = float(np.max(self.pressure_angle(t)))
@@ -358,8 +370,8 @@ def shaper_2_32(p):
     l_DE = positive_length("l_DE", p["l_DE"])
     H = positive_length("H", p["H"])
     theta = float(extreme_angle(real_number("K", p["K"])))
-    if not 0.0 < theta < math.pi:
-        raise ValueError(f"Expected `K` > 1, got {p['K']!r}")
+    if not 0.0 < theta < math.pi:     # K beyond about 1e16 rounds the extreme angle to pi
+        raise ValueError(f"Expected `K` > 1 with an extreme angle pi (K - 1)/(K + 1) below pi, got {p['K']!r}")
     AC = a / math.sin(theta / 2)
     l_CD = H / (2 * math.sin(theta / 2))
     sagitta = l_CD * (1 - math.cos(theta / 2))

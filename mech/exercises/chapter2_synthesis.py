@@ -148,7 +148,8 @@ def _sample_2_29(rng):
 def _checked_solver(p):
     solution = _solve_2_29(p)
     if not solution["one branch covers phi1..phi3"].value:
-        raise ValueError("Expected a design that one branch carries through the three positions, got one that does not")
+        raise ValueError("Expected givens whose design one branch carries through the three positions, got "
+                         f"{dict(p)!r}")
     return solution
 
 

@@ -9,7 +9,8 @@ from mech._generated.hooke import (
     hooke_output_angle,
     hooke_ratio_terms,
 )
-from mech._validate import _show, finite_array, nonnegative_int, real_number
+from mech._pose import quiet_overflow
+from mech._validate import common_shape, finite_array, nonnegative_int, real_number, _show
 
 __all__ = [
     "hooke_output",
@@ -78,6 +79,7 @@ def hooke_output(theta1, alpha):
     """
     theta1 = finite_array("theta1", theta1)
     alpha = _shaft_angle("alpha", alpha)
+    common_shape(theta1=theta1, alpha=alpha)
     return _out(hooke_output_angle(theta1, alpha))
 
 
@@ -120,10 +122,12 @@ def hooke_ratio(theta1, alpha):
     """
     theta1 = finite_array("theta1", theta1)
     alpha = _shaft_angle("alpha", alpha)
+    common_shape(theta1=theta1, alpha=alpha)
     ratio, _ = hooke_ratio_terms(theta1, alpha)
     return _out(ratio)
 
 
+@quiet_overflow
 def hooke_acceleration(theta1, alpha, omega=1.0, epsilon=0.0):
     """Angular acceleration of the output shaft of a universal joint.
 
@@ -171,8 +175,10 @@ def hooke_acceleration(theta1, alpha, omega=1.0, epsilon=0.0):
     alpha = _shaft_angle("alpha", alpha)
     omega = finite_array("omega", omega)
     epsilon = finite_array("epsilon", epsilon)
+    common_shape(theta1=theta1, alpha=alpha, omega=omega, epsilon=epsilon)
     ratio, slope = hooke_ratio_terms(theta1, alpha)
-    return _out(slope * omega**2 + ratio * epsilon)
+    # (slope omega) omega: where slope = 0 a square beyond the float range gave 0 inf = NaN
+    return _out(slope * omega * omega + ratio * epsilon)
 
 
 @dataclass(frozen=True)
@@ -245,6 +251,7 @@ class DoubleUniversalJoint:
         return (f"DoubleUniversalJoint({self.alpha1!r}, {self.alpha2!r}, "
                 f"phase={self.phase!r})")
 
+    @quiet_overflow
     def solve(self, theta1, order=0, omega=1.0, epsilon=0.0):
         """Solve the double joint at input angles `theta1`.
 
@@ -278,6 +285,7 @@ class DoubleUniversalJoint:
         if order == 0:
             return DoubleJointPose(0, _out(theta_c), _out(theta3))
         omega = finite_array("omega", omega)
+        common_shape(theta1=theta1, omega=omega)
         ratio_a, slope_a = hooke_ratio_terms(theta1, a1)
         ratio_b, slope_b = hooke_ratio_terms(theta_b, a2)
         omega_c = ratio_a * omega
@@ -285,8 +293,9 @@ class DoubleUniversalJoint:
         fields = dict(ratio=_out(ratio_a * ratio_b), omega_c=_out(omega_c), omega3=_out(omega3))
         if order == 2:
             epsilon = finite_array("epsilon", epsilon)
-            epsilon_c = slope_a * omega**2 + ratio_a * epsilon
-            epsilon3 = slope_b * omega_c**2 + ratio_b * epsilon_c
+            common_shape(theta1=theta1, omega=omega, epsilon=epsilon)
+            epsilon_c = slope_a * omega * omega + ratio_a * epsilon      # no 0 inf where slope_a = 0
+            epsilon3 = slope_b * omega_c * omega_c + ratio_b * epsilon_c
             fields.update(epsilon_c=_out(epsilon_c), epsilon3=_out(epsilon3))
         return DoubleJointPose(order, _out(theta_c), _out(theta3), **fields)
 

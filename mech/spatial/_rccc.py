@@ -6,7 +6,7 @@ from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
 from mech._pose import mask_singular_rates, Pose
-from mech._validate import bool_flag, branch_sign, finite_array, nonnegative_int, real_number
+from mech._validate import bool_flag, branch_sign, common_shape, finite_array, nonnegative_int, real_number
 
 __all__ = ["RCCC", "RCCCPose"]
 
@@ -161,6 +161,7 @@ class RCCC:
         fields = {"theta": phi12, "valid": valid, "phi41": np.negative(psi), "s4": np.negative(psi0), **middle}
         if order >= 1:
             omega = finite_array("omega", omega)
+            common_shape(theta=phi12, omega=omega)
             # d/dtheta of the coefficients: the dual parts at theta + eps (rule (1))
             dA, dB, dC = (x.dual_part for x in _abc.spherical_fourbar_abc(a, b, c, d, Dual(th, 1.0)))
             # the root vanishes at a limit position: the rates are infinite there

@@ -11,7 +11,7 @@ from mech._validate import (
     bool_flag, branch_sign, finite_array, motion_inputs, positive_length, real_number, real_tuple,
 )
 from mech._pose import mask_singular_rates, Pose
-from mech._scaling import length_scale
+from mech._scaling import DEAD_POINT_RTOL, length_scale
 
 __all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
 
@@ -277,6 +277,10 @@ class RSSR:
         l1, l2, l3, s0, s3, h0, lam = dims = self._dims()
         sigma = self._branch
         A, B, C, disc = self._coefficients(phi01)
+        # within rounding (DEAD_POINT_RTOL) of a limit position the input is the limit
+        # position: it assembles in every unit of length, with infinite (NaN) rates
+        dead = np.abs(disc) <= DEAD_POINT_RTOL * (A * A + B * B + C * C)
+        disc = np.where(dead & (disc < 0.0), 0.0, disc)
         valid = disc >= 0.0
         if strict and not np.all(valid):
             bad = float(phi01[~valid].ravel()[0])
@@ -298,18 +302,19 @@ class RSSR:
             if order >= 1:
                 omega = rates[0]
                 dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega, rates[1] if order >= 2 else 0.0)
-                w3 = np.where(valid, _abc.abc_rate(dA, dB, dC, phi03, root, sigma), np.nan)
+                w3 = np.where(valid & ~dead, _abc.abc_rate(dA, dB, dC, phi03, root, sigma), np.nan)
                 fields["omega_output"] = w3[()]
                 fields["vB"], fields["vC"] = (_stack(*v) for v in np.split(
                     np.array(np.broadcast_arrays(*_gen.rssr_velocity(l1, l3, lam, phi01, phi03, omega, w3))), 2))
             if order >= 2:
                 alpha = rates[1]
-                a3 = np.where(valid, _abc.abc_accel(C, dA, dB, ddA, ddB, ddC, phi03, w3, root, sigma), np.nan)
+                a3 = np.where(valid & ~dead, _abc.abc_accel(C, dA, dB, ddA, ddB, ddC, phi03, w3, root, sigma), np.nan)
                 fields["alpha_output"] = a3[()]
                 fields["aB"], fields["aC"] = (_stack(*v) for v in np.split(np.array(np.broadcast_arrays(
                     *_gen.rssr_acceleration(l1, l3, lam, phi01, phi03, omega, w3, alpha, a3))), 2))
-        for name in _LINEAR.intersection(fields):
-            fields[name] = fields[name] * self._scale
+        with np.errstate(over="ignore"):      # a rate beyond the float range: masked below
+            for name in _LINEAR.intersection(fields):
+                fields[name] = fields[name] * self._scale
         if order >= 1:
             mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
         return RSSRPose(order, fields)

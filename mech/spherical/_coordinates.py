@@ -9,7 +9,7 @@ decreasing latitude and y east, so that x cross y = P (outward).
 import numpy as np
 
 from mech._generated.spherical_calculus import sph_distance_lonlat, sph_local_frame, sph_to_xyz
-from mech._validate import finite_array
+from mech._validate import common_shape, finite_array
 
 __all__ = ["to_xyz", "from_xyz", "local_frame", "distance", "distance_lonlat"]
 
@@ -102,6 +102,7 @@ def to_xyz(lon, lat):
     """
     lon = finite_array("lon", lon)
     lat = finite_array("lat", lat)
+    common_shape(lon=lon, lat=lat)
     return _stack(*sph_to_xyz(lon, lat))
 
 
@@ -286,4 +287,5 @@ def distance_lonlat(lon1, lat1, lon2, lat2):
     """
     args = [finite_array(n, v) for n, v in
             (("lon1", lon1), ("lat1", lat1), ("lon2", lon2), ("lat2", lat2))]
+    common_shape(**dict(zip(("lon1", "lat1", "lon2", "lat2"), args)))
     return np.asarray(sph_distance_lonlat(*args))

@@ -279,7 +279,8 @@ class SphericalFourBar:
         if self.change_point:
             self._solve_change_block(inputs, order, out)
             return
-        with np.errstate(invalid="ignore", divide="ignore"):
+        # over: 1 / |B x D|^2 where B all but meets D (a = d, theta ~ 1e-160) cannot assemble
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             psi, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz = _gen.spherical_fourbar_position(
                 a, b, c, d, r, gamma, theta, -self._branch)
             out["psi"][...] = psi

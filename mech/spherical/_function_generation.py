@@ -12,7 +12,8 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
-from mech._validate import arc as _arc, bool_flag, finite_array, function_pairs, integer, MAX_COUNT, option, real_number
+from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, function_pairs, integer,
+                            MAX_COUNT, option, real_number)
 
 __all__ = [
     "FunctionGenerator",
@@ -119,10 +120,17 @@ def arcs_from_coefficients(k1, k2, k3, k4):
     k = [real_number(f"k{i + 1}", v) for i, v in enumerate((k1, k2, k3, k4))]
     if not abs(k[0]) < 1.0:
         raise ValueError(f"Expected |`k1`| < 1 (k1 = cos d), got {k[0]!r}")
-    with np.errstate(invalid="ignore"):
-        a, b, c, d, cos_b = sfg_arcs(*k)
+    with np.errstate(invalid="ignore", over="ignore"):
+        # NumPy floats: on Python floats a square beyond the float range raises OverflowError
+        a, b, c, d, cos_b = sfg_arcs(*(np.float64(v) for v in k))
+    beyond = ValueError(f"Expected `k1` .. `k4` of a linkage whose arcs are within the float range, got "
+                        f"{[float(v) for v in k]!r}")
+    if not np.isfinite(cos_b):
+        raise beyond
     if not abs(cos_b) < 1.0:
         raise ValueError(f"Expected |cos b| < 1 for a real coupler arc, got cos b = {float(cos_b)!r}")
+    if not np.all(np.isfinite([a, b, c, d])):
+        raise beyond
     return np.array([a, b, c, d], dtype=float)
 
 
@@ -217,6 +225,7 @@ class FunctionGenerator:
     def structural_error(self, x, y):
         """Structural error psi_sim(theta0 + x) - (psi0 + y), wrapped to (-pi, pi], eq. (7)."""
         x, y = finite_array("x", x), finite_array("y", y)
+        common_shape(x=x, y=y)
         psi, _ = _simulate(self.arcs, self.theta0 + x, self.branch)
         return _wrap(psi - self.psi0 - y)
 

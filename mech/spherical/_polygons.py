@@ -23,7 +23,7 @@ from types import MappingProxyType
 import numpy as np
 
 from mech._generated import spherical_polygons as _gen
-from mech._validate import arc_array as _arcs, finite_array, option
+from mech._validate import arc_array as _arcs, common_shape, finite_array, integer, option
 from mech.spherical._coordinates import _norm
 
 __all__ = [
@@ -48,15 +48,14 @@ def _polygon_arrays(arcs, angles):
     if arcs.ndim == 0 or not 3 <= arcs.shape[-1] <= 7:
         raise ValueError(f"Expected `arcs` with 3 to 7 entries on its last axis, got shape {arcs.shape}")
     if angles.ndim == 0 or angles.shape[-1] != arcs.shape[-1]:
-        raise ValueError(f"Expected `angles` with {arcs.shape[-1]} entries on its last axis, got shape {angles.shape}")
-    shape = np.broadcast_shapes(arcs.shape, angles.shape)
+        raise ValueError(f"Expected `angles` with {arcs.shape[-1]} entries on its last axis, as `arcs` "
+                         f"{arcs.shape}, got shape {angles.shape}")
+    shape = common_shape(arcs=arcs, angles=angles)
     return np.broadcast_to(arcs, shape), np.broadcast_to(angles, shape)
 
 
 def _axis_number(name, value, n):
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 1 <= value <= n:
-        raise ValueError(f"Expected `{name}` to be an axis number in 1..{n}, got {value!r}")
-    return int(value)
+    return integer(name, value, minimum=1, maximum=n)
 
 
 def _chain(arcs, angles):
@@ -112,7 +111,8 @@ def chain_components(arcs, angles):
         raise ValueError(f"Expected `arcs` with 1 to 6 entries on its last axis, got shape {np.shape(arcs)}")
     m = arcs.shape[-1]
     if m > 1 and (angles.ndim == 0 or angles.shape[-1] != m - 1):
-        raise ValueError(f"Expected `angles` with {m - 1} entries on its last axis, got shape {angles.shape}")
+        raise ValueError(f"Expected `angles` with {m - 1} entries on its last axis, one fewer than `arcs` "
+                         f"{arcs.shape}, got shape {angles.shape}")
     if m == 1:
         angles = np.zeros(arcs.shape[:-1] + (0,))
     return _chain(arcs, angles)
@@ -171,7 +171,8 @@ def open_chain_axes(arcs, angles, *, frame=None):
         raise ValueError(f"Expected `arcs` with at least 1 entry on its last axis, got shape {arcs.shape}")
     m = arcs.shape[-1]
     if m > 1 and (angles.ndim == 0 or angles.shape[-1] != m - 1):
-        raise ValueError(f"Expected `angles` with {m - 1} entries on its last axis, got shape {angles.shape}")
+        raise ValueError(f"Expected `angles` with {m - 1} entries on its last axis, one fewer than `arcs` "
+                         f"{arcs.shape}, got shape {angles.shape}")
     if m == 1:
         angles = np.zeros(arcs.shape[:-1] + (0,))
     batch = np.broadcast_shapes(arcs.shape[:-1], angles.shape[:-1])
@@ -472,9 +473,8 @@ def law_count(n):
     >>> law_count(4)
     {'sine': 12, 'sine-cosine': 12, 'cosine': 6, 'total': 30}
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
-        raise ValueError(f"Expected `n` to be an integer >= 3, got {n!r}")
-    pairs = int(n) * (int(n) - 1)
+    n = integer("n", n, minimum=3)
+    pairs = n * (n - 1)
     counts = {"sine": pairs, "sine-cosine": pairs, "cosine": pairs // 2}
     counts["total"] = sum(counts.values())
     return counts

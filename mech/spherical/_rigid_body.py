@@ -10,7 +10,7 @@ angles.
 import numpy as np
 
 from mech._generated.spherical_calculus import sph_rotation
-from mech._validate import finite_array
+from mech._validate import common_shape, finite_array
 from mech.spherical._coordinates import _cross_accurate, _norm, _vectors, local_frame
 
 __all__ = ["tangent", "inclination", "point_at", "rotation_matrix", "rotate_about", "turn",
@@ -155,6 +155,7 @@ def point_at(a, arc, inclination):
     a = _vectors("a", a)
     arc = finite_array("arc", arc)[..., None]
     inc = finite_array("inclination", inclination)[..., None]
+    common_shape(**{"a": a, "arc": arc, "inclination": inc})
     ex, ey = local_frame(a)
     return a * np.cos(arc) + (ex * np.cos(inc) + ey * np.sin(inc)) * np.sin(arc)
 
@@ -197,6 +198,7 @@ def rotation_matrix(axis, angle):
     """
     k = _vectors("axis", axis)
     angle = finite_array("angle", angle)
+    common_shape(axis=k[..., 0], angle=angle)
     entries = np.broadcast_arrays(*sph_rotation(k[..., 0], k[..., 1], k[..., 2], angle))
     return np.stack(entries, axis=-1).reshape(entries[0].shape + (3, 3))
 
@@ -242,7 +244,9 @@ def rotate_about(p, axis, angle):
            [ 0., -1.,  0.]])
     """
     p = _vectors("p", p)
-    return np.einsum("...ij,...j->...i", rotation_matrix(axis, angle), p)
+    k, angle = _vectors("axis", axis), finite_array("angle", angle)
+    common_shape(p=p[..., 0], axis=k[..., 0], angle=angle)
+    return np.einsum("...ij,...j->...i", rotation_matrix(k, angle), p)
 
 
 def turn(a, b, gamma):

@@ -10,6 +10,7 @@ import numpy as np
 
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
+from mech._scaling import length_scale
 from mech._validate import branch_sign, finite_array, positive_length, real_number
 from mech.spherical._dual import Dual
 
@@ -189,6 +190,16 @@ def rssr_from_transference(l1, l2, l3, s0, s3, h0, lam, phi01, *, branch=1):
     s0, s3, h0, lam = (real_number(n, v) for n, v in (("s0", s0), ("s3", s3), ("h0", h0), ("lam", lam)))
     sigma = branch_sign(branch)
     phi01 = finite_array("phi01", phi01)
+    # angles only: in units of a power of two near the longest length, so that no square of
+    # a length leaves the float range (lengths of 1e+-300 gave NaN)
+    unit = length_scale(l1, l2, l3, s0, s3, h0)
+    given = (l1, l2, l3, s0, s3, h0)
+    l1, l2, l3, s0, s3, h0 = (x / unit for x in given)
+    if l1 * l3 < 2.0**-500:         # the equation is divided by l1 l3, as in `mech.spatial.RSSR`
+        raise ValueError(
+            f"Expected `l1` * `l3` >= 2**-500 * {max(abs(x) for x in given)!r}**2 (the largest length or "
+            f"offset, squared) so that the coefficients stay finite, got `l1` = {given[0]!r}, `l3` = {given[2]!r}"
+        )
     samples = (np.arange(8) + 0.5) * (np.pi / 4)
     th = Dual(phi01[..., None], s0)
     ps = Dual(np.broadcast_to(samples, phi01.shape + (8,)), s3)

@@ -151,3 +151,21 @@ def test_bad_givens_raise_value_error():
         EXERCISE_2_32.solve(l_DE=5.0)
     with pytest.raises(ValueError):
         EXERCISE_2_31.solve(l_AD=1000.0)
+
+
+@pytest.mark.parametrize("l_DE", [1e10, 1e154, 1e300])
+def test_shaper_2_32_any_link_DE(l_DE):
+    """y_E = D_y + sqrt(l_DE^2 - dx^2) lost the ram's motion for a long DE (ZeroDivisionError at
+    1e154, OverflowError at 1e300). The stroke and K do not depend on l_DE, and the largest
+    pressure angle is asin(half the sagitta / l_DE)."""
+    s = shaper_2_32({**EXERCISE_2_32.defaults, "l_DE": l_DE})
+    K, stroke, worst = s.measure()
+    assert math.isclose(K, 2.0, rel_tol=1e-9) and math.isclose(stroke, 300.0, rel_tol=1e-9)
+    sagitta = s.l_CD * (1 - math.cos(math.pi / 3 / 2))
+    assert math.isclose(worst, math.asin(sagitta / 2 / l_DE), rel_tol=1e-6)
+
+
+@pytest.mark.parametrize("changes", [{"l_CD": 1e300}, {"l_AD": 1e300}, {"l_CD": 1e-300}])
+def test_designs_2_31_extreme_givens_have_no_design(changes):
+    """A square of 1e300 raised OverflowError; equal diagonals gave "Expected `a` > 0"."""
+    assert designs_2_31({**EXERCISE_2_31.defaults, **changes}) == []

@@ -86,3 +86,11 @@ def test_exercise_2_29_bad_givens():
         EXERCISE_2_29.solve(AD=-1.0)
     with pytest.raises(ValueError, match="Expected distinct `x`"):
         EXERCISE_2_29.solve(phi2=60.0)
+
+
+def test_givens_without_a_carrying_branch_are_shown():
+    """The message said "got one that does not" without the givens that failed."""
+    import mech.exercises as ex
+
+    with pytest.raises(ValueError, match=r"Expected givens whose design one branch carries .*'phi1': 0\.0"):
+        ex.get("2-29").solve(phi1=0.0)

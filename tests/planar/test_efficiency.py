@@ -211,3 +211,10 @@ def test_example_2_11_ratio_is_2_26_over_2_28():
         assert ratio == pytest.approx(math.tan(lam) ** 2 / (math.tan(lam + 2 * phi) * math.tan(lam - 2 * phi)),
                                       rel=1e-12)
         assert abs(ratio - eq_2_28 / eq_2_26) > 1e-3              # the division as the text words it
+
+
+@pytest.mark.parametrize("phi", [np.pi / 2, 3.0, 1e300])
+def test_eccentric_clamp_friction_angle_below_right_angle(phi):
+    """A friction angle atan(mu) is below pi/2; phi = 1e300 returned NaN without a word."""
+    with pytest.raises(ValueError, match=r"Expected `phi` in \[0, pi/2\)"):
+        eccentric_clamp_max_angle(10.0, 40.0, 1.0, phi)

@@ -12,7 +12,9 @@ from mech.planar.forces._transmission import min_transmission_angle, transmissio
 
 TOO_LONG = [((1.0, 4.0, 3.0, 9.0), "d", "8.0", "9.0"),
             ((12.0, 4.0, 3.0, 5.0), "a", "12.0", "12.0"),
-            ((1.0, 2.0, 3.0, 6.0), "d", "6.0", "6.0")]       # d equal to the rest: flat
+            ((1.0, 2.0, 3.0, 6.0), "d", "6.0", "6.0"),       # d equal to the rest: flat
+            # the rest is 2**-1000 times the longest or less: scaled, it was shown as 0.0
+            ((1e300, 40.0, 30.0, 35.0), "a", "105.0", "1e\\+300")]
 FUNCTIONS = {
     "transmission_angle": lambda L: transmission_angle(*L, 0.3),
     "fourbar_pressure_angle": lambda L: fourbar_pressure_angle(*L, 0.3),

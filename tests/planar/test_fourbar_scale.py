@@ -227,3 +227,33 @@ def test_solve_scale_power_of_two_random(lengths, coupler, k, branch):
         assert _same_bits(getattr(pose, name)[ok], getattr(base, name)[ok], s), name
     for name in ANGLES:
         assert np.array_equal(getattr(pose, name)[ok], getattr(base, name)[ok]), name
+
+
+def test_rates_beyond_the_float_range_are_masked():
+    """Near the dead point of (1, b, b, b), b = 1 - 1.4e-6, the unit acceleration of C is
+    about 9e11; times lengths of 1e300 it leaves the float range, and the complex product
+    held NaN under ``valid`` True. It is masked like a dead point's now: the pose is
+    assembled, its rates are not numbers."""
+    b = 0.999998627552429
+    theta = np.array([1.1920929e-07, 0.5])
+    unit = FourBar(1, b, b, b).solve(theta, order=2, omega=1.3, alpha=0.7)
+    assert unit.valid.all() and abs(unit.aC[0]) > 1e11            # finite at scale 1
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        huge = FourBar(1e300, b * 1e300, b * 1e300, b * 1e300).solve(theta, order=2, omega=1.3, alpha=0.7)
+    assert huge.assembled.tolist() == [True, True] and huge.valid.tolist() == [False, True]
+    assert np.isnan(huge.aC[0]) and np.isfinite(huge.C[0])
+    for name in ("B", "C", "P", "omega_output", "vC", "vP", "alpha_output", "aC", "aP"):
+        assert np.all(np.isfinite(getattr(huge, name)[huge.valid])), name
+    np.testing.assert_allclose(huge.psi, unit.psi, rtol=1e-9)    # near a dead point: ill-conditioned
+
+
+@pytest.mark.parametrize("lengths", [(1, 0.78314, 1, 1), (3000, 492.155, 32.487, 3000), (1, 1, 0.01, 1)])
+def test_pin_all_but_on_the_pivot_is_quiet(lengths):
+    """a = d: at theta ~ 1e-157 B is 1e-157 from D, 1 / |BD|^2 overflowed with a
+    RuntimeWarning (the pose cannot be assembled there: b != c)."""
+    theta = [2.4e-157, -6.3e-155, 1e-160, 0.0]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pose = FourBar(*lengths).solve(theta, order=2)
+    assert not pose.valid.any() and np.isnan(pose.psi).all()

@@ -20,7 +20,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from mech.planar import GuideBar, SliderCrank
+from mech.planar import FourBar, GuideBar, Linkage, SliderCrank
 from mech.planar.forces._force_gain import slider_crank_dead_points, slider_crank_mechanical_advantage
 from mech.planar.forces._pressure_angle import slider_crank_min_transmission_angle, slider_crank_pressure_angle
 from mech.planar.special._double_slider import EllipticTrammel, OldhamCoupling, ScotchYoke, TangentMechanism
@@ -115,6 +115,18 @@ def test_tangent_mechanism_overflow_is_quiet():
     assert pose.assembled.tolist() == [True, True, True] and np.isinf(pose.h[:2]).all()
     # a rate beyond the float range is masked like a dead point's: NaN under a False mask
     assert pose.valid.tolist() == [False, False, True] and np.isnan(pose.v[:2]).all()
+
+
+def test_rate_overflow_near_a_dead_point_is_quiet():
+    """Near a dead point a unit rate of 1e8 times a length of 1e300 leaves the float range.
+
+    The product was taken outside ``np.errstate``: a RuntimeWarning escaped on valid input.
+    Beyond the float range the rate is masked like a dead point's (NaN, ``valid`` False).
+    """
+    theta = np.linspace(-np.pi, np.pi, 721)      # hits -5 pi / 6 of the slider-crank
+    pose = _quiet(SliderCrank(3e300, 2e300, 0.5e300).solve, theta, order=2)
+    for value in (pose.v, pose.acc):
+        assert np.all(np.isfinite(value[pose.valid])) and np.all(np.isnan(value[~pose.valid]))
 
 
 @pytest.mark.parametrize("scale", SCALES)
@@ -287,3 +299,79 @@ def test_slider_crank_dead_points_at_every_scale(scale):
             value = getattr(pose, name)
             assert np.isnan(value[0]) and np.isfinite(value[1]), name
         assert np.isfinite(pose.vB).all() and np.isfinite(pose.aB).all()
+
+
+def _fourbar_margin(a, b, c, d, theta):
+    """Distance (relative to a + b + c + d) by which |BD| lies inside [|b - c|, b + c], at 50 digits."""
+    mpmath.mp.dps = 50
+    k = mpmath.sqrt(mpmath.mpf(d - a) ** 2 + 4 * a * d * mpmath.sin(mpmath.mpf(theta) / 2) ** 2)
+    return float(min(b + c - k, k - abs(b - c)) / (a + b + c + d))
+
+
+@pytest.mark.parametrize("lengths", [(1, 2, 3, 1), (1, 1, 2, 1), (2, 1, 3, 2), (6, 3, 3, 6), (3, 4, 2, 6)])
+@pytest.mark.parametrize("samples", [721, 361, 24])
+def test_dead_point_samples_valid_in_every_unit(lengths, samples):
+    """Grids of nice angles land on dead points (|BD| = b + c or |b - c|) of nice lengths:
+    whether such a sample assembled was a rounding, decided differently at 1e-300 or 3.7
+    than at 1 (289 of 11440 integer four-bars and grids). Within 2**-46 of the size the
+    input is the dead point: assembled, with NaN rates (`valid` False with rates) in
+    every unit, for `FourBar` and `Linkage` alike. The mask is checked against the margin
+    at 50 digits: True where it is >= -1e-15, False where it is < -1e-13."""
+    theta = np.linspace(-np.pi, np.pi, samples) if samples != 24 else np.radians(np.arange(0, 360, 15.0))
+    margin = np.array([_fourbar_margin(*lengths, t) for t in theta])
+    for order in (0, 1):
+        masks = []
+        for s in [1.0, 1e-300, 3.7, 1e300]:
+            L = [x * s for x in lengths]
+            fb = _quiet(FourBar(*L).solve, theta, order=order)
+            lk = (Linkage({"A": 0, "D": L[3]}).crank("crank", pivot="A", tip="B", length=L[0])
+                  .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(L[1], L[2])))
+            masks += [fb.valid, _quiet(lk.solve, theta, order=order).valid]
+            if order == 0:
+                assert np.all(fb.valid[margin >= -1e-15]) and not np.any(fb.valid[margin < -1e-13])
+        for m in masks[1:]:
+            np.testing.assert_array_equal(m, masks[0])
+
+
+@pytest.mark.parametrize("lengths", [(3, 2, 0.5), (1, 2, 3), (2, 3, -1)])
+def test_slider_crank_dead_point_samples_valid_in_every_unit(lengths):
+    """The slider-crank's dead points |a sin(theta) - e| = b on a nice grid, and b = |e| - a
+    (the rod just reaches the guide), which the constructor refused at 1e-300 only."""
+    theta = np.linspace(-np.pi, np.pi, 721)
+    for order in (0, 1):
+        ref = SliderCrank(*lengths).solve(theta, order=order)
+        for s in [1e-300, 3.7, 1e300]:
+            pose = _quiet(SliderCrank(*(x * s for x in lengths)).solve, theta, order=order)
+            np.testing.assert_array_equal(pose.valid, ref.valid)
+            np.testing.assert_array_equal(pose.assembled, ref.assembled)
+
+
+@pytest.mark.parametrize("lengths", [(1, 2, -2), (1, 2, 2), (3, 2, 0.5)])
+def test_linkage_slider_dead_point_samples_valid_in_every_unit(lengths):
+    """The RRP group of a `Linkage` (the slider-crank by `as_linkage`) on a grid that lands on
+    its dead points: the masks were scale-dependent (39 of 624 nice cases)."""
+    from mech.planar import as_linkage
+
+    theta = np.linspace(-np.pi, np.pi, 721)
+    for order in (0, 1):
+        ref = as_linkage(SliderCrank(*lengths)).solve(theta, order=order).valid
+        np.testing.assert_array_equal(ref, SliderCrank(*lengths).solve(theta, order=order).valid)
+        for s in [1e-300, 3.7, 1e300]:
+            got = _quiet(as_linkage(SliderCrank(*(x * s for x in lengths))).solve, theta, order=order).valid
+            np.testing.assert_array_equal(got, ref)
+
+
+@pytest.mark.parametrize("dims", [(1, 2, 1, 0.0, 0.0, 1.0, 0.0), (1, 2, 1, 0.0, 1.0, 1.0, np.pi / 2),
+                                  (2, 4, 1, 0.5, 1.0, 3.0, 1.0)])
+def test_rssr_limit_position_samples_valid_in_every_unit(dims):
+    """RSSR limit positions on a nice grid (79 of 2958 nice cases had scale-dependent masks)."""
+    from mech.spatial import RSSR
+
+    theta = np.linspace(-np.pi, np.pi, 721)
+    *lengths, lam = dims
+    for order in (0, 1):
+        ref = RSSR(*lengths, lam).solve(theta, order=order)
+        for s in [1e-300, 3.7, 1e300]:
+            got = _quiet(RSSR(*(x * s for x in lengths), lam).solve, theta, order=order)
+            np.testing.assert_array_equal(got.valid, ref.valid)
+            np.testing.assert_array_equal(got.assembled, ref.assembled)

@@ -336,6 +336,11 @@ def test_simulation_detects_a_wrong_design():
     (lambda: quick_return_slider_crank(1.3, 1.0, offset=100.0), "offset"),
     (lambda: quick_return_slider_crank(1.3, float("nan"), alpha=0.5), "stroke"),
     (lambda: quick_return_guide_bar(1.3, 1j), "frame"),
+    # K so large that the extreme angle or the crank rounds to its limit: named `time_ratio`
+    # (the messages named `swing` and `a`, which the caller never gave)
+    (lambda: quick_return_guide_bar(1e300, 10.0), "time_ratio"),
+    (lambda: quick_return_guide_bar(1e15, 10.0), "time_ratio"),
+    (lambda: quick_return_crank_rocker(1e300, 1.0, 0.5, alpha=0.5), "time_ratio"),
     (lambda: crank_rocker_family(1.3, 1.0, 0.5, min_transmission=2.0), "min_transmission"),
     (lambda: slider_crank_family(1.3, 1.0, samples=True), "samples"),
     (lambda: simulate_quick_return("FourBar"), "linkage"),

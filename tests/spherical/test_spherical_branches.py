@@ -292,7 +292,9 @@ def test_solve_change_point_frame_and_strict():
 @pytest.mark.parametrize("arcs", [(0.3, 0.9, 0.7, 1.0), (0.3, 0.8, 0.8, 0.3)])
 def test_solve_rates_any_input_speed(arcs):
     """Rates scale as omega and (omega^2, alpha) for input rates from 1e-300 to 1e300;
-    where the true value exceeds the float range it is +-inf (never NaN), with no warning."""
+    where the true value exceeds the float range it is masked like a dead point's rate
+    (NaN, `valid` False, `assembled` True: never inf or NaN under a True mask), with no
+    warning."""
     linkage = SphericalFourBar(*arcs, coupler=COUPLER)
     theta = np.array([0.0, 1.0, -2.5])
     unit = linkage.solve(theta, order=2, omega=1.0, alpha=0.0)
@@ -303,4 +305,19 @@ def test_solve_rates_any_input_speed(arcs):
         want = omega * omega * unit.aP + alpha * spin.aP
         np.testing.assert_allclose(pose.aP, want, rtol=1e-14, atol=1e-14 * np.max(np.abs(want)))
     huge = linkage.solve(theta, order=2, omega=1e200, alpha=0.0)
-    assert huge.valid.all() and not np.isnan(huge.aP).any() and np.isinf(huge.alpha_output).all()
+    assert huge.assembled.all() and not huge.valid.any()
+    assert np.isnan(huge.alpha_output).all() and np.isfinite(huge.omega_output).all()
+    assert np.isfinite(huge.B).all() and np.isfinite(huge.C).all()
+
+
+def test_solve_pin_all_but_on_the_pivot_is_quiet():
+    """a = d, b != c: at theta = 1e-160 the generated 1 / |B x D|^2 overflowed with a
+    RuntimeWarning; the pose cannot be assembled there."""
+    import warnings
+
+    linkage = SphericalFourBar(0.41915436819625707, 0.07445237811859015, 0.5721404825477754,
+                               0.41915436819625707, coupler=(0.3, 0.4))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pose = linkage.solve([1e-160, -1e-160, 0.0], order=2)
+    assert not pose.valid.any() and np.isnan(pose.psi).all()

@@ -266,7 +266,7 @@ def test_polygon_relations_bad_input():
         polygon_relations(np.full(4, 0.5), np.zeros(3))
     with pytest.raises(ValueError, match="Expected finite `angles`"):
         polygon_relations(np.full(3, 0.5), [0.0, np.nan, 0.0])
-    with pytest.raises(ValueError, match="Expected `k` to be an axis number"):
+    with pytest.raises(ValueError, match=r"Expected `k` to be an integer in \[1, 4\], got 5"):
         sine_law(np.full(4, 0.5), np.zeros(4), 1, 5)
     with pytest.raises(ValueError, match="Expected `k` different"):
         cosine_law(np.full(4, 0.5), np.zeros(4), 2, 2)

@@ -133,3 +133,26 @@ def test_rssr_from_transference_bad_length():
 def test_dual_fourbar_output_bad_twist():
     with pytest.raises(ValueError, match="Expected `b_hat`"):
         dual_fourbar_output((0.5, 0), (3.5, 0), (1, 0), (1, 0), 0.0)
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1e-154, 1e154, 1e300])
+def test_rssr_from_transference_any_unit_of_length(scale):
+    """Squares of lengths 1e+-300 left the float range: every angle came back NaN. The
+    reference is the RSSR's own solver, which shares no code with the dual route."""
+    theta = np.linspace(-3.0, 3.0, 13)
+    lengths = np.array([1.0, 4.0, 2.0, 0.5, 0.8, 3.0])
+    want = RSSR(*lengths, 1.0).solve(theta).phi03
+    got = rssr_from_transference(*(lengths * scale), 1.0, theta)
+    np.testing.assert_array_equal(np.isnan(got), np.isnan(want))
+    np.testing.assert_allclose(got, want, atol=1e-12)
+
+
+@pytest.mark.parametrize("lengths", [(1e-300, 4.0, 2.0, 0.5, 0.8, 3.0), (1.0, 1e300, 2.0, 0.5, 0.8, 3.0),
+                                     (1.0, 4.0, 2.0, 0.5, 0.8, 1e154)])
+def test_rssr_from_transference_extreme_ratio_named_like_rssr(lengths):
+    """Divided by l1 l3 beside a far longer link, squares overflowed with RuntimeWarnings;
+    the check and the message are those of `RSSR`."""
+    with pytest.raises(ValueError, match="Expected `l1` \\* `l3` >= 2\\*\\*-500"):
+        RSSR(*lengths, 1.0)
+    with pytest.raises(ValueError, match="Expected `l1` \\* `l3` >= 2\\*\\*-500"):
+        rssr_from_transference(*lengths, 1.0, [0.0, 1.0])

@@ -15,7 +15,7 @@ import numpy as np
 from mech._generated.efficiency import push_rod as _push_rod
 from mech._generated.efficiency import spreading_wedge, wedge_press as _wedge_press
 from mech._generated.friction import eccentric_clamp
-from mech._validate import bool_flag, finite_array
+from mech._validate import bool_flag, common_shape, finite_array
 from mech.planar.forces._friction import _nonnegative, _out, _positive
 
 __all__ = [
@@ -408,7 +408,7 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
     rho_pin : array_like
         Friction-circle radius of the pivot, >= 0 (:func:`~mech.planar.forces._friction.friction_circle`).
     phi : array_like
-        Friction angle disc-workpiece, radians, >= 0.
+        Friction angle disc-workpiece, radians, in [0, pi/2).
 
     Returns
     -------
@@ -418,7 +418,7 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
     Raises
     ------
     ValueError
-        If a length is out of range or `phi` < 0.
+        If a length is out of range or `phi` is outside [0, pi/2).
 
     Notes
     -----
@@ -471,11 +471,14 @@ def eccentric_clamp_locks(alpha, e, r_disc, rho_pin, phi):
     """
     e, r, rho, phi = _clamp_args(e, r_disc, rho_pin, phi)
     alpha = finite_array("alpha", alpha)
+    common_shape(alpha=alpha, e=e, r_disc=r, rho_pin=rho, phi=phi)
     with np.errstate(invalid="ignore"):      # the largest angle (unused here) is NaN when x > 1
         margin, _ = eccentric_clamp(alpha, e, r, rho, phi)
     return _out(np.asarray(margin) >= 0)
 
 
 def _clamp_args(e, r_disc, rho_pin, phi):
-    return (_positive("e", e), _positive("r_disc", r_disc), _nonnegative("rho_pin", rho_pin),
-            _nonnegative("phi", phi))
+    phi = _nonnegative("phi", phi)
+    if np.any(phi >= np.pi / 2):             # a friction angle atan(mu) is below pi/2
+        raise ValueError(f"Expected `phi` in [0, pi/2), got {float(phi[phi >= np.pi / 2].ravel()[0])!r}")
+    return (_positive("e", e), _positive("r_disc", r_disc), _nonnegative("rho_pin", rho_pin), phi)

@@ -17,7 +17,8 @@ from mech._generated.friction import (
     thrust_moment,
     two_force_tilt,
 )
-from mech._validate import bool_flag, finite_array, option, planar_points, positive_length
+from mech._validate import (bool_flag, common_shape, finite_array, nonnegative_number, option, planar_points,
+                            positive_length)
 
 __all__ = [
     "FRICTION_TABLE_2_2",
@@ -193,6 +194,7 @@ def slider_state(alpha, phi):
     ['decelerates or stays at rest', 'accelerates']
     """
     alpha, phi = _nonnegative("alpha", alpha), _nonnegative("phi", phi)
+    common_shape(alpha=alpha, phi=phi)
     return _out(_STATES[(np.sign(alpha - phi) + 1).astype(int)])
 
 
@@ -432,6 +434,7 @@ def journal_state(h, rho):
     ['decelerates or stays at rest', 'keeps its state', 'accelerates']
     """
     h, rho = _nonnegative("h", h), _nonnegative("rho", rho)
+    common_shape(h=h, rho=rho)
     return _out(_STATES[(np.sign(h - rho) + 1).astype(int)])
 
 
@@ -472,7 +475,7 @@ def two_force_tilt_angle(length, rho_a, rho_b, cross=True):
     """
     l = positive_length("length", length)
     cross = bool_flag("cross", cross)
-    ra, rb = (float(_nonnegative(n, v)) for n, v in (("rho_a", rho_a), ("rho_b", rho_b)))
+    ra, rb = (nonnegative_number(n, v) for n, v in (("rho_a", rho_a), ("rho_b", rho_b)))
     if cross and ra + rb >= l:
         raise ValueError(
             f"Expected `rho_a` + `rho_b` < `length` for a cross tangent, got "

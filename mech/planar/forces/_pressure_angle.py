@@ -18,7 +18,7 @@ from mech._validate import (
     bool_flag, finite_array, instance, known_name, planar_points, positive_length, real_number,
 )
 from mech.planar.structure._grashof import grashof
-from mech.planar.forces._transmission import _lengths as _fourbar_lengths, check_assembled
+from mech.planar.forces._transmission import _lengths as _fourbar_lengths, at_dead_points, check_assembled
 from mech.planar.kinematics._linkage import LinkageSolution
 
 __all__ = [
@@ -223,6 +223,7 @@ def fourbar_pressure_angle(a, b, c, d, theta, *, strict=False):
     theta = finite_array("theta", theta)
     with np.errstate(invalid="ignore"):
         _, gamma = fourbar_transmission(a, b, c, d, theta)
+    gamma = at_dead_points(gamma, a, b, c, d, theta)
     check_assembled(gamma, theta, lengths, strict)
     return _float(np.pi / 2 - gamma)
 

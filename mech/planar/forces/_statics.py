@@ -17,7 +17,7 @@ import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import statics as _g
-from mech._validate import finite_array, instance, integer, nonnegative_number, planar_points
+from mech._validate import common_shape, finite_array, instance, integer, nonnegative_number, planar_points
 from mech.planar.kinematics._linkage import LinkageSolution
 
 __all__ = ["StaticForces", "static_forces", "as_linkage"]
@@ -298,6 +298,13 @@ class StaticForces:
 
 
 # ----------------------------------------------------------------------------- inputs
+def _fits(name, value, shape):
+    """A load must broadcast to the solution's shape (one value per solved pose, or one for all)."""
+    if common_shape(**{name: value, "solution": np.empty(shape)}) != shape:
+        raise ValueError(f"Expected `{name}` of a shape that broadcasts to the solution's {shape}, "
+                         f"got shape {np.shape(value)}")
+
+
 def _load_table(sol, forces, couples):
     lk = sol.linkage
     pts, links = lk._points, set(lk.links)
@@ -311,6 +318,7 @@ def _load_table(sol, forces, couples):
         link = pts[point] if link is None else link
         lk._need_link(link)
         f = planar_points(f"forces[{point!r}]", f)
+        _fits(f"forces[{point!r}]", f, sol.valid.shape)
         out_f.append((link, point, f))
     out_c = []
     if couples is not None and not hasattr(couples, "items"):
@@ -318,6 +326,7 @@ def _load_table(sol, forces, couples):
     for link, m in dict(couples or {}).items():
         lk._need_link(link)
         m = finite_array(f"couples[{link!r}]", m)
+        _fits(f"couples[{link!r}]", m, sol.valid.shape)
         out_c.append((link, m))
     if any(link == GROUND for link, _, _ in out_f) or any(link == GROUND for link, _ in out_c):
         raise ValueError("Expected loads on moving links, got a load on 'ground'")

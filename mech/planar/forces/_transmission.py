@@ -8,12 +8,23 @@ from mech._generated.transmission_angle import (
 )
 from mech._errors import AssemblyError
 from mech._validate import bool_flag, finite_array
-from mech.planar.kinematics._fourbar import fourbar_lengths
+from mech.planar.kinematics._fourbar import assembly_gaps, dead_points_near, fourbar_lengths
 from mech.planar.structure._grashof import grashof
 
 __all__ = ["transmission_angle", "min_transmission_angle"]
 
 _CRANK_TURNS = ("crank-rocker", "double-crank")
+
+
+def at_dead_points(gamma, a, b, c, d, theta):
+    """Transmission angles with 0 at the inputs `FourBar` counts as dead points (B, C, D in
+    line) where the formula, by a rounding, found no triangle BCD. Unit lengths."""
+    near_far, near_close, _ = dead_points_near(a, b, c, d, theta, assembly_gaps(a, b, c, d, _RTOL))
+    return np.where(np.isnan(gamma) & (near_far | near_close), 0.0, gamma)
+
+
+#: `FourBar`'s default `rtol` (change points): the dead points here are those of `FourBar.solve`
+_RTOL = 1e-12
 
 
 def _lengths(a, b, c, d):
@@ -86,6 +97,7 @@ def transmission_angle(a, b, c, d, theta, *, strict=False):
     theta = finite_array("theta", theta)
     with np.errstate(invalid="ignore"):
         _, gamma = fourbar_transmission(a, b, c, d, theta)
+    gamma = at_dead_points(gamma, a, b, c, d, theta)
     check_assembled(gamma, theta, lengths, strict)
     return float(gamma) if np.ndim(gamma) == 0 else gamma
 

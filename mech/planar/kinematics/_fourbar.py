@@ -8,6 +8,7 @@ from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
 from mech._validate import bool_flag, branch_sign, motion_inputs, nonnegative_number, positive_length, real_tuple
 from mech._pose import Pose
+from mech._scaling import DEAD_POINT_RTOL
 from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
 
 __all__ = ["FourBar", "FourBarPose", "fourbar_lengths"]
@@ -32,14 +33,42 @@ def fourbar_lengths(a, b, c, d):
     exponent = math.frexp(max(raw))[1]
     scaled = [math.ldexp(x, -exponent) for x in raw]
     total = math.fsum(scaled)
-    for name, value, x in zip("abcd", raw, scaled):
+    for k, (name, value, x) in enumerate(zip("abcd", raw, scaled)):
         if x >= total - x:
-            rest = math.ldexp(total - x, exponent) if total - x > 0.0 else 0.0
+            # from the unscaled lengths: scaled, a length 2**-1075 times the longest is 0.0
+            rest = math.fsum(raw[:k] + raw[k + 1:])
             raise ValueError(
                 f"Expected `{name}` shorter than the other three links together "
                 f"({rest!r}), got {value!r}"
             )
     return tuple(scaled), exponent
+
+
+def assembly_gaps(a, b, c, d, rtol):
+    """The gaps g2, g3, g4 of unit lengths, each set to 0.0 within ``rtol (a + b + c + d)``."""
+    total = a + b + c + d
+    gaps = [float(g) for g in _gen.fourbar_assembly_gaps(a, b, c, d)]
+    return tuple(0.0 if abs(g) <= rtol * total else g for g in gaps)
+
+
+def dead_points_near(a, b, c, d, theta, gaps):
+    """Masks of the inputs within `DEAD_POINT_RTOL` (a + b + c + d) of a dead point, and |BD|.
+
+    A dead point is where |BD| = b + c (``near_far``) or |b - c| (``near_close``) and the
+    gap of that factor (`assembly_gaps`) is not zero; where it is zero, the branches meet
+    there (a change point) and the linkage passes. Whether a float input on a dead point
+    assembles is decided by a rounding, which the same linkage in another unit of length
+    (its lengths not exactly proportional) may decide the other way: within the tolerance
+    the input counts as the dead point, which assembles. Unit lengths (`fourbar_lengths`).
+    """
+    gap2, gap3, gap4 = gaps
+    tol = DEAD_POINT_RTOL * (a + b + c + d)
+    s = np.sin(0.5 * np.asarray(theta, dtype=float))
+    k = np.sqrt((d - a) ** 2 + 4.0 * a * d * s * s)          # |BD|
+    never = np.zeros(k.shape, dtype=bool)
+    near_far = np.abs(k - (b + c)) <= tol if gap4 != 0.0 else never
+    near_close = np.abs(abs(b - c) - k) <= tol if (gap2 if c > b else gap3) != 0.0 else never
+    return near_far, near_close, k
 
 
 def _unscale(z, exponent):
@@ -156,15 +185,17 @@ class FourBar:
 
     def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), rtol=1e-12):
         (a_, b_, c_, d_), self._exponent = fourbar_lengths(a, b, c, d)
+        if b_ < 2.0**-1022:
+            # the coupler's direction is C - B divided by b: lost once b underflows
+            raise ValueError(f"Expected `b` at least 2**-1022 times the longest link, got {float(b)!r} "
+                             f"with the longest {max(float(a), float(b), float(c), float(d))!r}")
         self._a, self._b, self._c, self._d = (float(v) for v in (a, b, c, d))
         self._branch = branch_sign(branch)
         self._coupler = p, q = real_tuple("coupler", coupler, 2)
-        rtol = nonnegative_number("rtol", rtol)
+        self._rtol = rtol = nonnegative_number("rtol", rtol)
         self._unit = (a_, b_, c_, d_, math.ldexp(p, -self._exponent), math.ldexp(q, -self._exponent))
-        total = a_ + b_ + c_ + d_
-        gaps = [float(g) for g in _gen.fourbar_assembly_gaps(a_, b_, c_, d_)]
-        zero = [abs(g) <= rtol * total for g in gaps]
-        self._gaps = tuple(0.0 if z else g for g, z in zip(gaps, zero))
+        self._gaps = assembly_gaps(a_, b_, c_, d_, rtol)
+        zero = [g == 0.0 for g in self._gaps]
         # one sign flip even when both are zero: then the diagonal B->D itself reverses
         self._m23 = int(zero[0] or zero[1])
         self._m4 = int(zero[2])
@@ -255,7 +286,8 @@ class FourBar:
         """Solve one block of flat inputs, writing into the views in `out`."""
         a, b, c, d, p, q = self._unit
         branch, theta = self._branch, inputs[0]
-        with np.errstate(invalid="ignore", divide="ignore"):
+        # over: 1 / |BD|^2 where B all but meets D (theta ~ 1e-160 with a = d) cannot assemble
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             if self._kite:
                 B, C, P, S, ratios = kite_pose(a, b, self._gaps[2], self._m4, p, q, theta, branch)
                 out["B"][...], out["C"][...], out["P"][...] = B, C, P
@@ -272,6 +304,31 @@ class FourBar:
                 self._change_point_rates(inputs, order, out, ratios if self._kite else None)
             elif order >= 1:
                 self._rates(inputs, order, out, (Bx, By, Cx, Cy, S))
+            self._dead_points(theta, order, out)
+
+    def _dead_points(self, theta, order, out):
+        """Inputs within `DEAD_POINT_RTOL` of a dead point are the dead point (`dead_points_near`).
+
+        There the pose is the dead point's (C on the line BD) and the rates are NaN
+        (infinite there), so `valid` agrees in every unit of length: True for positions,
+        False with rates, and `assembled` True.
+        """
+        a, b, c, d, p, q = self._unit
+        near_far, near_close, k = dead_points_near(a, b, c, d, theta, self._gaps)
+        near = near_far | near_close
+        if not near.any():
+            return
+        snap = near & ~out["valid"]
+        if snap.any():
+            B = a * np.exp(1j * theta[snap])
+            sign = np.where(near_far[snap] | (b >= c), 1.0, -1.0)
+            C = B + sign * b * (d - B) / k[snap]
+            out["B"][snap], out["C"][snap] = B, C
+            out["P"][snap] = B + (p + 1j * q) * (C - B) / b
+            out["valid"][snap] = True
+        for name in ("omega_coupler", "omega_output", "vC", "vP", "alpha_coupler", "alpha_output", "aC", "aP"):
+            if name in out:
+                out[name][near] = np.nan + 1j * np.nan if name in _COMPLEX else np.nan
 
     def _rates(self, inputs, order, out, position):
         """Rates of a linkage without change points, by the generated velocity loop."""

@@ -3,8 +3,8 @@
 import numpy as np
 
 from mech._generated import slider_crank as _gen
-from mech._validate import finite_array, nonnegative_int, positive_length
-from mech._pose import Pose, mask_singular_rates
+from mech._validate import common_shape, finite_array, nonnegative_int, positive_length
+from mech._pose import mask_singular_rates, Pose, quiet_overflow
 from mech._scaling import length_scale
 
 __all__ = ["GuideBar", "GuideBarPose"]
@@ -111,6 +111,7 @@ class GuideBar:
             raise ValueError(f"Expected `swing` < pi, got {swing!r}")
         return cls(float(_gen.guide_bar_crank(d, swing)), d)
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0):
         """Guide angle, block distance and their rates at crank angles `theta`.
 
@@ -152,15 +153,18 @@ class GuideBar:
         fields = {"theta": theta, "valid": np.ones(theta.shape, dtype=bool), "psi": psi, "rho": rho, "B": B}
         if order >= 1:
             omega = finite_array("omega", omega)
+            common_shape(theta=theta, omega=omega)
             wg, vs, vB = _gen.guide_bar_velocity(*self._unit, theta, omega)
             fields.update(omega_guide=wg, v_slide=vs, vB=vB)
         if order >= 2:
             alpha = finite_array("alpha", alpha)
+            common_shape(theta=theta, omega=omega, alpha=alpha)
             ag, as_, aB = _gen.guide_bar_acceleration(*self._unit, theta, omega, alpha)
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
         shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
         fields = {k: np.array(np.broadcast_to(v, shape))[()] for k, v in fields.items()}
-        fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        with np.errstate(over="ignore"):      # a rate near a dead point may overflow: masked below
+            fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
         if order >= 1:
             mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
         return GuideBarPose(order, fields)

@@ -97,9 +97,8 @@ def centre_count(n):
     >>> centre_count(4), centre_count(6)
     (6, 15)
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise ValueError(f"Expected the number of links `n` to be an integer >= 2, got {n!r}")
-    return int(n) * (int(n) - 1) // 2
+    n = integer("n", n, minimum=2)
+    return n * (n - 1) // 2
 
 
 @dataclass(frozen=True)
@@ -218,9 +217,19 @@ def _meet(lines):
 
 
 def _labels(links):
-    if isinstance(links, (bool, np.bool_, str, bytes, numbers.Number)) or not hasattr(links, "__iter__"):
+    if (isinstance(links, (bool, np.bool_, str, bytes, numbers.Number)) or not hasattr(links, "__iter__")
+            or (isinstance(links, np.ndarray) and links.ndim == 0) or isinstance(links, (dict, set, frozenset))):
         return tuple(range(1, integer("links", links, minimum=2, maximum=10**4) + 1))
     labels = tuple(links)
+    for label in labels:
+        # a label must be hashable and equal to itself (NaN is not), and be no flag or array
+        try:
+            hash(label)
+            usable = label == label and not isinstance(label, (bool, np.bool_))
+        except (TypeError, ValueError):
+            usable = False
+        if not usable:
+            raise InputTypeError(f"Expected `links` to be a count or link labels, got {label!r} in {links!r}")
     if len(labels) < 2 or len(set(labels)) != len(labels):
         raise ValueError(f"Expected `links` to be at least two distinct link labels, got {links!r}")
     return labels
@@ -291,7 +300,7 @@ def instant_centres(links, direct, *, undefined="raise"):
         except (TypeError, ValueError):
             raise ValueError(f"Expected a pair of link labels as key, got {raw_pair!r}") from None
         if i not in index or j not in index or i == j:
-            raise ValueError(f"Expected a pair of two different links among {labels}, got {raw_pair!r}")
+            raise ValueError(f"Expected `direct` keys to be pairs of two different links among `links` {labels}, got {raw_pair!r}")
         pair = (i, j) if index[i] < index[j] else (j, i)
         if pair in known or pair in lines:
             raise ValueError(f"Expected each pair once in `direct`, got {pair!r} twice")

@@ -14,11 +14,11 @@ from types import MappingProxyType
 import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
+from mech._scaling import DEAD_POINT_RTOL
 from mech._generated import assur_groups as _g
 from mech.planar.kinematics import _linkage_modes
 from mech._validate import (
-    bool_flag, branch_sign, finite_array, integer, known_name, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number,
-)
+    bool_flag, branch_sign, finite_array, integer, known_name, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number, common_shape)
 
 __all__ = ["Linkage", "LinkageSolution", "Guide", "Slide", "AssemblyInterval"]
 
@@ -448,7 +448,8 @@ class Linkage:
         order = nonnegative_int("order", order, 2)
         q, w, al = (self._per_driver(x, name) for x, name in
                     ((inputs, "inputs"), (omega, "omega"), (alpha, "alpha")))
-        shape = np.broadcast_shapes(*(np.shape(x) for x in (*q.values(), *w.values(), *al.values())))
+        shape = common_shape(**{f"{what}[{d!r}]" if len(x) > 1 else what: v for what, x in
+                                (("inputs", q), ("omega", w), ("alpha", al)) for d, v in x.items()})
         unit, steps = self._unit_steps()
         # distance inputs (sliders, actuators) are measured in the same unit as the lengths
         far = self._distance_drivers()
@@ -659,7 +660,14 @@ class Linkage:
         (r1, dr1, ddr1), (r2, dr2, ddr2) = (self._length(x, q, w, al, st) for x in step.get("lengths"))
         P1, P2 = st.P[p1], st.P[p2]
         gx, gy = _re_im(P2 - P1)
-        rho, ok = _signed_root(st, step, _g.rrr_position(gx, gy, r1, r2, 1.0)[2])
+        heron = _g.rrr_position(gx, gy, r1, r2, 1.0)[2]
+        # within DEAD_POINT_RTOL of a dead point (|P2 - P1| = r1 + r2 or |r1 - r2|), and away
+        # from a change point, the input is the dead point
+        g = np.hypot(gx, gy)
+        tol = DEAD_POINT_RTOL * (np.abs(r1) + np.abs(r2) + g)
+        dead = (np.abs(np.abs(r1) + np.abs(r2) - g) <= tol) | (np.abs(g - np.abs(r1 - r2)) <= tol)
+        heron, dead = _dead_point(st, step, heron, dead)
+        rho, ok = _signed_root(st, step, heron)
         ux, uy = _g.rrr_position_root(gx, gy, r1, r2, rho)
         u1 = ux + 1j * uy
         P3 = P1 + u1
@@ -673,6 +681,10 @@ class Linkage:
             A1, A2, ax, ay = _g.rrr_acceleration(ux, uy, *_re_im(u2), r1, r2, *_re_im(st.A[p1]),
                                                  *_re_im(st.A[p2]), dr1, dr2, ddr1, ddr2, W1, W2)
             a3 = ax + 1j * ay
+        if st.order >= 1 and np.any(dead):           # infinite at a dead point: NaN, failed
+            W1, W2, v3 = (np.where(dead, np.nan, x) for x in (W1, W2, v3))
+            if st.order >= 2:
+                A1, A2, a3 = (np.where(dead, np.nan, x) for x in (A1, A2, a3))
         st.put_link(l1, p1, u1 / r1, W1, A1)
         st.put_link(l2, p2, u2 / r2, W2, A2)
         st.put_point(joint, P3, v3, a3)
@@ -683,7 +695,13 @@ class Linkage:
         Q, e, vQ, aQ, wK, aK = self._guide_state(st, guide)
         P1 = st.P[p1]
         (gx, gy), (ex, ey) = _re_im(Q - P1), _re_im(e)
-        rho, ok = _signed_root(st, step, _g.rrp_position(gx, gy, ex, ey, r1, 1.0)[3])
+        radicand = _g.rrp_position(gx, gy, ex, ey, r1, 1.0)[3]
+        # within DEAD_POINT_RTOL of a dead point (the pin's distance from the guide = r1),
+        # and away from a change point, the input is the dead point
+        across = ex * gy - ey * gx
+        dead = np.abs(np.abs(across) - np.abs(r1)) <= DEAD_POINT_RTOL * (np.abs(r1) + np.hypot(gx, gy))
+        radicand, dead = _dead_point(st, step, radicand, dead)
+        rho, ok = _signed_root(st, step, radicand)
         s, ux, uy = _g.rrp_position_root(gx, gy, ex, ey, rho)
         u1 = ux + 1j * uy
         P3 = P1 + u1
@@ -691,6 +709,7 @@ class Linkage:
         slide = Slide(s=s, direction=np.broadcast_to(e, np.shape(s)))
         if st.order >= 1:
             W1, ds = _g.rrp_velocity(ux, uy, *_re_im(e), r1, s, *_re_im(st.V[p1]), *_re_im(vQ), wK)
+            W1, ds = (np.where(dead, np.nan, x) for x in (W1, ds))      # infinite at a dead point
             v3 = _cx(*_g.rigid_body_velocity(*_re_im(st.V[p1]), ux, uy, W1))
             slide = Slide(s, slide.direction, ds)
         if st.order >= 2:
@@ -875,6 +894,18 @@ class Linkage:
 
 def _cx(x, y):
     return x + 1j * y
+
+
+def _dead_point(st, step, disc, dead):
+    """A radicand within rounding of zero at a dead point counts as zero (the dead point).
+
+    Not next to a change point (where the group's mode flips and the solution passes):
+    there `_signed_root` handles it. Returns the radicand and the dead-point mask.
+    """
+    _, near = st.modes.get(step.label, (step.get("branch"), None))
+    if near is not None:
+        dead = dead & ~near
+    return np.where(dead & (disc < 0), 0.0, disc), dead
 
 
 def _signed_root(st, step, disc):

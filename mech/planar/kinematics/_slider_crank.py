@@ -8,10 +8,9 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
 from mech._validate import (
-    bool_flag, branch_sign, finite_array, nonnegative_int, positive_length, real_number,
-)
-from mech._pose import mask_singular_rates, Pose
-from mech._scaling import length_scale
+    bool_flag, branch_sign, common_shape, finite_array, nonnegative_int, positive_length, real_number)
+from mech._pose import mask_singular_rates, Pose, quiet_overflow
+from mech._scaling import DEAD_POINT_RTOL, length_scale
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
 
@@ -130,7 +129,9 @@ class SliderCrank:
         self._scale = length_scale(self._a, self._b, self._e)
         # the generated formulas see lengths of order one only (see mech._scaling)
         self._unit = (self._a / self._scale, self._b / self._scale, self._e / self._scale)
-        if self._b < abs(self._e) - self._a:
+        a_, b_, e_ = self._unit
+        # the rod just reaching the guide (at one dead point) is allowed in any unit of length
+        if b_ < abs(e_) - a_ - DEAD_POINT_RTOL * (a_ + b_ + abs(e_)):
             raise ValueError(
                 f"Expected `b` >= |e| - a = {abs(self._e) - self._a!r} so that the rod reaches "
                 f"the guide, got {self._b!r}"
@@ -212,6 +213,16 @@ class SliderCrank:
             x, phi, B, C = _gen.slider_crank_position(*args, theta, self._branch)
         # the generated root is NaN exactly where the rod cannot reach the guide
         valid = ~np.isnan(x)
+        # within DEAD_POINT_RTOL of a dead point (|s| = b) the input is the dead point: C below B
+        a_, b_, e_ = args
+        s = a_ * np.sin(theta) - e_
+        dead = np.abs(np.abs(s) - b_) <= DEAD_POINT_RTOL * (a_ + b_ + abs(e_))
+        snap = dead & ~valid
+        if np.any(snap):
+            x = np.where(snap, a_ * np.cos(theta), x)
+            phi = np.where(snap, -np.sign(s) * (np.pi / 2), phi)
+            C = np.where(snap, x + 1j * e_, C)
+            valid = valid | snap
         if strict and not np.all(valid):
             first = float(np.broadcast_to(theta, valid.shape)[~valid].ravel()[0])
             raise AssemblyError(
@@ -222,12 +233,17 @@ class SliderCrank:
             fields = {"theta": theta, "valid": valid, "x": x, "phi": phi, "B": B, "C": C}
             if order >= 1:
                 omega = finite_array("omega", omega)
+                common_shape(theta=theta, omega=omega)
                 w2, v, vB = _gen.slider_crank_velocity(*args, theta, self._branch, omega)
                 fields.update(omega_coupler=w2, v=v, vB=vB)
             if order >= 2:
                 alpha = finite_array("alpha", alpha)
+                common_shape(theta=theta, omega=omega, alpha=alpha)
                 a2, acc, aB = _gen.slider_crank_acceleration(*args, theta, self._branch, omega, alpha)
                 fields.update(alpha_coupler=a2, acc=acc, aB=aB)
+        if order >= 1:                    # infinite at a dead point: NaN, masked below
+            for name in _SOLVED_RATES[: 2 * order]:
+                fields[name] = np.where(dead, np.nan, fields[name])
         shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
         for name, value in fields.items():
             value = np.broadcast_to(value, shape)
@@ -235,7 +251,8 @@ class SliderCrank:
                 nan = np.nan + 1j * np.nan if np.iscomplexobj(value) else np.nan
                 value = np.where(np.broadcast_to(valid, shape), value, nan)
             if name in _LINEAR:
-                value = value * self._scale
+                with np.errstate(over="ignore"):  # a rate near a dead point may overflow: masked below
+                    value = value * self._scale
             fields[name] = np.array(value)[()]
         if order >= 1:
             mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
@@ -361,6 +378,7 @@ class SliderCrank:
         gamma_min = float(_gen.slider_crank_min_transmission(*self._unit))
         return gamma_min, (np.pi / 2 if self._e < 0 else -np.pi / 2)
 
+    @quiet_overflow
     def approximate(self, theta, omega=1.0):
         """The textbook's two-term series (2-10) for a centred slider-crank.
 
@@ -390,6 +408,7 @@ class SliderCrank:
             )
         theta = finite_array("theta", theta)
         omega = finite_array("omega", omega)
+        common_shape(theta=theta, omega=omega)
         a, b, _ = self._unit
         x, v, acc, cos_phi = _gen.slider_crank_series(a, a / b, theta, omega)
         shape = np.broadcast_shapes(theta.shape, omega.shape)

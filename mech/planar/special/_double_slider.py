@@ -5,7 +5,7 @@ import numpy as np
 from mech._errors import AssemblyError
 from mech._generated import special_mechanisms as _gen
 from mech._validate import bool_flag, finite_array, positive_length, real_tuple
-from mech._pose import mask_singular_rates, Pose
+from mech._pose import mask_singular_rates, Pose, quiet_overflow
 from mech.planar.special._special import _finish, _inputs
 
 __all__ = [
@@ -114,6 +114,7 @@ class EllipticTrammel:
     def __repr__(self):
         return f"EllipticTrammel(L={self._L!r}, point=({self._p!r}, {self._q!r}))"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Positions (and rates) of the sliders, the midpoint and the coupler point.
 
@@ -220,6 +221,7 @@ class ScotchYoke:
     def __repr__(self):
         return f"ScotchYoke(a={self._a!r})"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Yoke position ``x``, crank pin ``B`` and (with `order`) ``v``, ``acc``.
 
@@ -288,6 +290,7 @@ class TangentMechanism:
     def __repr__(self):
         return f"TangentMechanism(L={self._L!r})"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Output ``h``, slider ``S`` and (with `order`) ``v``, ``acc``.
 
@@ -390,6 +393,7 @@ class OldhamCoupling:
     def __repr__(self):
         return f"OldhamCoupling(e0={self._e0!r})"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Cross-slider centre and orientation, output shaft, and their rates.
 
@@ -408,6 +412,7 @@ class OldhamCoupling:
             fields.update(aS=aS, alpha_orbit=a_orbit, alpha_slider=alpha, alpha_output=alpha)
         return OldhamPose(order, _rates_mask(order, _finish(fields), OldhamPose))
 
+    @quiet_overflow
     def inertia_force(self, m, omega):
         """Magnitude of the cross-slider's rotating inertia force, ``m (e0/2)(2 omega)^2``.
 

@@ -8,9 +8,9 @@ roles of crank and rod exchanged; see :ref:`deriv-special-mechanisms`.
 import numpy as np
 
 from mech._generated import special_mechanisms as _gen
-from mech._validate import bool_flag, finite_array, nonnegative_int, positive_length
+from mech._validate import bool_flag, common_shape, finite_array, nonnegative_int, positive_length
 from mech.planar.kinematics._guide_bar import GuideBar
-from mech._pose import Pose, mask_singular_rates
+from mech._pose import mask_singular_rates, Pose, quiet_overflow
 from mech._scaling import length_scale
 
 __all__ = ["RotatingGuideBar", "RotatingGuideBarPose", "SwingingBlock"]
@@ -27,6 +27,7 @@ def _inputs(order, theta, omega, alpha):
     theta = finite_array("theta", theta)
     omega = finite_array("omega", omega) if order >= 1 else omega
     alpha = finite_array("alpha", alpha) if order >= 2 else alpha
+    common_shape(**dict(list({"theta": theta, "omega": omega, "alpha": alpha}.items())[: order + 1]))
     return order, theta, omega, alpha
 
 
@@ -117,6 +118,7 @@ class RotatingGuideBar:
     def __repr__(self):
         return f"RotatingGuideBar(a={self._a!r}, d={self._d!r})"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Guide angle, block position and their rates at crank angles `theta`.
 
@@ -171,7 +173,8 @@ class RotatingGuideBar:
                 ag, as_, aB = _gen.rotating_guide_bar_acceleration(a, d, theta, omega, alpha)
             fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
         fields = _finish(fields)
-        fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
+        with np.errstate(over="ignore"):      # a rate near a dead point may overflow: masked below
+            fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
         if order >= 1:
             mask_singular_rates(fields, ("omega_guide", "v_slide", "alpha_guide", "a_slide")[: 2 * order])
         return RotatingGuideBarPose(order, fields)
@@ -241,6 +244,7 @@ class SwingingBlock:
     def __repr__(self):
         return f"SwingingBlock(a={self._a!r}, d={self._d!r})"
 
+    @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
         """Block angle ``psi``, rod length ``rho`` and their rates (see `GuideBar.solve`).
 

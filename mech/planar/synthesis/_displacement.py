@@ -3,7 +3,7 @@
 import numpy as np
 
 from mech._generated import displacement as _gen
-from mech._validate import _show, planar_points, real_array
+from mech._validate import common_shape, planar_points, real_array, _show
 
 __all__ = ["displacement_matrix", "pole"]
 
@@ -80,6 +80,7 @@ def displacement_matrix(theta_1, d_1, theta_i, d_i):
     """
     t1, ti = real_array("theta_1", theta_1), real_array("theta_i", theta_i)
     p1, pi_ = complex_array("d_1", d_1), complex_array("d_i", d_i)
+    common_shape(theta_1=t1, theta_i=ti, d_1=p1, d_i=pi_)
     t1, ti, p1, pi_ = np.broadcast_arrays(t1, ti, p1, pi_)
     c, s, tx, ty = (np.broadcast_to(v, t1.shape) for v in
                     _gen.planar_displacement(t1, p1.real, p1.imag, ti, pi_.real, pi_.imag))
@@ -136,6 +137,7 @@ def pole(theta_1, d_1, theta_i, d_i):
     """
     t1, ti = real_array("theta_1", theta_1), real_array("theta_i", theta_i)
     p1, pi_ = complex_array("d_1", d_1), complex_array("d_i", d_i)
+    common_shape(theta_1=t1, theta_i=ti, d_1=p1, d_i=pi_)
     t1, ti, p1, pi_ = np.broadcast_arrays(t1, ti, p1, pi_)
     turn = _wrapped_turn(t1, ti)
     if np.any(turn == 0.0):

@@ -9,7 +9,8 @@ covers the input range. The synthesis itself is in ``_function_generation``.
 import numpy as np
 
 from mech._generated.function_generation import fg_coefficients, fg_lengths
-from mech._validate import branch_sign, finite_array, function_pairs, positive_length, real_array, real_number
+from mech._validate import (MAX_COUNT, branch_sign, finite_array, function_pairs, integer, positive_length,
+                            real_array, real_number, common_shape)
 from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["FunctionGenerator", "FunctionMap", "freudenstein_coefficients", "lengths_from_coefficients"]
@@ -374,6 +375,7 @@ class FunctionGenerator:
                 raise ValueError("Expected `y` (this design has no `target`), got None")
             y = self._target(x)
         y = finite_array("y", y)
+        common_shape(x=x, y=y)
         return _wrap(self._psi(x) - self.psi0 - y)
 
     def _target(self, x):
@@ -391,8 +393,7 @@ class FunctionGenerator:
 
     def errors(self, samples=721):
         """(max |structural error|, RMS) over `samples` input rotations spanning `x_range`."""
-        if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
-            raise ValueError(f"Expected `samples` to be an integer >= 2, got {samples!r}")
+        samples = integer("samples", samples, minimum=2, maximum=MAX_COUNT)
         x = np.linspace(*self.x_range, samples)
         e = self.structural_error(x) if self.target is not None else self.structural_error(self.x, self.y)
         return float(np.max(np.abs(e))), float(np.sqrt(np.mean(e**2)))
@@ -408,8 +409,7 @@ def _common(target, x_range, samples, tol):
         if not lo < hi:
             raise ValueError(f"Expected `x_range` = (low, high) with low < high, got {x_range!r}")
         x_range = (lo, hi)
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
-        raise ValueError(f"Expected `samples` to be an integer >= 2, got {samples!r}")
+    samples = integer("samples", samples, minimum=2, maximum=MAX_COUNT)
     t = real_array("tol", tol, finite=False)
     if t.ndim != 0 or not t > 0.0:                  # +inf is allowed: no check at the pairs
         raise ValueError(f"Expected `tol` > 0, got {tol!r}")

@@ -75,6 +75,8 @@ def steering_trapezoid_model(a=1480.0, h=2960.0, *, theta_max=np.radians(30.0), 
     2.563...e-05
     """
     a, h = positive_length("a", a), positive_length("h", h)
+    if not np.isfinite(a / h) or a / h == 0.0:
+        raise ValueError(f"Expected `a` / `h` within the float range, got a = {a!r}, h = {h!r}")
     theta_max = real_number("theta_max", theta_max)
     if not 0.0 < theta_max < np.pi / 2:
         raise ValueError(f"Expected `theta_max` in (0, pi/2), got {theta_max}")

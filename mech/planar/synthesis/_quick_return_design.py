@@ -65,7 +65,10 @@ def _theta(time_ratio):
     K = real_number("time_ratio", time_ratio)
     if not K > 1.0:
         raise ValueError(f"Expected `time_ratio` > 1 for a quick return, got {K!r}")
-    return K, float(_extreme_angle(K))
+    theta = float(_extreme_angle(K))
+    if not theta < math.pi:     # K beyond about 1e16 rounds the extreme angle to pi
+        raise ValueError(f"Expected `time_ratio` whose extreme angle pi (K - 1)/(K + 1) is below pi, got {K!r}")
+    return K, theta
 
 
 def _slider_theta(time_ratio):
@@ -591,7 +594,11 @@ def quick_return_guide_bar(time_ratio, frame):
     """
     K, theta = _theta(time_ratio)
     d = positive_length("frame", frame)
-    gb = GuideBar.from_swing(d, theta)
+    try:
+        gb = GuideBar.from_swing(d, theta)
+    except ValueError:          # the crank d sin(theta / 2) rounds to d for K beyond about 1e8
+        raise ValueError(f"Expected `time_ratio` whose crank d sin(theta / 2) is shorter than `frame` = {d!r}, "
+                         f"got {K!r}") from None
     return QuickReturnGuideBar(gb, K, theta, d, gb.a, d + gb.a)
 
 
