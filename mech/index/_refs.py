@@ -29,10 +29,10 @@ KINDS = {
 
 _WORDS = (
     ("exercise", r"exercises?|exerc\.|习题|题"),
-    ("example", r"examples?|exs?\.|例"),
+    ("example", r"examples?|exs?\.?|例"),
     ("table", r"tables?|tab\.|表"),
     ("fig", r"figs?\.?|figures?|图"),
-    ("eq", r"eqs?\.|equations?|formulas?|式"),
+    ("eq", r"eqs?\.?|equations?|formulas?|式"),
 )
 _WORD_RE = {kind: re.compile(rf"^(?:{pat})$", re.I) for kind, pat in _WORDS}
 
