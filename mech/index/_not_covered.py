@@ -20,12 +20,13 @@ _GRAPHICAL_EXERCISE = ("a graphical exercise (instant centres, velocity or force
 
 #: (kind, number) -> why it is not covered yet.
 NOT_COVERED = {
-    ("eq", "2-41"): "the offset slider-crank of Fig. 2-90 for guidance: set up in the text, "
-                    "not derived here (the page designs the slider-crank by slider circles)",
-    ("eq", "2-42"): "the centric slider-crank of Fig. 2-91: not derived; the guidance page "
-                    "explains why it is not computed",
-    ("eq", "2-58"): "the steering error used by the optimisation example; implemented in "
-                    "mech.planar.synthesis but not derived in a notebook",
+    ("eq", "2-41"): "guidance by an offset slider-crank (the slider pin moved by the "
+                    "displacement matrix): the guidance page designs a slider-crank from slider "
+                    "circles, but no derivation declares (2-41)",
+    ("eq", "2-42"): "the centric slider-crank for guidance (six equations for four poses): "
+                    "neither derived nor computed",
+    ("eq", "2-58"): "the coupler-point model of example 2-24: computed by "
+                    "mech.planar.synthesis.path_synthesis_model, but not derived in a notebook",
     ("exercise", "2-1"): "asks for the degrees of freedom of sketched mechanisms; no data",
     ("exercise", "2-8"): _GRAPHICAL_EXERCISE,
     ("exercise", "2-9"): _GRAPHICAL_EXERCISE,

@@ -4,14 +4,17 @@ from mech.index._refs import KINDS
 
 __all__ = ["entry_text", "markdown_tables", "summary_markdown"]
 
-_HOW_ORDER = ("label", "caption", "heading", "tag", "codegen", "front matter", "title")
+_HOW_ORDER = ("label", "heading", "caption", "tag", "codegen", "front matter", "title")
+_FIGURE_ORDER = ("caption", "label", "heading", "tag", "codegen", "front matter", "title")
 
 
-def _pages(places):
-    """One (place) per page: the most specific declaration, a labelled one first."""
+def _pages(places, kind=None):
+    """One place per page: the most specific declaration (a figure's caption, another
+    number's label or heading) first."""
+    order = _FIGURE_ORDER if kind == "fig" else _HOW_ORDER
     best = {}
     for p in places:
-        rank = _HOW_ORDER.index(p.how) if p.how in _HOW_ORDER else len(_HOW_ORDER)
+        rank = order.index(p.how) if p.how in order else len(order)
         if not p.anchor:
             rank += len(_HOW_ORDER)
         if p.path not in best or rank < best[p.path][0]:
@@ -41,7 +44,7 @@ def entry_text(entry, html_root="book/_build/html"):
                           ("book", "book page"), ("test", "tests")):
         places = entry.role(role)
         if role in ("derivation", "book"):
-            for i, p in enumerate(_pages(places)):
+            for i, p in enumerate(_pages(places, entry.key[0])):
                 lead = f"  {heading:11s}" if i == 0 else " " * 13
                 lines.append(f"{lead}{p.name}")
                 lines.append(f"{'':13s}  {p.path}:{p.line} ({p.how}) -> {html_root}/{p.url}")
@@ -103,8 +106,8 @@ def markdown_tables(index, kinds=None, *, prefix=""):
             label = e.title.split(" ", 1)[1] if kind != "chapter" else e.key[1]
             if kind.startswith(("chapter", "section")):
                 label = e.title.replace("monograph ", "").replace("chapter ", "")
-            derivations = "; ".join(_link(p, prefix) for p in _pages(e.role("derivation")))
-            pages = "; ".join(_link(p, prefix) for p in _pages(e.role("book")))
+            derivations = "; ".join(_link(p, prefix) for p in _pages(e.role("derivation"), kind))
+            pages = "; ".join(_link(p, prefix) for p in _pages(e.role("book"), kind))
             if not e.covered and e.not_covered:
                 derivations = (derivations + " " if derivations else "") + \
                     f"*not yet covered:* {_cell(e.not_covered)}"
