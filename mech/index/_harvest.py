@@ -144,11 +144,8 @@ def _caption_blocks(cell):
         for nxt in lines[k + 1:]:
             if not nxt.strip():
                 break
-            lead = len(nxt) - len(nxt.lstrip())
-            if lead <= indent or re.match(r"^\s*[A-Za-z_]+:\s", nxt) and lead <= indent + 2 \
-                    and not text[-1].endswith(","):
-                if lead <= indent:
-                    break
+            if len(nxt) - len(nxt.lstrip()) <= indent:
+                break                        # the next key (name:, ...) ends the caption
             text.append(nxt.strip())
         out.append((k, " ".join(text), name))
     return out
