@@ -4,6 +4,7 @@ completeness of the index against the catalogs in ``../shared/catalog``."""
 import shutil
 import subprocess
 import sys
+import warnings
 from pathlib import Path
 
 import pytest
@@ -163,6 +164,15 @@ def test_every_catalogued_number_is_covered_or_listed(index):
     assert not missing, (
         "these catalogued numbers are neither declared by a derivation, page or function nor "
         f"listed in mech/index/_not_covered.py with a reason: {missing}")
+
+
+def test_stale_not_covered_entries_are_reported(index):
+    """A listed gap that became covered (a branch added the figure or the exercise) is not an
+    error, so that merges stay green; it is reported here and by ``--missing``."""
+    stale = [e.title for e in index.stale()]
+    if stale:
+        warnings.warn(f"covered now; delete from mech/index/_not_covered.py: {stale}", stacklevel=1)
+    assert all(e.covered for e in index.stale())
 
 
 def test_catalog_counts():

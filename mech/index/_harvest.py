@@ -27,7 +27,14 @@ from mech.index._refs import parse, parse_test_name
 
 __all__ = ["Place", "harvest", "make_id", "page_html"]
 
-_PUBLIC_PACKAGES = ("mech.planar", "mech.spatial", "mech.spherical", "mech.exercises")
+
+def _public_packages(root):
+    """The subpackages ``mech/__init__.py`` lists in ``__all__`` (this index excluded)."""
+    init = root / "mech" / "__init__.py"
+    if not init.is_file():
+        return []
+    return [f"mech.{name}" for name in _all_names(_tree(init))
+            if name != "index" and (root / "mech" / name / "__init__.py").is_file()]
 
 
 @dataclass(frozen=True)
@@ -312,7 +319,7 @@ def _public_objects(root):
     """Yield (qualified public name, module, file, node) for every public object."""
     seen = {}
     packages = []
-    for top in _PUBLIC_PACKAGES:
+    for top in _public_packages(root):
         path = _module_file(root, top)
         if path is None:
             continue
