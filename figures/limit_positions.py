@@ -24,15 +24,19 @@ def _label(ax, z, text, offset=(4, 4), **kw):
     ax.annotate(text, (z.real, z.imag), textcoords="offset points", xytext=offset, fontsize=9, **kw)
 
 
-def _angle_arc(ax, centre, radius, start, stop, text, colour):
-    """An arc from angle ``start`` to ``stop`` (radians, the short way) with a label."""
-    sweep = (stop - start + np.pi) % (2 * np.pi) - np.pi
+def _angle_arc(ax, centre, radius, start, stop, text, colour, *, scale=1.18, fontsize=9, short=True):
+    """An arc from angle ``start`` to ``stop`` (radians) with a label at ``scale * radius``.
+
+    The short way round by default; ``short=False`` sweeps counter-clockwise from ``start``
+    to ``stop``. Shared by the limit-position, quick-return and optimisation figures.
+    """
+    sweep = (stop - start + np.pi) % (2 * np.pi) - np.pi if short else stop - start
     t = start + np.linspace(0.0, sweep, 40)
     arc = centre + radius * np.exp(1j * t)
     ax.plot(arc.real, arc.imag, color=colour, lw=0.9)
-    mid = centre + 1.18 * radius * np.exp(1j * (start + sweep / 2))
+    mid = centre + scale * radius * np.exp(1j * (start + sweep / 2))
     if text:
-        ax.text(mid.real, mid.imag, text, color=colour, fontsize=9, ha="center", va="center",
+        ax.text(mid.real, mid.imag, text, color=colour, fontsize=fontsize, ha="center", va="center",
                 bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.5, "alpha": 0.8})
 
 

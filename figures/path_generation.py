@@ -43,3 +43,50 @@ def path_linkage(design, ax=None, *, title=None, samples=721):
     if title:
         ax.set_title(title, fontsize=10)
     return ax
+
+
+__all__ += ["crank_displacements"]
+
+
+def crank_displacements(A, B, alpha, points=None, ax=None, *, title=None):
+    """The crank as a displaced body (Fig. 2-106): its marker point A and marker angles alpha_i.
+
+    ``B``: the crank pin in each position (e.g. from `displacement_matrix` with A as the
+    reference point of every pose); ``alpha``: the marker angles (radians), drawn as arrows
+    from A; ``points``: the path points P_i, joined to B_i by dashed lines (the coupler).
+    """
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6.0, 5.0))
+    A = complex(A)
+    B = np.asarray(B, dtype=complex)
+    r = abs(B[0] - A)
+    ring = A + r * np.exp(1j * np.linspace(0.0, 2.0 * np.pi, 361))
+    ax.plot(ring.real, ring.imag, ":", color="tab:blue", lw=0.9)
+    ax.plot([A.real, A.real + 1.25 * r], [A.imag, A.imag], color="0.5", lw=0.8)
+    for k, (b, al) in enumerate(zip(B, np.asarray(alpha, dtype=float)), start=1):
+        ax.plot([A.real, b.real], [A.imag, b.imag], color="tab:blue", lw=2.2 if k == 1 else 1.2)
+        tip = A + 0.55 * r * np.exp(1j * al)
+        ax.annotate("", xy=(tip.real, tip.imag), xytext=(A.real, A.imag),
+                    arrowprops={"arrowstyle": "-|>", "color": "tab:orange", "lw": 1.2})
+        t = np.linspace(0.0, al, 40)
+        rad = (0.12 + 0.06 * k) * r
+        arc = A + rad * np.exp(1j * t)
+        ax.plot(arc.real, arc.imag, color="tab:orange", lw=0.7)
+        ax.annotate(f"$\\alpha_{k}$", (tip.real, tip.imag), textcoords="offset points", xytext=(3, 3),
+                    color="tab:orange", fontsize=9)
+        ax.plot([b.real], [b.imag], "o", ms=5, mfc="w", mec="tab:blue")
+        ax.annotate(f"$B_{k}$", (b.real, b.imag), textcoords="offset points", xytext=(5, -12), fontsize=10)
+        if points is not None:
+            p = complex(np.asarray(points)[k - 1])
+            ax.plot([b.real, p.real], [b.imag, p.imag], "--", color="0.5", lw=0.9)
+            ax.plot([p.real], [p.imag], "k+", ms=8)
+            ax.annotate(f"$P_{k}$", (p.real, p.imag), textcoords="offset points", xytext=(4, 4), fontsize=9)
+    ax.plot([A.real], [A.imag], "ks", ms=7)
+    ax.annotate("A", (A.real, A.imag), textcoords="offset points", xytext=(-14, -12), fontsize=11)
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.3)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax

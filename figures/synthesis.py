@@ -310,3 +310,129 @@ def rocker_slider_figure(A, D, B, C, E, F, inverted, centre, *, guide_y, ax=None
     ax.grid(alpha=0.25)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return ax
+
+
+__all__ += ["displacement_figure"]
+
+
+def _body(ax, pts, colour, name, *, ls="-", lw=1.6, label_p=True):
+    """A body drawn by its points ``[P, a, B]``: the triangle, the reference line P->a, the hinge B."""
+    P, a, B = pts[:3]
+    ax.fill([P.real, a.real, B.real], [P.imag, a.imag, B.imag], color=colour, alpha=0.12)
+    ax.plot([B.real, P.real], [B.imag, P.imag], ls=ls, color=colour, lw=0.9)
+    ax.annotate("", xy=(a.real, a.imag), xytext=(P.real, P.imag),
+                arrowprops={"arrowstyle": "-|>", "color": colour, "lw": lw, "ls": ls})
+    ax.plot([P.real, B.real], [P.imag, B.imag], "o", color=colour, ms=4, mfc="white")
+    if label_p:
+        ax.annotate(f"$P_{{{name}}}$", (P.real, P.imag), xytext=(-16, -12), textcoords="offset points",
+                    color=colour, fontsize=10)
+    ax.annotate(f"$B_{{{name}}}$", (B.real, B.imag), xytext=(5, 4), textcoords="offset points",
+                color=colour, fontsize=10)
+
+
+def displacement_figure(positions, pole_point, *, axes=None):
+    """The three panels of Fig. 2-88: a planar displacement, a translation and a rotation.
+
+    Parameters
+    ----------
+    positions : array_like of complex, shape (3, m)
+        Ground positions of the body points ``[P, a, B, ...]`` (reference point, tip of the
+        reference line, hinge) in pose 1, in the translated pose i' (angle of pose 1,
+        reference point of pose i) and in pose i, e.g. from `displacement_matrix`.
+    pole_point : complex
+        The pole of poses 1 and i (from `pole`).
+    axes : three Axes, optional
+        (a) pose 1 to pose i, with the pole: one rotation about it does the whole
+        displacement; (b) the translation 1 -> i'; (c) the rotation i' -> i about P_i.
+    """
+    import matplotlib.pyplot as plt
+
+    if axes is None:
+        _, axes = plt.subplots(1, 3, figsize=(13.0, 4.6))
+    one, moved, end = (np.asarray(p, dtype=complex) for p in positions)
+    turn = float(np.angle((end[1] - end[0]) / (one[1] - one[0])))
+    for ax in axes:
+        ax.set_aspect("equal")
+        ax.axis("off")
+    # (a) the displacement and its pole
+    ax = axes[0]
+    _body(ax, one, "tab:blue", "1")
+    _body(ax, end, "tab:red", "i")
+    _body(ax, moved, "0.55", "i'", ls="--", lw=1.0, label_p=False)
+    Q = complex(pole_point)
+    for k in (0, 2):
+        ax.plot([one[k].real, Q.real, end[k].real], [one[k].imag, Q.imag, end[k].imag], ":", color="k", lw=0.8)
+    ax.plot(Q.real, Q.imag, "k*", ms=10)
+    ax.annotate("pole $P_{1i}$", (Q.real, Q.imag), xytext=(8, -4), textcoords="offset points", fontsize=10)
+    r = 0.35 * abs(one[0] - Q)
+    start = float(np.angle(one[0] - Q))
+    arc = Q + r * np.exp(1j * np.linspace(start, start + turn, 40))
+    ax.plot(arc.real, arc.imag, color="k", lw=0.9)
+    mid = Q + 1.25 * r * np.exp(1j * (start + 0.5 * turn))
+    ax.text(mid.real, mid.imag, r"$\theta_{i1}$", ha="center", va="center", fontsize=10)
+    ax.set_title("(a) displacement 1 → i", fontsize=10)
+    # (b) the translation: every point moves by the same vector
+    ax = axes[1]
+    _body(ax, one, "tab:blue", "1")
+    _body(ax, moved, "0.35", "i'")
+    for k in (0, 2):
+        ax.annotate("", xy=(moved[k].real, moved[k].imag), xytext=(one[k].real, one[k].imag),
+                    arrowprops={"arrowstyle": "->", "color": "tab:green", "lw": 1.0})
+    ax.set_title("(b) translation 1 → i′", fontsize=10)
+    # (c) the rotation about the reference point of pose i
+    ax = axes[2]
+    _body(ax, moved, "0.35", "i'", label_p=False)
+    _body(ax, end, "tab:red", "i")
+    P = end[0]
+    for k in (1, 2):
+        r = abs(moved[k] - P)
+        start = float(np.angle(moved[k] - P))
+        arc = P + r * np.exp(1j * np.linspace(start, start + turn, 40))
+        ax.plot(arc.real, arc.imag, ":", color="tab:green", lw=1.0)
+    r = 0.4 * abs(moved[1] - P)
+    start = float(np.angle(moved[1] - P))
+    mid = P + 1.3 * r * np.exp(1j * (start + 0.5 * turn))
+    ax.text(mid.real, mid.imag, r"$\theta_{i1}$", ha="center", va="center", fontsize=10)
+    ax.set_title(r"(c) rotation i′ → i about $P_i$", fontsize=10)
+    # one scale for all panels
+    pts = np.concatenate([one, moved, end, [Q]])
+    pad = 0.08 * np.ptp(pts.real)
+    for ax in axes:
+        ax.set_xlim(pts.real.min() - pad, pts.real.max() + pad)
+        ax.set_ylim(pts.imag.min() - pad, pts.imag.max() + pad)
+    return axes
+
+
+__all__ += ["mirrored_pair_figure"]
+
+
+def mirrored_pair_figure(links, paths, axis_x, *, ax=None):
+    """Two guidance four-bars side by side, mirror images across a vertical line (like Fig. 2-86).
+
+    Parameters
+    ----------
+    links : sequence of two dict
+        Joint positions ``{"A", "B", "C", "D", "P"}`` (complex, ground frame) of each
+        four-bar at the drawn instant; P is the guided point (the claw's tip).
+    paths : sequence of two array_like of complex
+        The path of each P over a full crank turn.
+    axis_x : float
+        The mirror line (the middle of the conveyor).
+    """
+    ax = _axes(ax, (8.0, 5.5))
+    for k, (pts, path) in enumerate(zip(links, paths)):
+        colour = _DYAD_COLOURS[k]
+        path = np.asarray(path, dtype=complex)
+        ax.plot(path.real, path.imag, "-", color=colour, lw=1.0, alpha=0.7)
+        A, B, C, D, P = (complex(pts[n]) for n in "ABCDP")
+        ax.plot([A.real, B.real, C.real, D.real], [A.imag, B.imag, C.imag, D.imag], "-o", color=colour, lw=2.0, ms=4)
+        ax.fill([B.real, C.real, P.real], [B.imag, C.imag, P.imag], color=colour, alpha=0.25)
+        ax.plot([A.real, D.real], [A.imag, D.imag], "k^", ms=10)
+        ax.plot(P.real, P.imag, "o", color=colour, ms=7)
+    top = max(np.max(np.asarray(p).imag) for p in paths)
+    low = min(min(np.asarray(p).imag.min(), *(complex(z).imag for z in l.values())) for p, l in zip(paths, links))
+    ax.plot([axis_x, axis_x], [low, top], "-.", color="grey", lw=1.0, label="mirror line (conveyor axis)")
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.25)
+    ax.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0))
+    return ax

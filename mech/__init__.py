@@ -15,10 +15,10 @@ import importlib as _importlib
 
 from mech._errors import AssemblyError, InputTypeError
 
-__all__ = ["AssemblyError", "InputTypeError", "exercises", "planar", "spatial", "spherical"]
+__all__ = ["AssemblyError", "InputTypeError", "atlas", "exercises", "planar", "spatial", "spherical"]
 __version__ = "0.1.0"
 
-_SUBPACKAGES = {"exercises", "planar", "spatial", "spherical"}
+_SUBPACKAGES = {"atlas", "exercises", "planar", "spatial", "spherical"}
 
 
 def __getattr__(name):

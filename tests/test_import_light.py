@@ -1,4 +1,4 @@
-"""``import mech`` must stay light: NumPy only, no SymPy, SciPy or Matplotlib.
+"""``import mech`` must stay light: NumPy only, no SymPy, SciPy, Matplotlib, pyarrow or Dask.
 
 Each import runs in a fresh interpreter (``sys.executable``), because the test process
 itself has long since imported the heavy libraries through pytest plugins and other tests.
@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-HEAVY = ("sympy", "scipy", "matplotlib")
+HEAVY = ("sympy", "scipy", "matplotlib", "pyarrow", "dask", "tqdm")
 
 
 def _heavy_modules_after(statements):
@@ -69,4 +69,11 @@ def test_import_mech_spherical_light():
 def test_import_mech_planar_synthesis_light():
     """The synthesis subpackage loads SciPy and tqdm only inside the searches that use them."""
     statements = ["import mech.planar.synthesis", "import mech.exercises.chapter2"]
+    assert _heavy_modules_after(statements) == []
+
+
+def test_import_mech_atlas_light():
+    """The atlas loads pyarrow only to save or load, tqdm only for a progress bar."""
+    assert _heavy_modules_after(["import mech.atlas"]) == []
+    statements = ["import mech.atlas as at", "at.query(at.build_atlas(50), [0, 1, 1 + 1j, 1j])"]
     assert _heavy_modules_after(statements) == []

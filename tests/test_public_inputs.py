@@ -12,6 +12,7 @@ too strict fails too. A completeness check makes every new public callable regis
 """
 
 import dataclasses
+import functools
 import inspect
 import math
 import re
@@ -27,12 +28,13 @@ import mech.planar as pl
 import mech.spatial as sp
 import mech.spherical as sph
 import mech.planar.synthesis as sy
+import mech.atlas as at
 from mech.exercises import chapter2, chapter2_analysis, chapter2_quick_return, chapter2_synthesis
 
 MODULES = {"mech": mech, "planar": pl, "spatial": sp, "spherical": sph, "exercises": ex,
            "exercises.chapter2": chapter2, "exercises.chapter2_analysis": chapter2_analysis,
            "planar.synthesis": sy, "exercises.chapter2_synthesis": chapter2_synthesis,
-           "exercises.chapter2_quick_return": chapter2_quick_return}
+           "exercises.chapter2_quick_return": chapter2_quick_return, "atlas": at}
 
 
 # ----------------------------------------------------------------------------- bad values
@@ -1129,6 +1131,78 @@ CASES.update({
 })
 RECORDS.update({f"planar.synthesis.{n}": "result record built by the package"
                 for n in ("SliderDyad", "SliderCircle", "GuidanceSliderCrank")})
+
+
+# ----------------------------------------------------------------------------- atlas (issue 13)
+def _small_atlas():
+    return at.build_atlas(40, seed=1)
+
+
+def _atlas_dir():
+    import tempfile
+
+    folder = tempfile.mkdtemp(prefix="mech-atlas-")
+    _small_atlas().to_parquet(folder)
+    return folder
+
+
+def _points_csv():
+    import tempfile
+
+    handle, name = tempfile.mkstemp(suffix=".csv")
+    with open(handle, "w") as f:
+        f.write("x,y\n0,0\n1,0\n1,1\n0,1\n")
+    return name
+
+
+def _new_dir():
+    import tempfile
+
+    return tempfile.mkdtemp(prefix="mech-atlas-") + "/atlas"
+
+
+_SQUARE = [0, 1, 1 + 1j, 1j]
+CASES.update({
+    "atlas.curve_signature": E(lambda: at.curve_signature,
+                               {"points": "point", "closed": "bool", "harmonics": "count", "samples": "count",
+                                "resampled": "bool"},
+                               points=_SQUARE, closed=True, harmonics=4, samples=32, resampled=False),
+    "atlas.resample": E(lambda: at.resample, {"points": "point", "samples": "count", "closed": "bool"},
+                        points=_SQUARE, samples=16, closed=True),
+    "atlas.read_points": E(lambda: functools.partial(at.read_points, _points_csv())),
+    "atlas.sample_fourbars": E(lambda: at.sample_fourbars,
+                               {"n": "count", "seed": "seed", "lengths": ("scalar", lambda v: (v, 5.0)),
+                                "coupler": ("scalar", lambda v: (v, 2.0, -1.0, 1.0)), "branch": "branch?",
+                                "min_transmission": "scalar"},
+                               n=20, seed=3, lengths=(0.2, 5.0), coupler=(-1.0, 2.0, -1.0, 1.0), branch=None,
+                               min_transmission=0.1),
+    "atlas.FourBarSamples.take": E(lambda: at.sample_fourbars(10).take, {"index": "int"}, index=[1, 2]),
+    "atlas.FourBarSamples.columns": E(lambda: at.sample_fourbars(10).columns),
+    "atlas.FourBarSamples.fourbar": E(lambda: _small_atlas().linkages.fourbar, {"i": "int"}, i=3),
+    "atlas.FourBarSamples.curves": E(lambda: _small_atlas().linkages.curves, {"samples": "count"}, samples=16),
+    "atlas.build_atlas": E(lambda: at.build_atlas,
+                           {"n": "count", "seed": "seed", "harmonics": "count", "samples": "count",
+                            "lengths": ("scalar", lambda v: (v, 5.0)),
+                            "coupler": ("scalar", lambda v: (v, 2.0, -1.0, 1.0)), "min_transmission": "scalar",
+                            "block": "count", "progress": "bool"},
+                           n=30, seed=2, harmonics=4, samples=32, lengths=(0.2, 5.0), coupler=(-1.0, 2.0, -1.0, 1.0),
+                           min_transmission=0.0, block=64, progress=False),
+    "atlas.Atlas.curves": E(lambda: _small_atlas().curves, {"index": "int", "samples": "count?"},
+                            index=[0, 3], samples=None),
+    "atlas.Atlas.to_parquet": E(lambda: functools.partial(_small_atlas().to_parquet, _new_dir()),
+                                {"append": "bool"}, append=False),
+    "atlas.Atlas.from_parquet": E(lambda: functools.partial(at.Atlas.from_parquet, _atlas_dir())),
+    "atlas.query": E(lambda: functools.partial(at.query, _small_atlas()),
+                     {"target": "point", "k": "count", "shortlist": "count", "resampled": "bool"},
+                     target=_SQUARE, k=2, shortlist=8, resampled=False),
+    "atlas.refine": E(lambda: functools.partial(at.refine, at.query(_small_atlas(), _SQUARE, k=1)[0]),
+                      {"target": "point", "samples": "count", "iterations": "count"},
+                      target=_SQUARE, samples=32, iterations=3),
+    "atlas.PlacedLinkage.place": E(lambda: at.query(_small_atlas(), _SQUARE, k=1)[0].linkage.place,
+                                   {"z": "point"}, z=[0.0, 1 + 1j]),
+})
+RECORDS.update({f"atlas.{n}": "result record built by the package"
+                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage")})
 
 
 # ----------------------------------------------------------------------------- the walk

@@ -1,0 +1,59 @@
+"""A search of the coupler-curve atlas: the target, the best matches placed on it, and the best
+linkage drawn at several input angles with its cognates' pivots.
+
+Plain plotting function: takes the target points and the ``Match`` records that
+``mech.atlas.query`` returned, draws, and returns the axes. Nothing is computed at import.
+"""
+
+import numpy as np
+
+__all__ = ["search_figure"]
+
+
+def _poses(match, count):
+    """Pin positions (A, B, C, D, P) of the placed match at `count` input angles in its range."""
+    f = match.linkage.fourbar
+    lo, hi = match.theta_range
+    theta = np.linspace(lo, hi, count, endpoint=match.full_turn is False)
+    if not match.full_turn:                          # stay inside the rocking range
+        theta = 0.5 * (lo + hi) + 0.45 * (hi - lo) * np.sin(np.linspace(-np.pi / 2, np.pi / 2, count))
+    pose = f.solve(theta)
+    A, D = match.linkage.pivots
+    return [(A, match.linkage.place(b), match.linkage.place(c), D, match.linkage.place(p))
+            for b, c, p, ok in zip(pose.B, pose.C, pose.P, pose.valid) if ok]
+
+
+def search_figure(target, matches, axes=None, poses=4):
+    """Draw the target and the matches (left), and the best match at `poses` input angles (right)."""
+    if axes is None:
+        import matplotlib.pyplot as plt
+
+        _, axes = plt.subplots(1, 2, figsize=(11.0, 6.0), layout="constrained")
+    left, right = axes
+    left.plot(target.real, target.imag, ".", color="0.3", ms=3, label="target (noisy)")
+    for m in matches:
+        curve = np.append(m.curve, m.curve[0])
+        left.plot(curve.real, curve.imag, lw=2.5 if m.rank == 0 else 1.0,
+                  label=f"#{m.rank}: row {m.index}, {m.kind}, error {100 * m.relative_error:.2g} %")
+    left.set_title("Target and best matches, placed on it")
+    left.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14))
+    best = matches[0]
+    curve = np.append(best.curve, best.curve[0])
+    right.plot(curve.real, curve.imag, color="tab:blue", lw=1.5)
+    for A, B, C, D, P in _poses(best, poses):
+        right.plot([A.real, B.real, C.real, D.real], [A.imag, B.imag, C.imag, D.imag], "-o",
+                   color="black", lw=1.2, ms=3)
+        right.fill([B.real, C.real, P.real], [B.imag, C.imag, P.imag], color="tab:orange", alpha=0.3)
+        right.plot(P.real, P.imag, "o", color="tab:red", ms=4)
+    A, D = best.linkage.pivots
+    right.plot([A.real, D.real], [A.imag, D.imag], "k^", ms=9, label="pivots A, D")
+    if best.cognates:
+        K = best.cognates[0].pivots[1]
+        right.plot(K.real, K.imag, "s", color="tab:green", ms=8, label="third pivot K of the cognates")
+    right.set_title(f"Best match at {poses} input angles")
+    right.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14))
+    for ax in axes:
+        ax.set_aspect("equal")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    return axes

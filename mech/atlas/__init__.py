@@ -1,0 +1,37 @@
+"""A searchable atlas of coupler curves: which four-bars trace a curve like this one (issue 13).
+
+Three layers, each usable alone:
+
+- shape signatures (`curve_signature`, `resample`, `read_points`): a fixed-length vector
+  that does not depend on where a curve lies, its size, its turn, its start or its direction
+  (derivation page :ref:`deriv-shape-signature`);
+- a sampled design space of planar four-bars (`sample_fourbars`, `FourBarSamples`) with
+  the Grashof type, assembly branch, input range and minimum transmission angle of each;
+- the atlas itself (`build_atlas`, `Atlas`, stored as Parquet through pyarrow) and its
+  search (`query`, returning `Match` records placed on the target, with the two
+  Roberts-Chebyshev cognates of each match), and `refine`, which improves a match by
+  optimisation on the real curve error.
+
+``import mech.atlas`` loads NumPy only: pyarrow is imported when an atlas is saved or
+loaded, tqdm when a build shows a progress bar.
+"""
+
+from mech.atlas._signature import curve_signature, read_points, resample
+from mech.atlas._sampling import FourBarSamples, sample_fourbars
+from mech.atlas._store import ATLAS_VERSION, Atlas, build_atlas
+from mech.atlas._search import Match, PlacedLinkage, query, refine
+
+__all__ = [
+    "ATLAS_VERSION",
+    "Atlas",
+    "FourBarSamples",
+    "Match",
+    "PlacedLinkage",
+    "build_atlas",
+    "curve_signature",
+    "query",
+    "read_points",
+    "refine",
+    "resample",
+    "sample_fourbars",
+]

@@ -1,0 +1,108 @@
+"""Command line of the coupler-curve atlas.
+
+    python -m mech.atlas build ATLAS_DIR -n 10000 [--seed 0] [--append] [--min-transmission DEG]
+    python -m mech.atlas query ATLAS_DIR points.csv [-k 5] [--plot out.png]
+
+``build`` samples four-bars, computes their signatures with a progress bar and writes (or
+appends) a Parquet part; ``query`` reads a closed target curve from a CSV file of ``x, y``
+rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
+draws them over the target (Matplotlib).
+"""
+
+import argparse
+import math
+import sys
+import time
+
+import numpy as np
+
+
+def _build(args):
+    from mech.atlas import Atlas, build_atlas
+
+    started = time.perf_counter()
+    atlas = build_atlas(args.n, seed=args.seed, harmonics=args.harmonics, samples=args.samples,
+                        min_transmission=math.radians(args.min_transmission), progress=not args.quiet)
+    part = atlas.to_parquet(args.atlas, append=args.append)
+    total = len(Atlas.from_parquet(args.atlas))
+    print(f"wrote {len(atlas)} linkages to {part} in {time.perf_counter() - started:.2f} s "
+          f"(atlas now {total})")
+
+
+def _describe(m):
+    f = m.linkage.fourbar
+    A, D = m.linkage.pivots
+    lines = [f"#{m.rank}  row {m.index}  {m.kind}  error {m.error:.4g} ({100 * m.relative_error:.3g} %)  "
+             f"gamma_min {math.degrees(m.gamma_min):.1f} deg  "
+             f"{'full turn' if m.full_turn else 'rocking %.1f..%.1f deg' % tuple(map(math.degrees, m.theta_range))}",
+             f"    ABCD  a={f.a:.5g} b={f.b:.5g} c={f.c:.5g} d={f.d:.5g} p={f.coupler[0]:.5g} q={f.coupler[1]:.5g} "
+             f"branch={f.branch:+d}  A=({A.real:.5g}, {A.imag:.5g}) D=({D.real:.5g}, {D.imag:.5g})"]
+    for c in m.cognates:
+        g = c.fourbar
+        P, Q = c.pivots
+        lines.append(f"    {c.name}  a={g.a:.5g} b={g.b:.5g} c={g.c:.5g} d={g.d:.5g} p={g.coupler[0]:.5g} "
+                     f"q={g.coupler[1]:.5g}  pivots ({P.real:.5g}, {P.imag:.5g}) ({Q.real:.5g}, {Q.imag:.5g})")
+    return "\n".join(lines)
+
+
+def _query(args):
+    from mech.atlas import Atlas, query, read_points
+
+    atlas = Atlas.from_parquet(args.atlas)
+    target = read_points(args.points)
+    started = time.perf_counter()
+    matches = query(atlas, target, k=args.k)
+    print(f"{len(atlas)} linkages searched in {1000 * (time.perf_counter() - started):.1f} ms")
+    for m in matches:
+        print(_describe(m))
+    if args.plot:
+        _plot(target, matches, args.plot)
+
+
+def _plot(target, matches, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.plot(target.real, target.imag, "k.", ms=3, label="target")
+    for m in matches:
+        curve = np.append(m.curve, m.curve[0])
+        A, D = m.linkage.pivots
+        line, = ax.plot(curve.real, curve.imag, lw=1, label=f"#{m.rank} ({m.kind})")
+        ax.plot([A.real, D.real], [A.imag, D.imag], "^", color=line.get_color())
+    ax.set_aspect("equal")
+    ax.legend(fontsize=8)
+    fig.savefig(path, dpi=120)
+    print(f"drew {path}")
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python -m mech.atlas", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    b = sub.add_parser("build", help="sample four-bars and store their signatures")
+    b.add_argument("atlas", help="atlas folder (Parquet parts)")
+    b.add_argument("-n", type=int, default=10_000, help="linkages to add (default 10000)")
+    b.add_argument("--seed", type=int, default=0)
+    b.add_argument("--harmonics", type=int, default=8)
+    b.add_argument("--samples", type=int, default=128)
+    b.add_argument("--min-transmission", type=float, default=0.0, help="degrees")
+    b.add_argument("--append", action="store_true", help="add a part to an existing atlas")
+    b.add_argument("--quiet", action="store_true", help="no progress bar")
+    q = sub.add_parser("query", help="find linkages for a closed curve given as a CSV of x, y rows")
+    q.add_argument("atlas")
+    q.add_argument("points")
+    q.add_argument("-k", type=int, default=5)
+    q.add_argument("--plot", help="draw the matches over the target into this image file")
+    args = parser.parse_args(argv)
+    try:
+        (_build if args.command == "build" else _query)(args)
+    except ValueError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

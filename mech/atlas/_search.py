@@ -1,0 +1,398 @@
+"""Search an atlas for the four-bars whose coupler curves look like a target (issue 13, item 4).
+
+Two stages. The signature stage ranks every atlas entry by the distance from its signature
+to the nearest of the target's four normal forms (brute force on NumPy blocks). The
+alignment stage takes a short list from it, rebuilds each curve, and finds the similarity,
+start and direction that bring it closest to the target, by FFT cross-correlation over all
+starts (band-limited interpolation between samples) and then bisection of the start on the
+exact error; it ranks by the remaining RMS distance and places each linkage, and its two
+Roberts-Chebyshev cognates, on the target. `refine` improves a match by optimisation.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from mech._validate import bool_flag, instance, integer, planar_points
+from mech.atlas._signature import _curves, _resample_rows, _samples, normal_form
+from mech.atlas._store import Atlas
+from mech.planar.kinematics._fourbar import FourBar
+
+__all__ = ["Match", "PlacedLinkage", "query", "refine"]
+
+_BLOCK = 1 << 15
+_UPSAMPLE = 16
+_DENSE = 4
+_REFINE = 8
+_LEVELS = 6
+
+
+@dataclass(frozen=True)
+class PlacedLinkage:
+    """A four-bar in its standard frame and the similarity that places it on the target.
+
+    Attributes
+    ----------
+    name : str
+        "ABCD" for the match itself, "AEGK" and "DFHK" for its cognates (Fig. 2-32).
+    fourbar : FourBar
+        The linkage at the target's scale, in its standard frame (A = 0, D = d on +x).
+    origin : complex
+        Where the crank pivot A lies in the target's frame.
+    rotation : float
+        Angle of the ground line A->D in the target's frame, radians.
+    """
+
+    name: str
+    fourbar: FourBar
+    origin: complex
+    rotation: float
+
+    def place(self, z):
+        """Map standard-frame points `z` into the target's frame: ``origin + exp(1j*rotation)*z``."""
+        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
+
+    @property
+    def pivots(self):
+        """The two ground pivots A and D in the target's frame."""
+        return self.origin, self.origin + np.exp(1j * self.rotation) * self.fourbar.d
+
+
+@dataclass(frozen=True)
+class Match:
+    """One linkage found by `query`, placed on the target.
+
+    Attributes
+    ----------
+    rank : int
+        0 for the best match.
+    index : int
+        Its row in the atlas.
+    linkage : PlacedLinkage
+        The match, scaled and placed so that its coupler curve lies on the target.
+    cognates : tuple of PlacedLinkage
+        Its two Roberts-Chebyshev cognates AEGK and DFHK, placed on the target (they trace
+        the same curve); empty if the coupler point lies on a pin (no cognates).
+    direction : int
+        +1 if the target is run in the direction of the stored curve (input angle
+        increasing along the curve as sampled), -1 if against it.
+    error : float
+        RMS distance between the target and the placed coupler curve, both at equal
+        arc-length steps and best aligned, in the target's units.
+    relative_error : float
+        `error` over the RMS distance of the target from its centroid.
+    distance : float
+        Distance of the signatures (the first stage's ranking).
+    kind : str
+        Grashof type.
+    gamma_min : float
+        Smallest transmission angle over the input range, radians.
+    full_turn : bool
+        True if the crank turns fully; otherwise it rocks over `theta_range`.
+    theta_range : (float, float)
+        Input range, radians.
+    curve : ndarray of complex, shape (samples,)
+        The placed coupler curve at the atlas's equal arc-length steps (for drawing).
+    refined : bool
+        True for a match returned by `refine` (its linkage is no longer the atlas row
+        `index`, from which the refinement started).
+    """
+
+    rank: int
+    index: int
+    linkage: PlacedLinkage
+    cognates: tuple
+    direction: int
+    error: float
+    relative_error: float
+    distance: float
+    kind: str
+    gamma_min: float
+    full_turn: bool
+    theta_range: tuple
+    curve: np.ndarray
+    refined: bool = False
+
+
+def _signature_distances(signatures, norms, candidates):
+    """Smallest distance from each row of `signatures` to any of `candidates` (4, D)."""
+    out = np.empty(signatures.shape[0])
+    cc = np.sum(candidates**2, axis=1)
+    for start in range(0, signatures.shape[0], _BLOCK):
+        block = slice(start, start + _BLOCK)
+        # einsum, not a BLAS product: a (rows, 32) x (32, 4) product is memory-bound, and
+        # a threaded BLAS spends more on waking its threads than on the arithmetic
+        d2 = norms[block, None] - 2.0 * np.einsum("ij,kj->ik", signatures[block], candidates) + cc[None, :]
+        out[block] = np.min(d2, axis=1)
+    return np.sqrt(np.maximum(out, 0.0))
+
+
+def _align(target, curves):
+    """Best start and direction of each curve against the target (all rows of N samples).
+
+    By FFT cross-correlation over all starts, `_UPSAMPLE` per sample step (band-limited
+    interpolation): returns the direction (+1, -1) and the start, as a fraction of the
+    curve's length, that maximise the correlation, per row.
+    """
+    n = target.shape[0]
+    T = np.fft.fft(target - target.mean())
+    k = np.fft.fftfreq(n, 1.0 / n).astype(int)
+    keep = np.abs(k) < n // 2 if n % 2 == 0 else np.ones(n, bool)
+    best = []
+    for direction in (1, -1):
+        z = curves if direction == 1 else np.roll(curves[:, ::-1], 1, axis=1)
+        a = z - z.mean(axis=1)[:, None]
+        A = np.fft.fft(a, axis=1)
+        X = np.zeros((a.shape[0], n * _UPSAMPLE), dtype=complex)
+        X[:, k[keep] % (n * _UPSAMPLE)] = np.conj(A[:, keep]) * T[keep]
+        r = np.abs(np.fft.fft(X, axis=1))            # |sum_j conj(a[j + s/U]) t[j]| over s
+        s = np.argmax(r, axis=1)
+        best.append((r[np.arange(a.shape[0]), s] / np.sqrt(np.sum(np.abs(a) ** 2, axis=1)), s))
+    pick = best[0][0] >= best[1][0]
+    direction = np.where(pick, 1, -1)
+    start = np.where(pick, best[0][1], best[1][1]) / (n * _UPSAMPLE)
+    return direction, start
+
+
+def _fit(target, dense, direction, start):
+    """Similarity of each dense curve, run in `direction` from `start`, onto the target.
+
+    Returns (RMS error, w, centroid, RMS radius of the target, z) per row: target point j
+    is nearest ``centroid(target) + w * (z_j - centroid)``, z_j the curve's j-th equal
+    arc-length point from `start` (the rows of z).
+    """
+    n = target.shape[0]
+    oriented = np.where(direction[:, None] == 1, dense, np.roll(dense[:, ::-1], 1, axis=1))
+    z = _resample_rows(oriented, n, True, offset=start)
+    centroid = z.mean(axis=1)
+    a = z - centroid[:, None]
+    t = target - target.mean()
+    w = np.einsum("ij,j->i", a.conj(), t) / np.sum(np.abs(a) ** 2, axis=1)
+    err = np.sqrt(np.mean(np.abs(t[None, :] - w[:, None] * a) ** 2, axis=1))
+    return err, w, centroid, np.sqrt(np.mean(np.abs(t) ** 2)), z
+
+
+def _scaled(a, b, c, d, p, q, branch, s):
+    return FourBar(a * s, b * s, c * s, d * s, branch=branch, coupler=(p * s, q * s))
+
+
+def _placed_cognates(fourbar, origin, w):
+    from mech.planar.coupler._cognates import cognates
+
+    try:
+        trio = cognates(fourbar)
+    except ValueError:                      # the coupler point on a pin: no cognates
+        return ()
+    out = []
+    for cog in (trio.aegk, trio.dfhk):
+        f = cog.fourbar
+        out.append(PlacedLinkage(cog.name, _scaled(f.a, f.b, f.c, f.d, *f.coupler, f.branch, abs(w)),
+                                 complex(origin + w * cog.origin), float(np.angle(w * cog.rotation))))
+    return tuple(out)
+
+
+def query(atlas, target, *, k=5, shortlist=64, resampled=False):
+    """Find the four-bars of an atlas whose coupler curves best match a closed target curve.
+
+    Parameters
+    ----------
+    atlas : Atlas
+        The atlas to search (`build_atlas`, `Atlas.from_parquet`).
+    target : array_like, complex, shape (m,)
+        Points ``x + 1j*y`` along a closed curve, in order, m >= 3; any placement, size,
+        start and direction (read a CSV file with `read_points`).
+    k : int, optional
+        Number of matches returned, 1 <= k <= shortlist.
+    shortlist : int, optional
+        Entries taken from the signature stage to the exact alignment stage.
+    resampled : bool, optional
+        True if `target` is already at equal arc-length steps (used as given).
+
+    Returns
+    -------
+    list of Match
+        Best first, by the RMS distance between the target and the placed coupler curve.
+
+    Raises
+    ------
+    ValueError
+        For a target that is not finite points, has fewer than 3 or all equal, or bad
+        options (named).
+
+    Notes
+    -----
+    The signature stage compares each atlas signature with all four normal forms of the
+    target (:ref:`deriv-shape-signature`), so it needs no tie-break; the alignment stage
+    then removes the normalisation's sensitivity (a nearly circular first harmonic) by
+    aligning exactly. Matches are linkages of the atlas scaled, turned and moved; their
+    cognates trace the same curve with other pivots.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.atlas import build_atlas, query
+    >>> atlas = build_atlas(300, seed=2)
+    >>> curve = atlas.curves(17)[0]                     # a curve of the atlas, moved
+    >>> target = 5 + 2j + 3 * np.exp(1j) * np.roll(curve, 40)[::-1]
+    >>> best = query(atlas, target, k=3)[0]
+    >>> best.index, best.relative_error < 1e-2
+    (17, True)
+    >>> len(best.cognates)
+    2
+    """
+    instance("atlas", atlas, Atlas)
+    k = integer("k", k, minimum=1, maximum=10**4)
+    shortlist = integer("shortlist", shortlist, minimum=1, maximum=10**5)
+    resampled = bool_flag("resampled", resampled)
+    if k > shortlist:
+        raise ValueError(f"Expected `k` <= shortlist = {shortlist}, got {k}")
+    z, lead = _curves(target, True, "target")
+    if lead != (1,) and lead != ():
+        raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
+    n = atlas.samples
+    if resampled:
+        if z.shape[1] != n:
+            raise ValueError(f"Expected {n} points in a resampled `target` (the atlas's samples), got {z.shape[1]}")
+        t = z
+    else:
+        t = _resample_rows(z, n, True)
+    form = normal_form(t, atlas.harmonics)
+    dist = _signature_distances(atlas.signatures, atlas._norms, form.candidates[0])
+    m = min(shortlist, len(atlas))
+    short = np.argpartition(dist, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    dense = atlas.curves(short, _DENSE * n)
+    err, w, centroid, radius, curves, direction = _best_fits(t[0], dense, max(k, _REFINE))
+    return [_match(rank, int(short[j]), atlas.linkages.take([short[j]]), t[0], w[j], centroid[j], err[j],
+                   radius, direction[j], float(dist[short[j]]), curves[j])
+            for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+
+
+def _best_fits(t, dense, keep, levels=None):
+    """Align every dense curve with the target `t` (N,): start and direction by FFT for all,
+    then bisection on the exact error for the best `keep`. Returns arrays over all rows
+    (error, w, centroid, radius, placed-frame samples, direction); rows past the best
+    `keep` have the unrefined error."""
+    n = t.shape[0]
+    direction, start = _align(t, _resample_rows(dense, n, True))
+    err = _fit(t, dense, direction, start)[0]
+    # refine the start of the best few by bisection on the exact error (the FFT peak of a
+    # curve that is not band-limited can be off by a fraction of a sample step)
+    best = np.argsort(err, kind="stable")[:keep]
+    step = 0.5 / n
+    for _ in range(_LEVELS if levels is None else levels):
+        for trial in (start[best] - step, start[best] + step):
+            e = _fit(t, dense[best], direction[best], trial % 1.0)[0]
+            better = e < err[best]
+            start[best] = np.where(better, trial % 1.0, start[best])
+            err[best] = np.where(better, e, err[best])
+        step *= 0.5
+    err, w, centroid, radius, curves = _fit(t, dense, direction, start)
+    return err, w, centroid, radius, curves, direction
+
+
+def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, curve, refined=False):
+    """The `Match` of one linkage (a one-row FourBarSamples) placed by ``z -> origin + w z``."""
+    a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
+    branch = int(row.branch[0])
+    origin = t.mean() - w * centroid
+    s = abs(w)
+    unit = FourBar(a, b, c, d, branch=branch, coupler=(p, q))
+    return Match(rank, index, PlacedLinkage("ABCD", _scaled(a, b, c, d, p, q, branch, s), complex(origin),
+                                            float(np.angle(w))),
+                 _placed_cognates(unit, origin, w), int(direction), float(err), float(err / radius), distance,
+                 str(row.kind[0]), float(row.gamma_min[0]), bool(row.full_turn[0]),
+                 (float(row.theta_lo[0]), float(row.theta_hi[0])), origin + w * curve, refined)
+
+
+
+
+def _refine_objective(t, branch, dense_samples):
+    """Relative RMS error of the best-aligned curve for x = (log a, log b, log c, u, v), rows of X."""
+    from mech.atlas._sampling import coupler_curves, describe
+
+    def objective(X):
+        X = np.asarray(X, dtype=float)
+        flat = X.reshape(-1, 5)
+        out = np.full(flat.shape[0], np.inf)
+        a, b, c = np.exp(flat[:, 0]), np.exp(flat[:, 1]), np.exp(flat[:, 2])
+        rows = describe(a, b, c, np.ones_like(a), b * flat[:, 3], b * flat[:, 4], np.full(a.shape, branch))
+        ok = np.flatnonzero(rows.movable)
+        if ok.size:
+            dense = coupler_curves(rows.take(ok).columns(), dense_samples)
+            fine = np.all(np.isfinite(dense), axis=1)
+            if fine.any():
+                err, *_, radius, _, _ = _best_fits(t, dense[fine], ok.size, levels=3)
+                out[ok[fine]] = err / radius
+        return out.reshape(X.shape[:-1])
+
+    return objective
+
+
+def refine(match, target, *, samples=128, iterations=400):
+    """Refine a match by optimisation on the real curve error (the path synthesis of chapter 2).
+
+    Starting from the matched linkage, the crank, coupler and rocker (as ratios to the ground)
+    and the coupler point are moved by a Nelder-Mead search (`mech.planar.synthesis`'s
+    `penalty_method` on a `DesignModel`) to reduce the RMS distance between the target and
+    the coupler curve, best aligned (placement, scale, start and direction) at every step.
+
+    Parameters
+    ----------
+    match : Match
+        A result of `query` (its branch is kept).
+    target : array_like, complex, shape (m,)
+        The closed target curve given to `query`.
+    samples : int, optional
+        Equal arc-length steps at which the curves are compared.
+    iterations : int, optional
+        Largest number of simplex iterations.
+
+    Returns
+    -------
+    Match
+        With ``refined=True``, the refined linkage placed on the target, its error, type,
+        minimum transmission angle and cognates; the starting match if no better one was
+        found.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.atlas import build_atlas, query, refine
+    >>> from mech.planar import FourBar
+    >>> t = np.linspace(0, 2 * np.pi, 400, endpoint=False)
+    >>> target = FourBar(1.0, 2.7, 2.4, 3.1, coupler=(1.5, 0.8)).solve(t).P   # not in the atlas
+    >>> first = query(build_atlas(2000, seed=3), target, k=1)[0]
+    >>> better = refine(first, target, iterations=150)
+    >>> better.refined, better.relative_error < first.relative_error
+    (True, True)
+    """
+    from mech.planar.synthesis import DesignModel, penalty_method
+
+    instance("match", match, Match)
+    samples = _samples(samples, harmonics=1)
+    iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
+    z, lead = _curves(target, True, "target")
+    if lead not in ((), (1,)):
+        raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
+    t = _resample_rows(z, samples, True)[0]
+    f = match.linkage.fourbar
+    branch = f.branch
+    x0 = np.array([np.log(f.a / f.d), np.log(f.b / f.d), np.log(f.c / f.d), f.coupler[0] / f.b, f.coupler[1] / f.b])
+    width = np.array([1.5, 1.5, 1.5, 1.0, 1.0])
+    model = DesignModel(_refine_objective(t, branch, _DENSE * samples), np.stack([x0 - width, x0 + width], axis=1),
+                        names=("log a", "log b", "log c", "u", "v"))
+    start = float(model.f(x0))
+    if not np.isfinite(start):
+        return match
+    result = penalty_method(model, x0, r0=1e-12, stages=1, iterations=iterations, step=0.05, ftol=1e-10)
+    if not result.fun < start:
+        return match
+    from mech.atlas._sampling import coupler_curves, describe
+
+    x = result.x
+    a, b, c = np.exp(x[:3])
+    row = describe([a], [b], [c], [1.0], [b * x[3]], [b * x[4]], [branch])
+    dense = coupler_curves(row.columns(), _DENSE * samples)
+    err, w, centroid, radius, curves, direction = _best_fits(t, dense, 1)
+    return _match(match.rank, match.index, row, t, w[0], centroid[0], err[0], radius, direction[0],
+                  match.distance, curves[0], refined=True)

@@ -1,0 +1,33 @@
+"""The command line ``python -m mech.atlas build/query`` (run in-process through ``main``)."""
+
+import numpy as np
+import pytest
+
+pytest.importorskip("pyarrow")
+
+from mech.atlas import Atlas  # noqa: E402
+from mech.atlas.__main__ import main  # noqa: E402
+
+
+def test_cli_build_append_query(tmp_path, capsys):
+    folder = tmp_path / "atlas"
+    assert main(["build", str(folder), "-n", "300", "--seed", "4", "--quiet"]) == 0
+    assert main(["build", str(folder), "-n", "100", "--seed", "5", "--append", "--quiet"]) == 0
+    atlas = Atlas.from_parquet(folder)
+    assert len(atlas) == 400 and set(np.unique(atlas.seeds)) == {4, 5}
+    curve = atlas.curves(42, 300)[0]
+    target = 1 - 2j + 0.5 * np.exp(2j) * curve
+    np.savetxt(tmp_path / "t.csv", np.c_[target.real, target.imag], delimiter=",", header="x,y", comments="")
+    capsys.readouterr()
+    assert main(["query", str(folder), str(tmp_path / "t.csv"), "-k", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "#0  row 42 " in out and "AEGK" in out and "DFHK" in out
+
+
+def test_cli_errors_are_messages(tmp_path, capsys):
+    assert main(["query", str(tmp_path / "none"), str(tmp_path / "t.csv")]) == 2
+    assert "Expected `path`" in capsys.readouterr().err
+    folder = tmp_path / "a"
+    assert main(["build", str(folder), "-n", "50", "--quiet"]) == 0
+    assert main(["build", str(folder), "-n", "50", "--quiet"]) == 2
+    assert "append=True" in capsys.readouterr().err
