@@ -13,8 +13,6 @@ __all__ = ["NOT_COVERED"]
 _DRAWABLE = "drawable from the text's data or from chosen data; not yet redrawn on a page"
 _ART = "a machine drawing, photograph or sketch of a device; nothing to compute"
 _SCHEMATIC = "an explanatory sketch without data; not redrawn"
-_CONSTRUCTION = ("a ruler-and-compass construction; the synthesis page computes the same design "
-                 "but does not draw the construction step by step")
 _GRAPHICAL_EXERCISE = ("a graphical exercise (instant centres, velocity or force polygons); "
                        "no generated solution yet (issue 18, item 1)")
 
@@ -24,7 +22,7 @@ NOT_COVERED = {
                     "displacement matrix): the guidance page designs a slider-crank from slider "
                     "circles, but no derivation declares (2-41)",
     ("eq", "2-42"): "the centric slider-crank for guidance (six equations for four poses): "
-                    "neither derived nor computed",
+                    "neither derived nor computed; the guidance page says why",
     ("eq", "2-58"): "the coupler-point model of example 2-24: computed by "
                     "mech.planar.synthesis.path_synthesis_model, but not derived in a notebook",
     ("exercise", "2-1"): "asks for the degrees of freedom of sketched mechanisms; no data",
@@ -84,29 +82,8 @@ NOT_COVERED = {
     ("fig", "2-83"): "the slotting-machine guide-bar; " + _DRAWABLE,
     ("fig", "2-84"): "a flying shear; " + _ART,
     ("fig", "2-85"): "a slider with its pin off the guide; " + _DRAWABLE,
-    ("fig", "2-86"): "the crab-claw loader; " + _DRAWABLE,
-    ("fig", "2-88"): "the planar displacement of a body; " + _DRAWABLE,
-    ("fig", "2-90"): "the offset slider-crank for guidance; " + _DRAWABLE,
-    ("fig", "2-91"): "the centric slider-crank for guidance; " + _DRAWABLE,
-    ("fig", "2-92"): "the inversion method for function generation; " + _CONSTRUCTION,
-    ("fig", "2-93"): "the analytical inversion; " + _DRAWABLE,
-    ("fig", "2-94"): "the function generator of example 2-16; " + _DRAWABLE,
-    ("fig", "2-95"): "the equal-view circle of quick-return design; " + _CONSTRUCTION,
-    ("fig", "2-96"): "example 2-17 by construction; " + _CONSTRUCTION,
-    ("fig", "2-97"): "example 2-18 by construction; " + _CONSTRUCTION,
-    ("fig", "2-98"): "the offset slider-crank from H, e, K; " + _CONSTRUCTION,
-    ("fig", "2-99"): "the oscillating guide-bar from its swing; " + _CONSTRUCTION,
-    ("fig", "2-100"): "the crank-rocker with K = 1 (tested, not drawn); " + _CONSTRUCTION,
-    ("fig", "2-102"): "alpha against the smallest transmission angle for several K (the quick-return "
-                      "page regenerates Table 2-3 from the same sweep); " + _DRAWABLE,
-    ("fig", "2-103"): "the analytic model of the offset slider-crank; " + _DRAWABLE,
-    ("fig", "2-105"): "the linkage of example 2-21 with its coupler curve; " + _DRAWABLE,
-    ("fig", "2-106"): "the crank as a displaced body; " + _DRAWABLE,
-    ("fig", "2-107"): "the linkage of example 2-22; " + _DRAWABLE,
-    ("fig", "2-108"): "the design variables of a four-bar; " + _SCHEMATIC,
-    ("fig", "2-109"): "conjugate directions on ellipses; " + _DRAWABLE,
-    ("fig", "2-112"): "the design variables of the steering trapezoid; " + _SCHEMATIC,
-    ("fig", "2-114"): "the optimised four-bar of example 2-24; " + _DRAWABLE,
+    ("fig", "2-91"): "the centric slider-crank for guidance, like (2-42): not computed (the "
+                     "guidance page says why)",
     ("fig", "2-115"): "spatial pairs; " + _ART,
     ("fig", "2-116"): "robot structures; " + _ART,
     ("fig", "2-117"): "frame rotations about z and x; " + _DRAWABLE,
