@@ -1,0 +1,74 @@
+"""``python -m mech.index 2-19``: where a textbook number is derived, computed, shown and tested.
+
+Usage::
+
+    python -m mech.index 2-19            # every kind numbered 2-19
+    python -m mech.index eq 2-19         # also: fig 2-86, ex 2-15 (example), exercise 2-27,
+                                         # table 2-3, chapter 5, §1.3.1
+    python -m mech.index --summary       # how many numbers of each kind are covered
+    python -m mech.index --missing       # catalogued numbers not covered, with reasons
+    python -m mech.index --root PATH ... # index another clone
+"""
+
+import argparse
+import sys
+
+from mech.index import RepositoryNotFound, build_index, parse_query
+from mech.index._refs import KINDS
+from mech.index._render import entry_text
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(
+        prog="python -m mech.index",
+        description="Find a textbook number: its derivation, functions, book page and tests.")
+    parser.add_argument("query", nargs="*", help="e.g. 2-19, eq 2-19, fig 2-86, ex 2-15, "
+                        "exercise 2-27, table 2-3, chapter 5, §1.3.1")
+    parser.add_argument("--root", help="the clone to index (default: the one holding mech)")
+    parser.add_argument("--summary", action="store_true", help="count covered numbers")
+    parser.add_argument("--missing", action="store_true",
+                        help="list the catalogued numbers not covered")
+    args = parser.parse_args(argv)
+    if not (args.query or args.summary or args.missing):
+        parser.print_help()
+        return 2
+    query = " ".join(args.query)
+    if query:
+        try:
+            parse_query(query)
+        except ValueError as exc:
+            print(exc, file=sys.stderr)
+            return 2
+    try:
+        index = build_index(args.root)
+    except RepositoryNotFound as exc:
+        print(exc, file=sys.stderr)
+        return 2
+    if index.catalog is None and (args.summary or args.missing):
+        print("The catalogs (../shared/catalog beside the clone) are absent: only the "
+              "harvested numbers are known.", file=sys.stderr)
+    if args.summary:
+        for kind, (total, covered, gaps) in index.summary().items():
+            print(f"{KINDS[kind] + 's':20s} {total:4d} catalogued, {covered:4d} covered, "
+                  f"{gaps:4d} not yet covered")
+    if args.missing:
+        for e in index:
+            if e.catalogued and not e.covered:
+                print(f"{e.title}: {e.not_covered or 'NO REASON GIVEN'}")
+        for e in index.stale():
+            print(f"{e.title}: covered now; delete its entry in mech/index/_not_covered.py")
+    if query:
+        entries = index.lookup(query)
+        if not entries:
+            print(f"No entry for {query!r}: nothing declares it and the catalogs do not list it.",
+                  file=sys.stderr)
+            return 1
+        if len(entries) > 1:
+            print(f"{query} matches {len(entries)} kinds: "
+                  + ", ".join(e.title for e in entries) + "\n")
+        print("\n\n".join(entry_text(e) for e in entries))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
