@@ -86,12 +86,12 @@ def _wrap(angle):
 
 # ----------------------------------------------------------------------------- registry
 def test_exercises_numbers():
-    assert list(ex.EXERCISES) == ["2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-10", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
-    assert [e.number for e in chapter2.EXERCISES] == ["2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-10", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
+    assert list(ex.EXERCISES) == ["2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-10", "2-13", "2-15", "2-16", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
+    assert [e.number for e in chapter2.EXERCISES] == ["2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-10", "2-13", "2-15", "2-16", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
 
 
 def test_get_unknown_number():
-    with pytest.raises(ValueError, match="Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-9'"):
+    with pytest.raises(ValueError, match="Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-13, 2-15, 2-16, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-9'"):
         ex.get("2-9")
 
 
@@ -353,7 +353,7 @@ def test_exercise_2_6_rejects_crank_that_cannot_turn():
 def test_main_list(capsys):
     assert main(["list"]) == 0
     out = capsys.readouterr().out
-    assert [line.split()[0] for line in out.splitlines()] == ["2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-10", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
+    assert [line.split()[0] for line in out.splitlines()] == ["2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-10", "2-13", "2-15", "2-16", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
 
 
 def test_main_show(capsys):
@@ -389,7 +389,7 @@ def test_main_unknown_number(capsys):
     with pytest.raises(SystemExit) as info:
         main(["variant", "2-9"])
     assert info.value.code == 2
-    assert "Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-9'" in capsys.readouterr().err
+    assert "Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-13, 2-15, 2-16, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-9'" in capsys.readouterr().err
 
 
 def test_main_invalid_values(capsys):
