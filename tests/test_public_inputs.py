@@ -27,14 +27,16 @@ import mech.planar as pl
 import mech.spatial as sp
 import mech.spherical as sph
 import mech.planar.synthesis as sy
-from mech.exercises import (chapter2, chapter2_analysis, chapter2_quick_return, chapter2_relative_motion,
+from mech.exercises import (chapter2, chapter2_analysis, chapter2_quick_return, chapter2_reactions,
+                            chapter2_relative_motion,
                             chapter2_synthesis)
 
 MODULES = {"mech": mech, "planar": pl, "spatial": sp, "spherical": sph, "exercises": ex,
            "exercises.chapter2": chapter2, "exercises.chapter2_analysis": chapter2_analysis,
            "planar.synthesis": sy, "exercises.chapter2_synthesis": chapter2_synthesis,
            "exercises.chapter2_quick_return": chapter2_quick_return,
-           "exercises.chapter2_relative_motion": chapter2_relative_motion}
+           "exercises.chapter2_relative_motion": chapter2_relative_motion,
+           "exercises.chapter2_reactions": chapter2_reactions}
 
 
 # ----------------------------------------------------------------------------- bad values
@@ -772,6 +774,12 @@ CASES = {
         lambda n=n: getattr(chapter2_relative_motion, f"linkage_2_{n}"),
         {"params": ("scalar", lambda v, k=k: {k: v}, k)}, params={k: d})
        for n, k, d in (("13", "OA", 150.0), ("15", "AB", 150.0), ("16", "AB", 200.0))},
+    **{f"exercises.chapter2_reactions.linkage_2_{n}": E(
+        lambda n=n: getattr(chapter2_reactions, f"linkage_2_{n}"),
+        {"params": ("scalar", lambda v, k=k: {k: v}, k)}, params={k: d})
+       for n, k, d in (("17", "AB", 50.0), ("18", "AB", 100.0))},
+    "exercises.chapter2_reactions.linkage_2_26": E(lambda: chapter2_reactions.linkage_2_26, {"theta": "scalar"},
+                                                   theta=45.0),
 }
 
 #: Public classes whose constructors are not walked, and why: the package builds them (result
@@ -1089,7 +1097,7 @@ for _func, _get, _defaults, _read, _extra in _P_FUNCTIONS:
         CASES[f"exercises.{_module}.{_func}#{_name}"] = E(_get, {"p": _p_slot(_defaults, _name)}, p=_defaults,
                                                          **_extra)
 for _number, _defaults in (("2-27", _D27), ("2-28", _D28), ("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32),
-                           *((n, ex.get(n).defaults) for n in ("2-13", "2-15", "2-16"))):
+                           *((n, ex.get(n).defaults) for n in ("2-13", "2-15", "2-16", "2-17", "2-18", "2-26"))):
     CASES[f"exercises.Exercise.solve#{_number}"] = E(lambda n=_number: ex.get(n).solve,
                                                      {k: "scalar" for k in _defaults}, **_defaults)
 

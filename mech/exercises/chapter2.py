@@ -22,13 +22,14 @@ and 2-30 to 2-32
 (:mod:`mech.exercises.chapter2_quick_return`, page ``book-synthesis-quick-return``)
 are collected here too, and so are 2-13, 2-15 and 2-16 (velocity and acceleration on
 assumed layouts, :mod:`mech.exercises.chapter2_relative_motion`, page
-``book-analysis-exercises``). Each solver states its conventions in its solution.
+``book-analysis-exercises``), and 2-17, 2-18 and 2-26 (reactions in the pairs,
+:mod:`mech.exercises.chapter2_reactions`, page ``book-forces-static-forces``). Each solver states its conventions in its solution.
 
 Examples
 --------
 >>> from mech.exercises import chapter2
 >>> [ex.number for ex in chapter2.EXERCISES]
-['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-13', '2-15', '2-16', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
+['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-13', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
 >>> s = chapter2.EXERCISE_2_2.solve()
 >>> [str(iv) for iv in s["AB for a double-rocker"].value]
 ['(15, 45)', '(55, 115)']
@@ -50,6 +51,7 @@ from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
 from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
 from mech.exercises.chapter2_statics import EXERCISE_2_22
+from mech.exercises.chapter2_reactions import EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_26
 from mech.exercises.chapter2_relative_motion import EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16
 from mech.exercises.chapter2_synthesis import EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29
 from mech.exercises.chapter2_quick_return import EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32
@@ -65,12 +67,15 @@ __all__ = [
     "EXERCISE_2_13",
     "EXERCISE_2_15",
     "EXERCISE_2_16",
+    "EXERCISE_2_17",
+    "EXERCISE_2_18",
     "EXERCISE_2_19",
     "EXERCISE_2_20",
     "EXERCISE_2_21",
     "EXERCISE_2_22",
     "EXERCISE_2_23",
     "EXERCISE_2_24",
+    "EXERCISE_2_26",
     "EXERCISE_2_27",
     "EXERCISE_2_28",
     "EXERCISE_2_29",
@@ -482,6 +487,7 @@ EXERCISE_2_6 = Exercise(
     sampler=_sample_2_6,
 )
 
-EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7,
-             EXERCISE_2_10, EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16, EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23,
-             EXERCISE_2_24, EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)
+EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7, EXERCISE_2_10,
+             EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16, EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_19,
+             EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23, EXERCISE_2_24, EXERCISE_2_26,
+             EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)
