@@ -778,6 +778,9 @@ CASES = {
         lambda n=n: getattr(chapter2_reactions, f"linkage_2_{n}"),
         {"params": ("scalar", lambda v, k=k: {k: v}, k)}, params={k: d})
        for n, k, d in (("17", "AB", 50.0), ("18", "AB", 100.0))},
+    "exercises.chapter2_reactions.linkage_2_22": E(lambda: chapter2_reactions.linkage_2_22,
+                                                   {"layout": ("scalar", lambda v: {"AB": v}, "AB")},
+                                                   layout={"AB": 400.0}),
     "exercises.chapter2_reactions.linkage_2_26": E(lambda: chapter2_reactions.linkage_2_26, {"theta": "scalar"},
                                                    theta=45.0),
 }

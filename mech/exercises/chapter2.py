@@ -15,14 +15,14 @@ are solved on an assumed layout, stated first in each solution, by the general s
 shown on ``book-analysis-exercises``; they live in :mod:`mech.exercises.chapter2_analysis`
 and are collected here. The force exercises 2-19, 2-20, 2-21, 2-23 and 2-24 live in
 :mod:`mech.exercises.chapter2_forces` (page ``book-forces-exercises``) and 2-22 in
-:mod:`mech.exercises.chapter2_statics` (page ``book-forces-static-forces``). The synthesis
+:mod:`mech.exercises.chapter2_reactions` (page ``book-forces-static-forces``). The synthesis
 exercises 2-27 (page ``synthesis-guidance``), 2-28 and 2-29
 (:mod:`mech.exercises.chapter2_synthesis`, page ``book-synthesis-function-generation``)
 and 2-30 to 2-32
 (:mod:`mech.exercises.chapter2_quick_return`, page ``book-synthesis-quick-return``)
 are collected here too, and so are 2-13, 2-15 and 2-16 (velocity and acceleration on
 assumed layouts, :mod:`mech.exercises.chapter2_relative_motion`, page
-``book-analysis-exercises``), and 2-17, 2-18 and 2-26 (reactions in the pairs,
+``book-analysis-exercises``), and 2-17, 2-18 and 2-26 (reactions in the pairs, with 2-22 in the same module,
 :mod:`mech.exercises.chapter2_reactions`, page ``book-forces-static-forces``). Each solver states its conventions in its solution.
 
 Examples
@@ -50,8 +50,7 @@ from mech.planar import FourBar, SliderCrank, grashof
 from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
 from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
-from mech.exercises.chapter2_statics import EXERCISE_2_22
-from mech.exercises.chapter2_reactions import EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_26
+from mech.exercises.chapter2_reactions import EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_26
 from mech.exercises.chapter2_relative_motion import EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16
 from mech.exercises.chapter2_synthesis import EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29
 from mech.exercises.chapter2_quick_return import EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32

@@ -1,4 +1,4 @@
-"""Exercises 2-17, 2-18 and 2-26 of chapter 2: reactions in the pairs, by computation.
+"""Exercises 2-17, 2-18, 2-22 and 2-26 of chapter 2: reactions in the pairs, by computation.
 
 The textbook solves these with force polygons drawn by hand and, in 2-26, with the lines
 of action of the total reactions tangent to friction circles. The figures are lost (tag
@@ -8,6 +8,10 @@ no numbers at all. Each solution states the layout it assumes, builds it as a
 group, from the load back to the driver). ``linkage_2_17`` and the like return the assumed
 linkage at its pose, for figures and checks. The solutions are shown on the book page
 ``book-forces-static-forces``.
+
+Exercise 2-22 (题图 2-22 is lost too: only "A and B are fixed pins, every pin is 25 mm in
+diameter, mu0 = 0.2, P = 30 N, find Q" survives) is solved on an assumed layout of two
+levers on the fixed pins A and B joined by a link, with and without friction circles.
 
 Examples
 --------
@@ -27,8 +31,8 @@ from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.exercises.chapter2_analysis import _around
 from mech.planar import Guide, Linkage, friction_circle, static_forces
 
-__all__ = ["EXERCISE_2_17", "EXERCISE_2_18", "EXERCISE_2_26", "linkage_2_17", "linkage_2_18", "linkage_2_26",
-           "THETAS_2_26"]
+__all__ = ["EXERCISE_2_17", "EXERCISE_2_18", "EXERCISE_2_22", "EXERCISE_2_26", "LAYOUT_2_22", "THETAS_2_26",
+           "linkage_2_17", "linkage_2_18", "linkage_2_22", "linkage_2_26"]
 
 _DEG = math.pi / 180.0
 
@@ -304,6 +308,95 @@ def _sample_2_26(rng):
             "Mr": float(rng.integers(5, 50))}
 
 
+# ----------------------------------------------------------------------------- 2-22
+#: The assumed layout (mm, radians): pivots, lever arms, link, lever-1 angle.
+LAYOUT_2_22 = {"AB": 400.0, "AC": 150.0, "AE": 300.0, "CD": 350.0, "BD": 150.0, "BF": 300.0,
+               "theta": math.radians(60.0)}
+
+_STATEMENT_2_22 = (
+    "In the linkage of figure 2-22, A and B are fixed pins. Every pin has a diameter of "
+    "{d_pin} mm and an equivalent friction coefficient mu0 = {mu0}. The force P = {P} N drives "
+    "the linkage. Find the force Q that P can overcome (the figure is lost: a layout is assumed)."
+)
+
+
+def linkage_2_22(layout=None):
+    """The assumed layout of exercise 2-22 as a `Linkage` (lever1 A-C-E, link C-D, lever2 B-D-F).
+
+    Examples
+    --------
+    >>> from mech.exercises.chapter2_reactions import linkage_2_22
+    >>> linkage_2_22().groups
+    ('crank lever1', 'RRR link-lever2')
+    """
+    L = dict(LAYOUT_2_22, **(layout or {}))
+    for k in ("AB", "AC", "AE", "CD", "BD", "BF"):
+        positive_length(k, L[k])
+    return (Linkage({"A": 0.0, "B": L["AB"]})
+            .crank("lever1", pivot="A", tip="C", length=L["AC"])
+            .point("E", link="lever1", at=L["AE"])
+            .rrr(("link", "lever2"), pins=("C", "B"), joint="D", lengths=(L["CD"], L["BD"]), branch=1)
+            .point("F", link="lever2", at=L["BF"]))
+
+
+def _solve_2_22(p):
+    P = positive_length("P", p["P"])
+    d_pin = positive_length("d_pin", p["d_pin"])
+    rho = friction_circle(p["mu0"], d_pin / 2.0)
+    L = LAYOUT_2_22
+    lk = linkage_2_22()
+    sol = lk.solve(L["theta"], order=1, strict=True)          # lever 1 turns counter-clockwise
+    w2 = float(sol.omegas["lever2"])
+    u2 = sol.direction("lever2")
+    q_unit = complex(-np.sign(w2) * 1j * u2)                   # unit Q, against lever 2's turning
+    moment_P = P * L["AE"]                                     # P perpendicular to lever 1 at E
+    Q = {}
+    for label, r in (("without friction", 0.0), ("with friction", rho)):
+        sf = static_forces(sol, {"F": q_unit}, rho=r)
+        if bool(sf.self_locking):
+            raise ValueError(f"Expected the assumed linkage to move, got self-locking with rho = {rho!r}")
+        Q[label] = moment_P / float(sf.balancing)
+    eta = Q["with friction"] / Q["without friction"]
+    assumptions = (
+        f"A = (0, 0) and B = ({L['AB']:g}, 0) mm. Lever 1 turns about A: C at {L['AC']:g} mm, "
+        f"P acts at E, {L['AE']:g} mm from A, perpendicular to AE, turning it counter-clockwise; "
+        f"the lever stands at {math.degrees(L['theta']):g}° to AB.",
+        f"The link CD ({L['CD']:g} mm) joins lever 1 to lever 2, which turns about B: D at "
+        f"{L['BD']:g} mm from B, Q at F, {L['BF']:g} mm from B, perpendicular to BF, resisting.",
+        "P drives and Q resists (the textbook does not say which); weights are neglected.",
+    )
+    part = Part("The force Q", (
+        Result("friction-circle radius", rho, "mm", "ρ = μ0 r (2-19), r = d/2"),
+        Result("Q without friction", Q["without friction"], "N",
+               "`static_forces` with ρ = 0: P·AE over the balancing moment for a unit Q"),
+        Result("Q with friction", Q["with friction"], "N",
+               "`static_forces` with friction circles at A, B, C, D; senses from the velocities"),
+        Result("efficiency", eta, "", "η = Q / Q0 at the same P (eq. 2-24)"),
+    ), ("The balancing moment is proportional to Q (every reaction, and so every friction "
+        "moment ρ|R|, scales with the load), so Q follows from one solve with a unit Q.",))
+    return Solution("2-22", EXERCISE_2_22.title, dict(p), (), (part,), assumptions=assumptions)
+
+
+def _sample_2_22(rng):
+    return {"P": float(rng.integers(10, 100)), "d_pin": float(rng.integers(10, 40)),
+            "mu0": float(np.round(rng.uniform(0.05, 0.3), 2))}
+
+
+EXERCISE_2_22 = Exercise(
+    number="2-22",
+    title="Force Q that a lever linkage with friction circles transmits from P",
+    tag="G",
+    statement=_STATEMENT_2_22,
+    parameters=(
+        Parameter("P", 30.0, "N", "driving force"),
+        Parameter("d_pin", 25.0, "mm", "pin diameter"),
+        Parameter("mu0", 0.2, "", "equivalent friction coefficient of the pins"),
+    ),
+    solver=_solve_2_22,
+    sampler=_sample_2_22,
+)
+
+
 # ----------------------------------------------------------------------------- registry
 EXERCISE_2_17 = Exercise(
     number="2-17", title="Reactions and the balancing force of a six-bar with a slider", tag="G",
@@ -330,4 +423,4 @@ EXERCISE_2_26 = Exercise(
     solver=_solve_2_26, sampler=_sample_2_26,
 )
 
-EXERCISES = (EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_26)
+EXERCISES = (EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_26)
