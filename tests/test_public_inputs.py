@@ -27,7 +27,8 @@ import mech.planar as pl
 import mech.spatial as sp
 import mech.spherical as sph
 import mech.planar.synthesis as sy
-from mech.exercises import (chapter2, chapter2_analysis, chapter2_quick_return, chapter2_reactions,
+from mech.exercises import (chapter2, chapter2_analysis, chapter2_instant_centres, chapter2_quick_return,
+                            chapter2_reactions,
                             chapter2_relative_motion,
                             chapter2_synthesis)
 
@@ -36,7 +37,8 @@ MODULES = {"mech": mech, "planar": pl, "spatial": sp, "spherical": sph, "exercis
            "planar.synthesis": sy, "exercises.chapter2_synthesis": chapter2_synthesis,
            "exercises.chapter2_quick_return": chapter2_quick_return,
            "exercises.chapter2_relative_motion": chapter2_relative_motion,
-           "exercises.chapter2_reactions": chapter2_reactions}
+           "exercises.chapter2_reactions": chapter2_reactions,
+           "exercises.chapter2_instant_centres": chapter2_instant_centres}
 
 
 # ----------------------------------------------------------------------------- bad values
@@ -778,6 +780,10 @@ CASES = {
         lambda n=n: getattr(chapter2_reactions, f"linkage_2_{n}"),
         {"params": ("scalar", lambda v, k=k: {k: v}, k)}, params={k: d})
        for n, k, d in (("17", "AB", 50.0), ("18", "AB", 100.0))},
+    **{f"exercises.chapter2_instant_centres.{f}": E(
+        lambda f=f: getattr(chapter2_instant_centres, f), {"params": ("scalar", lambda v, k=k: {k: v}, k)},
+        params={k: d})
+       for f, k, d in (("mechanisms_2_8", "a", 30.0), ("wheels_2_9", "r1", 20.0), ("centres_2_11", "a", 30.0))},
     "exercises.chapter2_reactions.linkage_2_22": E(lambda: chapter2_reactions.linkage_2_22,
                                                    {"layout": ("scalar", lambda v: {"AB": v}, "AB")},
                                                    layout={"AB": 400.0}),
@@ -1100,7 +1106,7 @@ for _func, _get, _defaults, _read, _extra in _P_FUNCTIONS:
         CASES[f"exercises.{_module}.{_func}#{_name}"] = E(_get, {"p": _p_slot(_defaults, _name)}, p=_defaults,
                                                          **_extra)
 for _number, _defaults in (("2-27", _D27), ("2-28", _D28), ("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32),
-                           *((n, ex.get(n).defaults) for n in ("2-13", "2-15", "2-16", "2-17", "2-18", "2-26"))):
+                           *((n, ex.get(n).defaults) for n in ("2-8", "2-9", "2-11", "2-13", "2-15", "2-16", "2-17", "2-18", "2-26"))):
     CASES[f"exercises.Exercise.solve#{_number}"] = E(lambda n=_number: ex.get(n).solve,
                                                      {k: "scalar" for k in _defaults}, **_defaults)
 

@@ -23,13 +23,15 @@ and 2-30 to 2-32
 are collected here too, and so are 2-13, 2-15 and 2-16 (velocity and acceleration on
 assumed layouts, :mod:`mech.exercises.chapter2_relative_motion`, page
 ``book-analysis-exercises``), and 2-17, 2-18 and 2-26 (reactions in the pairs, with 2-22 in the same module,
-:mod:`mech.exercises.chapter2_reactions`, page ``book-forces-static-forces``). Each solver states its conventions in its solution.
+:mod:`mech.exercises.chapter2_reactions`, page ``book-forces-static-forces``), and the instant-centre
+exercises 2-8, 2-9 and 2-11 (:mod:`mech.exercises.chapter2_instant_centres`, page
+``book-analysis-exercises``). Each solver states its conventions in its solution.
 
 Examples
 --------
 >>> from mech.exercises import chapter2
 >>> [ex.number for ex in chapter2.EXERCISES]
-['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-13', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
+['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-8', '2-9', '2-10', '2-11', '2-13', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
 >>> s = chapter2.EXERCISE_2_2.solve()
 >>> [str(iv) for iv in s["AB for a double-rocker"].value]
 ['(15, 45)', '(55, 115)']
@@ -50,6 +52,7 @@ from mech.planar import FourBar, SliderCrank, grashof
 from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
 from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
+from mech.exercises.chapter2_instant_centres import EXERCISE_2_8, EXERCISE_2_9, EXERCISE_2_11
 from mech.exercises.chapter2_reactions import EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_26
 from mech.exercises.chapter2_relative_motion import EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16
 from mech.exercises.chapter2_synthesis import EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29
@@ -62,7 +65,10 @@ __all__ = [
     "EXERCISE_2_5",
     "EXERCISE_2_6",
     "EXERCISE_2_7",
+    "EXERCISE_2_8",
+    "EXERCISE_2_9",
     "EXERCISE_2_10",
+    "EXERCISE_2_11",
     "EXERCISE_2_13",
     "EXERCISE_2_15",
     "EXERCISE_2_16",
@@ -486,7 +492,8 @@ EXERCISE_2_6 = Exercise(
     sampler=_sample_2_6,
 )
 
-EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7, EXERCISE_2_10,
-             EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16, EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_19,
-             EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23, EXERCISE_2_24, EXERCISE_2_26,
-             EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)
+EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7, EXERCISE_2_8,
+             EXERCISE_2_9, EXERCISE_2_10, EXERCISE_2_11, EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16,
+             EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_22,
+             EXERCISE_2_23, EXERCISE_2_24, EXERCISE_2_26, EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29,
+             EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)
