@@ -1,4 +1,4 @@
-"""Exercises 2-13, 2-15 and 2-16 of chapter 2: velocity and acceleration by relative motion.
+"""Exercises 2-12 to 2-16 of chapter 2: velocity and acceleration by relative motion.
 
 The textbook asks for these by the graphical relative-motion method (相对运动图解法):
 velocity and acceleration polygons drawn to scale. Here each assumed layout is built as a
@@ -26,7 +26,10 @@ from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.exercises.chapter2_analysis import _along, _around, _stroke
 from mech.planar import Guide, Linkage, grashof
 
-__all__ = ["EXERCISE_2_13", "EXERCISE_2_15", "EXERCISE_2_16", "linkage_2_13", "linkage_2_15", "linkage_2_16"]
+_DEG = math.pi / 180.0
+
+__all__ = ["EXERCISE_2_12", "EXERCISE_2_13", "EXERCISE_2_14", "EXERCISE_2_15", "EXERCISE_2_16", "linkage_2_12",
+           "linkage_2_13", "linkage_2_14", "linkage_2_15", "linkage_2_16"]
 
 
 def _sense(w):
@@ -290,7 +293,174 @@ def _sample_2_16(rng):
             "omega1": _around(rng, 100, 0.5), "phi1": float(15 * rng.integers(1, 6))}
 
 
+# ----------------------------------------------------------------------------- 2-12
+_STATEMENT_2_12 = (
+    "In a pantograph (缩放机构) the angular velocity ω1 of member 1 is known. Draw the velocity "
+    "polygon of the mechanism and show the velocity v_I of the point I. (The figure is lost; assumed: "
+    "OB = BA = {a} mm, BE = AD = {b} mm, the guide of E at y = {h} mm, member 1 at θ1 = {theta1}° "
+    "turning at ω1 = {omega1} rad/s.)"
+)
+
+
+def _check_2_12(p):
+    a, b = positive_length("a", p["a"]), positive_length("b", p["b"])
+    h, theta, w = (real_number(n, p[n]) for n in ("h", "theta1", "omega1"))
+    return a, b, h, theta * _DEG, w
+
+
+def linkage_2_12(params=None):
+    """The pantograph of exercise 2-12 on its assumed layout, as a `mech.planar.Linkage`.
+
+    O = 0 is the fixed pivot; member 1 = O-B-A (OB = BA = a, input: its angle); member 4 = BE
+    (b); slider 5 carries E along the line y = h, E to the right of B; member 2 = A-D-I (AD = b,
+    DI = b) and member 3 = ED (a) close the parallelogram B-A-D-E, so O, E, I stay on one line
+    with OI = 2 OE.
+
+    >>> from mech.exercises.chapter2_relative_motion import linkage_2_12
+    >>> linkage_2_12().groups
+    ('crank 1', 'RRP 4-5', 'RRR 2-3')
+    """
+    p = EXERCISE_2_12.params(params)
+    a, b, h, _, _ = _check_2_12(p)
+    if abs(h) >= a + b:
+        raise ValueError(f"Expected |`h`| < `a` + `b` = {a + b!r} so that E can reach its guide, got {h!r}")
+    return (Linkage({"O": 0.0})
+            .crank("1", pivot="O", tip="A", length=2.0 * a)
+            .point("B", link="1", at=a)
+            .rrp(("4", "5"), pin="B", guide=Guide("ground", through=1j * h, angle=0.0), joint="E", length=b, branch=1)
+            .rrr(("2", "3"), pins=("A", "E"), joint="D", lengths=(b, a), branch=-1)
+            .point("I", link="2", at=2.0 * b))
+
+
+def _solve_2_12(p):
+    a, b, h, theta, w = _check_2_12(p)
+    sol = _pose(linkage_2_12(p), theta, w, "2-12")
+    P = {k: complex(v) for k, v in sol.points.items()}
+    if abs(P["D"] - (P["A"] + P["E"] - P["B"])) > 1e-9 * (a + b):
+        raise ValueError("Expected the assumed pantograph to be a parallelogram in this pose, got the other "
+                         "assembly of D")
+    vI, vE = complex(sol.velocities["I"]), complex(sol.velocities["E"])
+    how = "`Linkage.solve(θ1, order=1, omega=ω1)` of the assumed layout"
+    assumptions = (
+        "A pantograph with one fixed pivot O: member 1 is the bar O-B-A (OB = BA = a), member 2 the bar "
+        "A-D-I (AD = DI = b), member 3 the bar ED (= a) and member 4 the bar BE (= b), so that B-A-D-E is "
+        "a parallelogram and O, E, I lie on one line with OI = 2 OE.",
+        "A pantograph alone has two degrees of freedom; here the tracing point E is carried by a "
+        "slider 5 on the horizontal line y = h, so that the driven member 1 fixes the motion.",
+        "O = (0, 0); θ1 is the angle of O->A from +x, counter-clockwise, and so is ω1; E is to the "
+        "right of B.",
+    )
+    part = Part("Velocities", (
+        Result("v_A", abs(complex(sol.velocities["A"])) / 1000.0, "m/s", "ω1·OA, perpendicular to OA"),
+        Result("v_E", vE.real / 1000.0, "m/s", how + "; along the guide, + to the right"),
+        Result("v_D", abs(complex(sol.velocities["D"])) / 1000.0, "m/s", how),
+        Result("v_I", abs(vI) / 1000.0, "m/s", how),
+        Result("direction of v_I", math.atan2(vI.imag, vI.real), "rad", "from +x, counter-clockwise"),
+        Result("v_I / v_E", abs(vI) / abs(vE), "", "the pantograph's scale (OI / OE = 2)"),
+        Result("ω2", float(sol.omegas["2"]), "rad/s", how + " (+ counter-clockwise)"),
+        Result("ω4", float(sol.omegas["4"]), "rad/s", how),
+    ), ("Polygon: pa ⊥ OA with pa = ω1·OA, and b at the midpoint of pa (image of member 1); "
+        "v_E = v_B + v_EB with v_E along the guide and v_EB ⊥ BE; v_D = v_A + v_DA = v_E + v_DE; "
+        "i on the line a d extended with ai = 2 ad (image of member 2). Since O is fixed and OI = 2 OE "
+        "at every instant, pi = 2 pe: I moves parallel to E, twice as fast.",))
+    return Solution("2-12", EXERCISE_2_12.title, dict(p), (), (part,), assumptions=assumptions)
+
+
+def _sample_2_12(rng):
+    return {"a": _around(rng, 100, 0.2), "b": _around(rng, 150, 0.2), "h": _around(rng, 40, 0.5),
+            "theta1": float(rng.integers(30, 81)), "omega1": _around(rng, 10, 0.5)}
+
+
+# ----------------------------------------------------------------------------- 2-14
+_STATEMENT_2_14 = (
+    "The angular velocity ω1 of the crank is known. Sketch the velocity and acceleration polygons "
+    "of the mechanism and show the velocity and acceleration of the point F. (The figure is lost; "
+    "assumed: a four-bar AB = {AB} mm, BC = {BC} mm, CD = {CD} mm, AD = {AD} mm with a coupler point E "
+    "at BE = {BE} mm, {beta}° from BC, driving a slider F through the rod EF = {EF} mm on the line "
+    "y = {yF} mm; the crank at θ1 = {theta1}° turns at ω1 = {omega1} rad/s.)"
+)
+
+_NAMES_2_14 = ("AB", "BC", "CD", "AD", "BE", "EF")
+
+
+def linkage_2_14(params=None):
+    """The six-bar of exercise 2-14 on its assumed layout, as a `mech.planar.Linkage`.
+
+    A = 0, D = AD on +x; crank AB; coupler BC carrying E at BE, ``beta`` counter-clockwise
+    from B->C; rocker DC (C above the frame line); rod EF; slider F on the line y = yF, to the
+    right of E. Links ``crank, coupler, rocker, rod, slider``.
+
+    >>> from mech.exercises.chapter2_relative_motion import linkage_2_14
+    >>> linkage_2_14().groups
+    ('crank crank', 'RRR coupler-rocker', 'RRP rod-slider')
+    """
+    p = EXERCISE_2_14.params(params)
+    ab, bc, cd, ad, be, ef = (positive_length(n, p[n]) for n in _NAMES_2_14)
+    beta, yf = real_number("beta", p["beta"]) * _DEG, real_number("yF", p["yF"])
+    return (Linkage({"A": 0.0, "D": ad})
+            .crank("crank", pivot="A", tip="B", length=ab)
+            .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(bc, cd), branch=1)
+            .point("E", link="coupler", at=be * complex(math.cos(beta), math.sin(beta)))
+            .rrp(("rod", "slider"), pin="E", guide=Guide("ground", through=1j * yf, angle=0.0), joint="F",
+                 length=ef, branch=1))
+
+
+def _solve_2_14(p):
+    theta, w = real_number("theta1", p["theta1"]) * _DEG, real_number("omega1", p["omega1"])
+    sol = _pose(linkage_2_14(p), theta, w, "2-14")
+    v, a = complex(sol.velocities["F"]), complex(sol.accelerations["F"])
+    how = "`Linkage.solve(θ1, order=2, omega=ω1)` of the assumed layout"
+    assumptions = (
+        "A common six-bar: a four-bar ABCD (frame AD, A = (0, 0), D on +x, C above the frame line) whose "
+        "coupler carries a point E, driving a slider F through the rod EF; F moves on a horizontal "
+        "line, to the right of E.",
+        "E is fixed in the coupler at BE from B, at the angle β counter-clockwise from B->C.",
+        "θ1 is the crank angle from +x; the crank turns counter-clockwise at a constant ω1 (α1 = 0).",
+    )
+    part = Part("Velocity and acceleration of F", (
+        Result("v_F", v.real / 1000.0, "m/s", how + "; + to the right"),
+        Result("a_F", a.real / 1000.0, "m/s²", how + "; + to the right"),
+        Result("ω of the coupler", float(sol.omegas["coupler"]), "rad/s", how + " (+ counter-clockwise)"),
+        Result("ω of the rocker", float(sol.omegas["rocker"]), "rad/s", how),
+        Result("ω of the rod EF", float(sol.omegas["rod"]), "rad/s", how),
+        Result("α of the coupler", float(sol.alphas["coupler"]), "rad/s²", how),
+        Result("α of the rocker", float(sol.alphas["rocker"]), "rad/s²", how),
+        Result("α of the rod EF", float(sol.alphas["rod"]), "rad/s²", how),
+    ), ("Sketch: v_C = v_B + v_CB (v_C ⊥ DC, v_CB ⊥ BC); e by the velocity image of BCE (triangle bce "
+        "similar to BCE, turned 90° in the sense of ω2); v_F = v_E + v_FE with v_F along the guide. "
+        "Accelerations: a_C^n + a_C^t = a_B + a_CB^n + a_CB^t, e' by the acceleration image, then "
+        "a_F = a_E + a_FE^n + a_FE^t.",))
+    return Solution("2-14", EXERCISE_2_14.title, dict(p), (), (part,), assumptions=assumptions)
+
+
+def _sample_2_14(rng):
+    return {"AB": _around(rng, 40, 0.2), "BC": _around(rng, 120, 0.1), "CD": _around(rng, 100, 0.1),
+            "AD": _around(rng, 130, 0.1), "BE": _around(rng, 60, 0.2), "beta": float(rng.integers(20, 50)),
+            "EF": _around(rng, 150, 0.1), "yF": _around(rng, 30, 0.5), "theta1": float(15 * rng.integers(0, 24)),
+            "omega1": _around(rng, 10, 0.5)}
+
+
 # ----------------------------------------------------------------------------- registry
+EXERCISE_2_12 = Exercise(
+    number="2-12", title="Velocity polygon of a pantograph and the velocity of its point I", tag="G",
+    statement=_STATEMENT_2_12,
+    parameters=(Parameter("a", 100.0, "mm", "assumed OB = BA"), Parameter("b", 150.0, "mm", "assumed BE = AD = DI"),
+                Parameter("h", 40.0, "mm", "assumed guide line of E"), Parameter("theta1", 60.0, "°", "assumed angle"),
+                Parameter("omega1", 10.0, "rad/s", "assumed ω1")),
+    solver=_solve_2_12, sampler=_sample_2_12,
+)
+EXERCISE_2_14 = Exercise(
+    number="2-14", title="Velocity and acceleration polygons of a six-bar and the motion of F", tag="G",
+    statement=_STATEMENT_2_14,
+    parameters=(Parameter("AB", 40.0, "mm", "assumed crank"), Parameter("BC", 120.0, "mm", "assumed coupler"),
+                Parameter("CD", 100.0, "mm", "assumed rocker"), Parameter("AD", 130.0, "mm", "assumed frame"),
+                Parameter("BE", 60.0, "mm", "assumed coupler point E, from B"),
+                Parameter("beta", 30.0, "°", "assumed angle of BE from BC"),
+                Parameter("EF", 150.0, "mm", "assumed rod"), Parameter("yF", 30.0, "mm", "assumed slider line"),
+                Parameter("theta1", 60.0, "°", "assumed crank angle"),
+                Parameter("omega1", 10.0, "rad/s", "assumed crank speed")),
+    solver=_solve_2_14, sampler=_sample_2_14,
+)
 EXERCISE_2_13 = Exercise(
     number="2-13", title="Hay press: piston displacement over a cycle, velocity and acceleration", tag="A",
     statement=_STATEMENT_2_13,
@@ -320,4 +490,4 @@ EXERCISE_2_16 = Exercise(
     solver=_solve_2_16, sampler=_sample_2_16,
 )
 
-EXERCISES = (EXERCISE_2_13, EXERCISE_2_15, EXERCISE_2_16)
+EXERCISES = (EXERCISE_2_12, EXERCISE_2_13, EXERCISE_2_14, EXERCISE_2_15, EXERCISE_2_16)

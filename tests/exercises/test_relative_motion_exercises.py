@@ -157,7 +157,7 @@ def test_exercise_2_16_coriolis_polygon_closes():
 
 
 # ----------------------------------------------------------------------------- all three
-@pytest.mark.parametrize("number", ["2-13", "2-15", "2-16"])
+@pytest.mark.parametrize("number", ["2-12", "2-13", "2-14", "2-15", "2-16"])
 def test_cli_show_and_variant(number):
     for args in (["show", number], ["variant", number, "--seed", "7"]):
         out = subprocess.run([sys.executable, "-m", "mech.exercises", *args], capture_output=True, text=True,
@@ -170,3 +170,48 @@ def test_variant_reproducible(exercise):
     assert exercise.variant(7) == exercise.variant(7)
     assert np.all([np.isfinite(v) for v in exercise.solve(exercise.variant(7)).values().values()
                    if isinstance(v, float)])
+
+
+# ----------------------------------------------------------------------------- 2-12 and 2-14
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_exercise_2_12_pantograph_scale(seed):
+    """v_I from I = 2 E (the pantograph's similarity about the fixed pivot O), differentiated."""
+    ex = rm.EXERCISE_2_12
+    p = ex.defaults if seed is None else ex.variant(seed)
+    s = ex.solve(p)
+    a, b, h = (mp.mpf(p[k]) for k in ("a", "b", "h"))
+
+    def E(t):
+        B = a * mp.expjpi(t / mp.pi)
+        return _line_y(B, b, h)
+    t = mp.radians(p["theta1"])
+    vE = mp.diff(lambda u: E(u).real, t) * p["omega1"]
+    assert s["v_E"].value == pytest.approx(float(vE) / 1000, rel=1e-10)
+    assert s["v_I"].value == pytest.approx(float(2 * abs(vE)) / 1000, rel=1e-10)
+    assert math.cos(s["direction of v_I"].value) == pytest.approx(float(mp.sign(vE)), abs=1e-12)
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_exercise_2_14_against_hand_closure(seed):
+    ex = rm.EXERCISE_2_14
+    p = ex.defaults if seed is None else ex.variant(seed)
+    s = ex.solve(p)
+    P = {k: mp.mpf(v) for k, v in p.items()}
+
+    def xF(t):
+        B = P["AB"] * mp.expjpi(t / mp.pi)
+        C = _circles(B, P["BC"], mp.mpc(P["AD"]), P["CD"], 1)
+        E = B + (C - B) / P["BC"] * P["BE"] * mp.expjpi(P["beta"] / 180)
+        return _line_y(E, P["EF"], P["yF"]).real
+    _, v, a = _rates(xF, mp.radians(p["theta1"]), p["omega1"])
+    assert s["v_F"].value == pytest.approx(float(v) / 1000, rel=1e-9, abs=1e-12)
+    assert s["a_F"].value == pytest.approx(float(a) / 1000, rel=1e-8, abs=1e-10)
+
+
+def test_exercise_2_14_polygons_close():
+    sol = rm.linkage_2_14().solve(math.radians(60.0), order=2, omega=10.0)
+    motions = [relative_motion(sol, "C", base="B", link="coupler", pivot="D", pivot_link="rocker"),
+               relative_motion(sol, "E", base="B", link="coupler"),
+               relative_motion(sol, "F", base="E", link="rod")]
+    assert velocity_polygon(motions).closure < 1e-9
+    assert acceleration_polygon(motions).closure < 1e-7
