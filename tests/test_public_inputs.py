@@ -780,7 +780,7 @@ CASES = {
     **{f"exercises.chapter2_reactions.linkage_2_{n}": E(
         lambda n=n: getattr(chapter2_reactions, f"linkage_2_{n}"),
         {"params": ("scalar", lambda v, k=k: {k: v}, k)}, params={k: d})
-       for n, k, d in (("17", "AB", 50.0), ("18", "AB", 100.0))},
+       for n, k, d in (("17", "AB", 50.0), ("18", "AB", 100.0), ("25", "R", 40.0))},
     **{f"exercises.chapter2_instant_centres.{f}": E(
         lambda f=f: getattr(chapter2_instant_centres, f), {"params": ("scalar", lambda v, k=k: {k: v}, k)},
         params={k: d})
@@ -1107,7 +1107,7 @@ for _func, _get, _defaults, _read, _extra in _P_FUNCTIONS:
         CASES[f"exercises.{_module}.{_func}#{_name}"] = E(_get, {"p": _p_slot(_defaults, _name)}, p=_defaults,
                                                          **_extra)
 for _number, _defaults in (("2-27", _D27), ("2-28", _D28), ("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32),
-                           *((n, ex.get(n).defaults) for n in ("2-1", "2-8", "2-9", "2-11", "2-12", "2-13", "2-14", "2-15", "2-16", "2-17", "2-18", "2-26"))):
+                           *((n, ex.get(n).defaults) for n in ("2-1", "2-8", "2-9", "2-11", "2-12", "2-13", "2-14", "2-15", "2-16", "2-17", "2-18", "2-25", "2-26"))):
     CASES[f"exercises.Exercise.solve#{_number}"] = E(lambda n=_number: ex.get(n).solve,
                                                      {k: "scalar" for k in _defaults}, **_defaults)
 

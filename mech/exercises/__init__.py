@@ -1,5 +1,4 @@
-"""Textbook exercises with generated solutions and variants (chapter 2: 2-1 to 2-24
-and 2-26 to 2-32).
+"""Textbook exercises with generated solutions and variants (chapter 2: 2-1 to 2-32).
 
 Each exercise is an :class:`Exercise` record: a statement with named givens (the
 textbook's numbers by default), a solver built on :mod:`mech.planar`, and a generator of
@@ -7,7 +6,7 @@ other valid numbers. Solutions render themselves as Markdown.
 
 >>> import mech.exercises as ex
 >>> list(ex.EXERCISES)
-['2-1', '2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-8', '2-9', '2-10', '2-11', '2-12', '2-13', '2-14', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
+['2-1', '2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-8', '2-9', '2-10', '2-11', '2-12', '2-13', '2-14', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-25', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
 >>> sol = ex.get("2-3").solve()
 >>> round(float(sol["time ratio K"].value), 4)
 1.2299
@@ -58,7 +57,7 @@ def get(number):
     >>> get("2-99")
     Traceback (most recent call last):
     ...
-    ValueError: Expected `number` among 2-1, 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-8, 2-9, 2-10, 2-11, 2-12, 2-13, 2-14, 2-15, 2-16, 2-17, 2-18, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-26, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-99'
+    ValueError: Expected `number` among 2-1, 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-8, 2-9, 2-10, 2-11, 2-12, 2-13, 2-14, 2-15, 2-16, 2-17, 2-18, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-25, 2-26, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-99'
     """
     key = number.strip() if isinstance(number, str) else None
     if key not in EXERCISES:

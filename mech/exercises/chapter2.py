@@ -22,7 +22,7 @@ and 2-30 to 2-32
 (:mod:`mech.exercises.chapter2_quick_return`, page ``book-synthesis-quick-return``)
 are collected here too, and so are 2-12 to 2-16 (velocity and acceleration on
 assumed layouts, :mod:`mech.exercises.chapter2_relative_motion`, page
-``book-analysis-exercises``), and 2-17, 2-18 and 2-26 (reactions in the pairs, with 2-22 in the same module,
+``book-analysis-exercises``), and 2-17, 2-18, 2-25 and 2-26 (reactions in the pairs, with 2-22 in the same module,
 :mod:`mech.exercises.chapter2_reactions`, page ``book-forces-static-forces``), and the instant-centre
 exercises 2-8, 2-9 and 2-11 (:mod:`mech.exercises.chapter2_instant_centres`, page
 ``book-analysis-exercises``). Each solver states its conventions in its solution.
@@ -31,7 +31,7 @@ Examples
 --------
 >>> from mech.exercises import chapter2
 >>> [ex.number for ex in chapter2.EXERCISES]
-['2-1', '2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-8', '2-9', '2-10', '2-11', '2-12', '2-13', '2-14', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
+['2-1', '2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-8', '2-9', '2-10', '2-11', '2-12', '2-13', '2-14', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-25', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
 >>> s = chapter2.EXERCISE_2_2.solve()
 >>> [str(iv) for iv in s["AB for a double-rocker"].value]
 ['(15, 45)', '(55, 115)']
@@ -53,7 +53,7 @@ from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
 from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
 from mech.exercises.chapter2_instant_centres import EXERCISE_2_8, EXERCISE_2_9, EXERCISE_2_11
-from mech.exercises.chapter2_reactions import EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_26
+from mech.exercises.chapter2_reactions import EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_25, EXERCISE_2_26
 from mech.exercises.chapter2_relative_motion import (EXERCISE_2_12, EXERCISE_2_13, EXERCISE_2_14, EXERCISE_2_15,
                                                      EXERCISE_2_16)
 from mech.exercises.chapter2_synthesis import EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29
@@ -84,6 +84,7 @@ __all__ = [
     "EXERCISE_2_22",
     "EXERCISE_2_23",
     "EXERCISE_2_24",
+    "EXERCISE_2_25",
     "EXERCISE_2_26",
     "EXERCISE_2_27",
     "EXERCISE_2_28",
@@ -589,5 +590,5 @@ EXERCISE_2_6 = Exercise(
 EXERCISES = (EXERCISE_2_1, EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7, EXERCISE_2_8,
              EXERCISE_2_9, EXERCISE_2_10, EXERCISE_2_11, EXERCISE_2_12, EXERCISE_2_13, EXERCISE_2_14,
              EXERCISE_2_15, EXERCISE_2_16, EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_19, EXERCISE_2_20,
-             EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23, EXERCISE_2_24, EXERCISE_2_26, EXERCISE_2_27,
+             EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23, EXERCISE_2_24, EXERCISE_2_25, EXERCISE_2_26, EXERCISE_2_27,
              EXERCISE_2_28, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)

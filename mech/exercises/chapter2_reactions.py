@@ -1,4 +1,4 @@
-"""Exercises 2-17, 2-18, 2-22 and 2-26 of chapter 2: reactions in the pairs, by computation.
+"""Exercises 2-17, 2-18, 2-22, 2-25 and 2-26 of chapter 2: reactions in the pairs, by computation.
 
 The textbook solves these with force polygons drawn by hand and, in 2-26, with the lines
 of action of the total reactions tangent to friction circles. The figures are lost (tag
@@ -31,8 +31,8 @@ from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.exercises.chapter2_analysis import _around
 from mech.planar import Guide, Linkage, friction_circle, static_forces
 
-__all__ = ["EXERCISE_2_17", "EXERCISE_2_18", "EXERCISE_2_22", "EXERCISE_2_26", "LAYOUT_2_22", "THETAS_2_26",
-           "linkage_2_17", "linkage_2_18", "linkage_2_22", "linkage_2_26"]
+__all__ = ["EXERCISE_2_17", "EXERCISE_2_18", "EXERCISE_2_22", "EXERCISE_2_25", "EXERCISE_2_26", "LAYOUT_2_22",
+           "THETAS_2_26", "linkage_2_17", "linkage_2_18", "linkage_2_22", "linkage_2_25", "linkage_2_26"]
 
 _DEG = math.pi / 180.0
 
@@ -397,6 +397,114 @@ EXERCISE_2_22 = Exercise(
 )
 
 
+# ----------------------------------------------------------------------------- 2-25
+_STATEMENT_2_25 = (
+    "In a disc cam with an oscillating follower the cam 1 turns counter-clockwise, and G = {G} N is "
+    "the external load on the follower 2. The equivalent friction coefficients of all the pairs and "
+    "the shaft radii are known; weights and inertia forces are neglected. Find the lines of action of "
+    "the total reactions R12, R32 and R31, and the efficiency in the position shown. (Assumed: a "
+    "circular disc of radius {R} mm whose centre is {e} mm from the shaft, at {theta}° from the line "
+    "to the follower's pivot {AD} mm away; a knife-edge follower {L} mm long with G at {DH} mm from "
+    "its pivot; μ = {mu} at every pair, shafts of radius {rs} mm.)"
+)
+
+
+def linkage_2_25(params=None):
+    """The equivalent linkage of exercise 2-25's assumed cam (high pair replaced by a four-bar).
+
+    A = 0 is the cam shaft and D = AD on +x the follower's pivot. The disc's centre of
+    curvature O (its geometric centre) is a point of the cam at e from A (link ``"cam"``,
+    input: the angle of A->O); the knife edge K (the follower profile's centre of curvature)
+    is a point of the follower DK. The fictitious link ``"contact"`` = OK, of length R, joins
+    the two centres of curvature; K is above the line from O to D. H is where G acts, on DK
+    at DH from D. Returns ``(linkage, theta)``.
+
+    >>> from mech.exercises.chapter2_reactions import linkage_2_25
+    >>> linkage_2_25()[0].groups
+    ('crank cam', 'RRR contact-follower')
+    """
+    p = EXERCISE_2_25.params(params)
+    R, e, ad, L, dh = (positive_length(n, p[n]) for n in ("R", "e", "AD", "L", "DH"))
+    if e >= R:
+        raise ValueError(f"Expected `e` < `R` = {R!r} (the shaft inside the disc), got {e!r}")
+    lk = (Linkage({"A": 0.0, "D": ad})
+          .crank("cam", pivot="A", tip="O", length=e)
+          .rrr(("contact", "follower"), pins=("O", "D"), joint="K", lengths=(R, L), branch=1)
+          .point("H", link="follower", at=dh))
+    return lk, real_number("theta", p["theta"]) * _DEG
+
+
+def _solve_2_25(p):
+    G = positive_length("G", p["G"])
+    R, rs = positive_length("R", p["R"]), positive_length("rs", p["rs"])
+    mu = real_number("mu", p["mu"])
+    if not 0.0 <= mu < 1.0:
+        raise ValueError(f"Expected 0 <= `mu` < 1, got {mu!r}")
+    lk, theta = linkage_2_25(p)
+    sol = _solved(lk, theta, "2-25")
+    phi = math.atan(mu)
+    rho_shaft = float(friction_circle(mu, rs))
+    # the contact's friction: a friction circle of radius R sin(phi) about the disc's centre O makes the
+    # coupler's line pass through K at the friction angle to the normal KO (exact for a circular disc)
+    rho = {"A": rho_shaft, "D": rho_shaft, "O": R * math.sin(phi), "K": 0.0}
+    w2 = float(sol.omegas["follower"])
+    if not float(sol.velocities["H"].imag) > 0.0:
+        raise ValueError(f"Expected a pose of the rise (the follower lifted against G), got the return at "
+                         f"`theta` = {p['theta']!r}°: there G drives and the cam only holds the follower back")
+    load = {"H": -1j * G}                                # G presses the follower down onto the cam
+    sf = static_forces(sol, load, rho=rho)
+    if bool(np.any(sf.self_locking)):
+        raise ValueError("Expected the cam to drive the follower in the pose analysed, got self-locking")
+    P = {k: complex(v) for k, v in sol.points.items()}
+    normal = (P["K"] - P["O"]) / R
+    out = []
+    for label, key, pin in (("R12", ("contact", "follower"), "K"), ("R32", ("ground", "follower"), "D"),
+                            ("R31", ("ground", "cam"), "A")):
+        F = complex(sf.reactions[key])
+        line = complex(sf.lines[key])
+        out.append(Result(f"{label} size", abs(F), "N", "`static_forces` on the equivalent linkage"))
+        out.append(Result(f"{label} direction", math.atan2(F.imag, F.real), "rad", "from +x, counter-clockwise"))
+        arm = float(np.imag(np.conj(line - P[pin]) * F)) / abs(F)
+        out.append(Result(f"{label} moment arm about {pin}", arm, "mm", "+: the force turns counter-clockwise "
+                          "about the point; ±ρ at a journal, 0 at the contact"))
+    F12 = complex(sf.reactions[("contact", "follower")])
+    tilt = math.atan2(np.imag(np.conj(normal) * F12), np.real(np.conj(normal) * F12))
+    out += [Result("R12 angle from the common normal", tilt, "rad", "± the friction angle φ = atan μ"),
+            Result("driving moment M1", float(sf.balancing) / 1000.0, "N·m", "`static_forces(...).balancing`"),
+            Result("driving moment without friction", float(sf.frictionless["cam"]) / 1000.0, "N·m",
+                   "`static_forces(...).frictionless`"),
+            Result("efficiency η", float(sf.efficiency), "", "M1 without friction / M1 (eq. 2-24)")]
+    assumptions = (
+        f"The cam 1 is a circular disc of radius R = {R:g} mm turning counter-clockwise about the shaft A "
+        f"= (0, 0); its centre O is e = {p['e']:g} mm from A at θ = {p['theta']:g}° from A->D. The follower 2 "
+        f"is a knife-edge lever pivoted at D = ({p['AD']:g}, 0) mm, DK = {p['L']:g} mm, touching the disc "
+        "above the line OD. The frame is 3.",
+        f"G = {G:g} N acts vertically downwards at H on DK, {p['DH']:g} mm from D, pressing the follower "
+        "onto the cam; the pose is on the rise, so the cam lifts the follower against G.",
+        f"Every pair has the equivalent friction coefficient μ = {mu:g}; both shafts have radius "
+        f"{rs:g} mm, so their friction circles have ρ = μ r = {rho_shaft:g} mm; the contact's friction "
+        f"angle is φ = atan μ = {math.degrees(phi):.4f}°.",
+        "Equivalent linkage (高副低代): the contact is replaced by a link OK joining the centres of "
+        "curvature of the two profiles (the disc's centre O and the knife edge K), pinned to the cam at O "
+        "and to the follower at K. The contact's sliding friction becomes a friction circle of radius "
+        "R sin φ about O (none at K), which makes the link's force pass through K at the angle φ to the "
+        "normal KO, on the side that opposes the follower's sliding on the disc.",
+    )
+    part = Part("Lines of action and efficiency", tuple(out), (
+        f"R12 passes through the contact K, tilted by φ from the common normal against the sliding; R32 "
+        f"is tangent to the friction circle at D on the side that opposes the follower's turning "
+        f"(ω2 = {w2:.4f} per unit ω1); R31 = R21 is tangent to the friction circle at A, opposing the "
+        "cam's turning.",))
+    return Solution("2-25", EXERCISE_2_25.title, dict(p), (), (part,), assumptions=assumptions)
+
+
+def _sample_2_25(rng):
+    return {"G": float(rng.integers(5, 50) * 20), "R": _around(rng, 40, 0.15), "e": _around(rng, 15, 0.2),
+            "AD": _around(rng, 120, 0.1), "L": _around(rng, 100, 0.1), "DH": _around(rng, 60, 0.2),
+            "theta": float(15 * rng.integers(1, 24)), "mu": round(float(rng.uniform(0.05, 0.2)), 2),
+            "rs": float(rng.integers(5, 15))}
+
+
 # ----------------------------------------------------------------------------- registry
 EXERCISE_2_17 = Exercise(
     number="2-17", title="Reactions and the balancing force of a six-bar with a slider", tag="G",
@@ -412,6 +520,18 @@ EXERCISE_2_18 = Exercise(
                 Parameter("theta", 60.0, "°", "assumed crank angle")),
     solver=_solve_2_18, sampler=_sample_2_18,
 )
+EXERCISE_2_25 = Exercise(
+    number="2-25", title="Total reactions and efficiency of a cam with an oscillating follower", tag="G",
+    statement=_STATEMENT_2_25,
+    parameters=(Parameter("G", 200.0, "N", "load on the follower"), Parameter("R", 40.0, "mm", "assumed disc radius"),
+                Parameter("e", 15.0, "mm", "assumed eccentricity AO"),
+                Parameter("theta", 300.0, "°", "assumed cam angle from A->D"),
+                Parameter("AD", 120.0, "mm", "assumed shaft to follower pivot"),
+                Parameter("L", 100.0, "mm", "assumed follower DK"), Parameter("DH", 60.0, "mm", "assumed point of G"),
+                Parameter("mu", 0.15, "", "assumed equivalent friction coefficient"),
+                Parameter("rs", 10.0, "mm", "assumed shaft radius")),
+    solver=_solve_2_25, sampler=_sample_2_25,
+)
 EXERCISE_2_26 = Exercise(
     number="2-26", title="Lines of action of the total reactions in a slider-driven slider-crank", tag="G",
     statement=_STATEMENT_2_26,
@@ -423,4 +543,4 @@ EXERCISE_2_26 = Exercise(
     solver=_solve_2_26, sampler=_sample_2_26,
 )
 
-EXERCISES = (EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_26)
+EXERCISES = (EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_25, EXERCISE_2_26)

@@ -221,9 +221,66 @@ def test_exercise_2_26_against_global_free_body(seed):
         assert N != 0
 
 
-@pytest.mark.parametrize("number", ["2-17", "2-18", "2-26"])
+@pytest.mark.parametrize("number", ["2-17", "2-18", "2-25", "2-26"])
 def test_cli_show_and_variant(number):
     for args in (["show", number], ["variant", number, "--seed", "7"]):
         out = subprocess.run([sys.executable, "-m", "mech.exercises", *args], capture_output=True, text=True,
                              check=True).stdout
         assert f"Solution of exercise {number}" in out and "Assumed layout" in out
+
+
+# ----------------------------------------------------------------------------- 2-25
+def _hand_2_25(p):
+    """The cam and the follower as two free bodies with the contact force written directly.
+
+    R12 = N n + f t at K, n the normal from O to K, |f| = mu N against the follower's sliding on
+    the disc; journal friction couples rho |R| at A and D against the turning; no equivalent
+    linkage is used.
+    """
+    P = {k: mp.mpf(v) for k, v in p.items()}
+    A, D = mp.mpc(0), mp.mpc(P["AD"])
+    rho = P["mu"] * P["rs"]
+
+    def pose(t):
+        O = P["e"] * mp.expjpi(t / mp.pi)
+        K = _circles(O, P["R"], D, P["L"], 1)
+        return O, K
+    t0 = mp.radians(P["theta"])
+    O, K = pose(t0)
+    H = D + (K - D) * P["DH"] / P["L"]
+    w2 = mp.diff(lambda t: mp.arg(pose(t)[1] - D), t0)
+    vK2 = mp.diff(lambda t: pose(t)[1].real, t0) + 1j * mp.diff(lambda t: pose(t)[1].imag, t0)
+    vK1 = 1j * K                                   # the cam's point at K, omega1 = 1
+    n = (K - O) / abs(K - O)
+    tng = 1j * n
+    slide = (vK2 - vK1).real * tng.real + (vK2 - vK1).imag * tng.imag
+    G = mp.mpc(0, -P["G"])
+
+    def eqs(N, Dx, Dy, Ax, Ay, M1):
+        R12 = N * n - mp.sign(slide) * P["mu"] * N * tng
+        R32, R31 = mp.mpc(Dx, Dy), mp.mpc(Ax, Ay)
+        f = R12 + R32 + G
+        m = _cross(K - D, R12) + _cross(H - D, G) - mp.sign(w2) * rho * abs(R32)
+        g = R31 - R12
+        mc = _cross(K - A, -R12) - rho * abs(R31) + M1
+        return [f.real, f.imag, m, g.real, g.imag, mc]
+    guess = [100, 0, 100, 0, 100, 1000]
+    x = mp.findroot(eqs, guess)
+    N, Dx, Dy, Ax, Ay, M1 = x
+    R12 = N * n - mp.sign(slide) * P["mu"] * N * tng
+    return {"R12": R12, "R32": mp.mpc(Dx, Dy), "R31": mp.mpc(Ax, Ay), "M1": M1}
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_exercise_2_25_against_direct_contact_free_bodies(seed):
+    ex = cr.EXERCISE_2_25
+    p = ex.defaults if seed is None else ex.variant(seed)
+    s = ex.solve(p)
+    hand = _hand_2_25(p)
+    assert s["driving moment M1"].value * 1000 == pytest.approx(float(hand["M1"]), rel=1e-9)
+    for label in ("R12", "R32", "R31"):
+        R = complex(hand[label])
+        assert s[f"{label} size"].value == pytest.approx(abs(R), rel=1e-9)
+        assert s[f"{label} direction"].value == pytest.approx(math.atan2(R.imag, R.real), abs=1e-9)
+    assert abs(s["R12 angle from the common normal"].value) == pytest.approx(math.atan(p["mu"]), rel=1e-12)
+    assert s["R12 moment arm about K"].value == pytest.approx(0.0, abs=1e-9)
