@@ -236,19 +236,19 @@ def linkage_2_16(params=None):
     A = 0 (crank pivot), D = x_D + i y_D; crank AB (input: the angle of A->B from +x,
     counter-clockwise; the book's φ1 is its negative); coupler BC, rocker DC with C to the
     right of B->D (``branch=-1``); block 4 pinned at F slides along the rocker's line DC;
-    slider 5 carries F along the vertical line x = x_F. Links ``crank, coupler, rocker,
-    block4, slider5``.
+    slider 5 carries F along the vertical line x = x_F. Links ``1`` (crank), ``2`` (coupler),
+    ``3`` (rocker), ``4`` (block), ``5`` (slider), numbered as in the text.
 
     >>> from mech.exercises.chapter2_relative_motion import linkage_2_16
     >>> linkage_2_16().groups
-    ('crank crank', 'RRR coupler-rocker', 'PRP block4-slider5')
+    ('crank 1', 'RRR 2-3', 'PRP 4-5')
     """
     p = EXERCISE_2_16.params(params)
     ab, bc, cd, xf, xd, yd, _, _ = _check_2_16(p)
     return (Linkage({"A": 0.0, "D": complex(xd, yd)})
-            .crank("crank", pivot="A", tip="B", length=ab)
-            .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(bc, cd), branch=-1)
-            .prp(("block4", "slider5"), guides=(Guide("rocker", 0j, 0.0), Guide("ground", complex(xf), math.pi / 2)),
+            .crank("1", pivot="A", tip="B", length=ab)
+            .rrr(("2", "3"), pins=("B", "D"), joint="C", lengths=(bc, cd), branch=-1)
+            .prp(("4", "5"), guides=(Guide("3", 0j, 0.0), Guide("ground", complex(xf), math.pi / 2)),
                  joint="F"))
 
 
@@ -276,12 +276,12 @@ def _solve_2_16(p):
         Result("v_F", v.imag / 1000.0, "m/s", how + "; + is upward"),
         Result("a_F", a.imag / 1000.0, "m/s²", how + "; + is upward"),
         Result("y_F", float(sol.points["F"].imag), "mm", how),
-        Result("ω of the rocker DC", float(sol.omegas["rocker"]), "rad/s", how + " (+ counter-clockwise)"),
-        Result("α of the rocker DC", float(sol.alphas["rocker"]), "rad/s²", how),
-        Result("sliding speed of block 4 on DC", float(sol.slides[("block4", "rocker")].v) / 1000.0, "m/s", how),
+        Result("ω of the rocker DC", float(sol.omegas["3"]), "rad/s", how + " (+ counter-clockwise)"),
+        Result("α of the rocker DC", float(sol.alphas["3"]), "rad/s²", how),
+        Result("sliding speed of block 4 on DC", float(sol.slides[("4", "3")].v) / 1000.0, "m/s", how),
     ), ("Polygons: v_C = v_B + v_CB (v_C ⊥ DC); then the coincident points F5 and F3: "
-        "v_F5 = v_F3 + v_F5F3 with v_F5 vertical and v_F5F3 along DC, and "
-        "a_F5 = a_F3 + a^k_F5F3 + a^r_F5F3 with the Coriolis term 2 ω3 v_F5F3.",
+        "v_F4 = v_F3 + v_F4F3 with v_F4 = v_F5 vertical and v_F4F3 along DC, and "
+        "a_F4 = a_F3 + a^k_F4F3 + a^r_F4F3 with the Coriolis term 2 ω3 v_F4F3.",
         f"The four-bar is a {kind} (AB + CD > AD + BC): the crank cannot turn fully, which does "
         "not matter for one instant but casts doubt on the reading of the lost figure.",))
     return Solution("2-16", EXERCISE_2_16.title, dict(p), (), (part,), assumptions=assumptions)

@@ -150,8 +150,8 @@ def test_exercise_2_16_coriolis_polygon_closes():
     p = rm.EXERCISE_2_16.defaults
     sol = rm.linkage_2_16().solve(-math.radians(p["phi1"]), order=2, omega=-p["omega1"])
     from mech.planar import coincident_motion
-    motions = [relative_motion(sol, "C", base="B", link="coupler", pivot="D", pivot_link="rocker"),
-               coincident_motion(sol, "F", carrier="block4", link="rocker", pivot="D")]
+    motions = [relative_motion(sol, "C", base="B", link="2", pivot="D", pivot_link="3"),
+               coincident_motion(sol, "F", carrier="4", link="3", pivot="D")]
     assert velocity_polygon(motions).closure < 1e-7
     assert acceleration_polygon(motions).closure < 1e-3
 
