@@ -30,12 +30,16 @@ import mech.spatial as sp
 import mech.spherical as sph
 import mech.planar.synthesis as sy
 import mech.atlas as at
-from mech.exercises import chapter2, chapter2_analysis, chapter2_quick_return, chapter2_synthesis
+from mech.exercises import (chapter2, chapter2_analysis, chapter2_instant_centres, chapter2_quick_return,
+                            chapter2_reactions, chapter2_relative_motion, chapter2_synthesis)
 
 MODULES = {"mech": mech, "planar": pl, "spatial": sp, "spherical": sph, "exercises": ex,
            "exercises.chapter2": chapter2, "exercises.chapter2_analysis": chapter2_analysis,
            "planar.synthesis": sy, "exercises.chapter2_synthesis": chapter2_synthesis,
-           "exercises.chapter2_quick_return": chapter2_quick_return, "atlas": at}
+           "exercises.chapter2_quick_return": chapter2_quick_return,
+           "exercises.chapter2_relative_motion": chapter2_relative_motion,
+           "exercises.chapter2_reactions": chapter2_reactions,
+           "exercises.chapter2_instant_centres": chapter2_instant_centres, "atlas": at}
 
 
 # ----------------------------------------------------------------------------- bad values
@@ -775,6 +779,24 @@ CASES = {
                                                       params={"AB": 30.0}),
     "exercises.chapter2_analysis.linkage_2_5": E(lambda: chapter2_analysis.linkage_2_5, {"y": "scalar"}, y=10.0),
     "exercises.chapter2_analysis.linkage_2_7": E(lambda: chapter2_analysis.linkage_2_7, {"bc": "scalar?"}, bc=80.0),
+    **{f"exercises.chapter2_relative_motion.linkage_2_{n}": E(
+        lambda n=n: getattr(chapter2_relative_motion, f"linkage_2_{n}"),
+        {"params": ("scalar", lambda v, k=k: {k: v}, k)}, params={k: d})
+       for n, k, d in (("12", "a", 100.0), ("13", "OA", 150.0), ("14", "AB", 40.0), ("15", "AB", 150.0),
+                       ("16", "AB", 200.0))},
+    **{f"exercises.chapter2_reactions.linkage_2_{n}": E(
+        lambda n=n: getattr(chapter2_reactions, f"linkage_2_{n}"),
+        {"params": ("scalar", lambda v, k=k: {k: v}, k)}, params={k: d})
+       for n, k, d in (("17", "AB", 50.0), ("18", "AB", 100.0), ("25", "R", 40.0))},
+    **{f"exercises.chapter2_instant_centres.{f}": E(
+        lambda f=f: getattr(chapter2_instant_centres, f), {"params": ("scalar", lambda v, k=k: {k: v}, k)},
+        params={k: d})
+       for f, k, d in (("mechanisms_2_8", "a", 30.0), ("wheels_2_9", "r1", 20.0), ("centres_2_11", "a", 30.0))},
+    "exercises.chapter2_reactions.linkage_2_22": E(lambda: chapter2_reactions.linkage_2_22,
+                                                   {"layout": ("scalar", lambda v: {"AB": v}, "AB")},
+                                                   layout={"AB": 400.0}),
+    "exercises.chapter2_reactions.linkage_2_26": E(lambda: chapter2_reactions.linkage_2_26, {"theta": "scalar"},
+                                                   theta=45.0),
 }
 
 #: Public classes whose constructors are not walked, and why: the package builds them (result
@@ -1091,7 +1113,8 @@ for _func, _get, _defaults, _read, _extra in _P_FUNCTIONS:
     for _name in _read:
         CASES[f"exercises.{_module}.{_func}#{_name}"] = E(_get, {"p": _p_slot(_defaults, _name)}, p=_defaults,
                                                          **_extra)
-for _number, _defaults in (("2-27", _D27), ("2-28", _D28), ("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32)):
+for _number, _defaults in (("2-27", _D27), ("2-28", _D28), ("2-29", _D29), ("2-30", _D30), ("2-31", _D31), ("2-32", _D32),
+                           *((n, ex.get(n).defaults) for n in ("2-1", "2-8", "2-9", "2-11", "2-12", "2-13", "2-14", "2-15", "2-16", "2-17", "2-18", "2-25", "2-26"))):
     CASES[f"exercises.Exercise.solve#{_number}"] = E(lambda n=_number: ex.get(n).solve,
                                                      {k: "scalar" for k in _defaults}, **_defaults)
 

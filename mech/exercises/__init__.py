@@ -1,5 +1,4 @@
-"""Textbook exercises with generated solutions and variants (chapter 2: 2-2 to 2-7, 2-10,
-2-19 to 2-24, 2-27 to 2-32).
+"""Textbook exercises with generated solutions and variants (chapter 2: 2-1 to 2-32).
 
 Each exercise is an :class:`Exercise` record: a statement with named givens (the
 textbook's numbers by default), a solver built on :mod:`mech.planar`, and a generator of
@@ -7,7 +6,7 @@ other valid numbers. Solutions render themselves as Markdown.
 
 >>> import mech.exercises as ex
 >>> list(ex.EXERCISES)
-['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
+['2-1', '2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-8', '2-9', '2-10', '2-11', '2-12', '2-13', '2-14', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-25', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
 >>> sol = ex.get("2-3").solve()
 >>> round(float(sol["time ratio K"].value), 4)
 1.2299
@@ -19,7 +18,8 @@ From the command line: ``python -m mech.exercises list``, ``... show 2-3``,
 
 from types import MappingProxyType
 
-from mech.exercises import chapter2, chapter2_analysis
+from mech.exercises import (chapter2, chapter2_analysis, chapter2_instant_centres, chapter2_reactions,
+                            chapter2_relative_motion)
 from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
 
 __all__ = [
@@ -32,6 +32,9 @@ __all__ = [
     "Solution",
     "chapter2",
     "chapter2_analysis",
+    "chapter2_instant_centres",
+    "chapter2_reactions",
+    "chapter2_relative_motion",
     "get",
 ]
 
@@ -51,10 +54,10 @@ def get(number):
     --------
     >>> get("2-2").title
     'Ranges of the crank length for each type of four-bar'
-    >>> get("2-9")
+    >>> get("2-99")
     Traceback (most recent call last):
     ...
-    ValueError: Expected `number` among 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-10, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-9'
+    ValueError: Expected `number` among 2-1, 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-8, 2-9, 2-10, 2-11, 2-12, 2-13, 2-14, 2-15, 2-16, 2-17, 2-18, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-25, 2-26, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32, got '2-99'
     """
     key = number.strip() if isinstance(number, str) else None
     if key not in EXERCISES:

@@ -15,18 +15,23 @@ are solved on an assumed layout, stated first in each solution, by the general s
 shown on ``book-analysis-exercises``; they live in :mod:`mech.exercises.chapter2_analysis`
 and are collected here. The force exercises 2-19, 2-20, 2-21, 2-23 and 2-24 live in
 :mod:`mech.exercises.chapter2_forces` (page ``book-forces-exercises``) and 2-22 in
-:mod:`mech.exercises.chapter2_statics` (page ``book-forces-static-forces``). The synthesis
+:mod:`mech.exercises.chapter2_reactions` (page ``book-forces-static-forces``). The synthesis
 exercises 2-27 (page ``synthesis-guidance``), 2-28 and 2-29
 (:mod:`mech.exercises.chapter2_synthesis`, page ``book-synthesis-function-generation``)
 and 2-30 to 2-32
 (:mod:`mech.exercises.chapter2_quick_return`, page ``book-synthesis-quick-return``)
-are collected here too. Each solver states its conventions in its solution.
+are collected here too, and so are 2-12 to 2-16 (velocity and acceleration on
+assumed layouts, :mod:`mech.exercises.chapter2_relative_motion`, page
+``book-analysis-exercises``), and 2-17, 2-18, 2-25 and 2-26 (reactions in the pairs, with 2-22 in the same module,
+:mod:`mech.exercises.chapter2_reactions`, page ``book-forces-static-forces``), and the instant-centre
+exercises 2-8, 2-9 and 2-11 (:mod:`mech.exercises.chapter2_instant_centres`, page
+``book-analysis-exercises``). Each solver states its conventions in its solution.
 
 Examples
 --------
 >>> from mech.exercises import chapter2
 >>> [ex.number for ex in chapter2.EXERCISES]
-['2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-10', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
+['2-1', '2-2', '2-3', '2-4', '2-5', '2-6', '2-7', '2-8', '2-9', '2-10', '2-11', '2-12', '2-13', '2-14', '2-15', '2-16', '2-17', '2-18', '2-19', '2-20', '2-21', '2-22', '2-23', '2-24', '2-25', '2-26', '2-27', '2-28', '2-29', '2-30', '2-31', '2-32']
 >>> s = chapter2.EXERCISE_2_2.solve()
 >>> [str(iv) for iv in s["AB for a double-rocker"].value]
 ['(15, 45)', '(55, 115)']
@@ -43,28 +48,44 @@ import math
 from mech._errors import InputTypeError
 from mech._validate import instance, positive_length
 from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
-from mech.planar import FourBar, SliderCrank, grashof
+from mech.planar import FourBar, GuideBar, SliderCrank, grashof
 from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
 from mech.exercises.chapter2_forces import EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_23, EXERCISE_2_24
-from mech.exercises.chapter2_statics import EXERCISE_2_22
+from mech.exercises.chapter2_instant_centres import EXERCISE_2_8, EXERCISE_2_9, EXERCISE_2_11
+from mech.exercises.chapter2_reactions import EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_22, EXERCISE_2_25, EXERCISE_2_26
+from mech.exercises.chapter2_relative_motion import (EXERCISE_2_12, EXERCISE_2_13, EXERCISE_2_14, EXERCISE_2_15,
+                                                     EXERCISE_2_16)
 from mech.exercises.chapter2_synthesis import EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29
 from mech.exercises.chapter2_quick_return import EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32
 
 __all__ = [
+    "EXERCISE_2_1",
     "EXERCISE_2_2",
     "EXERCISE_2_3",
     "EXERCISE_2_4",
     "EXERCISE_2_5",
     "EXERCISE_2_6",
     "EXERCISE_2_7",
+    "EXERCISE_2_8",
+    "EXERCISE_2_9",
     "EXERCISE_2_10",
+    "EXERCISE_2_11",
+    "EXERCISE_2_12",
+    "EXERCISE_2_13",
+    "EXERCISE_2_14",
+    "EXERCISE_2_15",
+    "EXERCISE_2_16",
+    "EXERCISE_2_17",
+    "EXERCISE_2_18",
     "EXERCISE_2_19",
     "EXERCISE_2_20",
     "EXERCISE_2_21",
     "EXERCISE_2_22",
     "EXERCISE_2_23",
     "EXERCISE_2_24",
+    "EXERCISE_2_25",
+    "EXERCISE_2_26",
     "EXERCISE_2_27",
     "EXERCISE_2_28",
     "EXERCISE_2_29",
@@ -432,7 +453,97 @@ def _sample_2_6(rng):
     return {"r": r, "l": length, "e": e}
 
 
+# ----------------------------------------------------------------------------- 2-1
+_STATEMENT_2_1 = (
+    "Draw the kinematic (skeleton) diagram of each mechanism of figure 2-1 and say what kind of "
+    "mechanism each one is. (The figure is lost; three common mechanisms are assumed: (a) a hinged "
+    "four-bar with AB = {a} mm, BC = {b} mm, CD = {c} mm and frame AD = {d} mm; (b) a slider-crank "
+    "with crank {r} mm, rod {l} mm and offset {e} mm; (c) a guide-bar with crank {g} mm and frame "
+    "{h} mm.)"
+)
+
+
+def _solve_2_1(p):
+    a, b, c, d, r, length, g, h = (positive_length(n, p[n]) for n in ("a", "b", "c", "d", "r", "l", "g", "h"))
+    e = float(p["e"])
+    if not math.isfinite(e):
+        raise ValueError(f"Expected a finite offset `e`, got {e!r}")
+    if max(a, b, c, d) >= a + b + c + d - max(a, b, c, d):
+        raise ValueError(f"Expected each link of (a) shorter than the other three together, got {(a, b, c, d)!r}")
+    if r + abs(e) >= length:
+        raise ValueError(f"Expected `r` + |`e`| < `l` = {length!r} so that the crank of (b) turns fully, got {r + abs(e)!r}")
+    if g == h:
+        raise ValueError(f"Expected `g` != `h` (a guide-bar with crank = frame is a special case), got {g!r}")
+    how_f = "F = 3n − 2P_L − P_H (n moving links, P_L lower pairs, P_H higher pairs)"
+    parts = []
+    kind = grashof(a, b, c, d)
+    parts.append(Part("(a) the hinged four-bar ABCD", (
+        Result("(a) moving links n", 3.0, "", "crank AB, coupler BC, rocker CD"),
+        Result("(a) lower pairs P_L", 4.0, "", "revolute pairs A, B, C, D"),
+        Result("(a) degrees of freedom F", 3.0 * 3 - 2 * 4, "", how_f),
+        Result("(a) type", kind.kind, "", "`grashof(AB, BC, CD, AD).kind`"),
+        Result("(a) joints that turn fully", kind.revolving, "", "`grashof(...).revolving`"),
+    ), ("Skeleton: the frame AD drawn with two fixed-pivot symbols, and the three moving links as "
+        "lines between the revolute pairs.",)))
+    sc = SliderCrank(r, length, e)
+    parts.append(Part("(b) the slider-crank", (
+        Result("(b) moving links n", 3.0, "", "crank, connecting rod, slider"),
+        Result("(b) lower pairs P_L", 4.0, "", "three revolute pairs and one sliding pair"),
+        Result("(b) degrees of freedom F", 3.0 * 3 - 2 * 4, "", how_f),
+        Result("(b) type", "offset slider-crank (偏置曲柄滑块机构)" if e else "centric slider-crank (对心曲柄滑块机构)",
+               "", "the crank turns fully since r + |e| < l"),
+        Result("(b) stroke H", sc.stroke(), "mm", "`SliderCrank(r, l, e).stroke()`"),
+        Result("(b) time ratio K", sc.time_ratio(), "", "`SliderCrank(r, l, e).time_ratio()`"),
+    ), ("Skeleton: the crank and the rod as lines, the slider as a small rectangle on a hatched guide "
+        "line.",)))
+    if g < h:
+        gb = GuideBar(g, h)
+        rows = (Result("(c) type", "oscillating guide-bar (摆动导杆机构)", "", "crank shorter than the frame: the bar swings"),
+                Result("(c) swing of the guide bar", gb.swing(), "rad", "`GuideBar(crank, frame).swing()`"),
+                Result("(c) time ratio K", gb.time_ratio(), "", "`GuideBar(crank, frame).time_ratio()`"))
+    else:
+        rows = (Result("(c) type", "rotating guide-bar (转动导杆机构)", "",
+                       "crank longer than the frame: the bar turns fully"),)
+    parts.append(Part("(c) the guide-bar", (
+        Result("(c) moving links n", 3.0, "", "crank, block, guide bar"),
+        Result("(c) lower pairs P_L", 4.0, "", "three revolute pairs and one sliding pair"),
+        Result("(c) degrees of freedom F", 3.0 * 3 - 2 * 4, "", how_f),
+    ) + rows, ("Skeleton: the crank, the block on it as a small rectangle, and the slotted bar through the "
+               "block, pivoted on the frame.",)))
+    assumptions = (
+        "The figure of exercise 2-1 is lost: its mechanisms, members and proportions are unknown. Three "
+        "mechanisms that such figures usually show are taken instead: (a) a hinged four-bar (as in a "
+        "sewing-machine treadle or a windscreen wiper), (b) a slider-crank (as in a piston pump), (c) a "
+        "guide-bar (as in a shaper); the lengths are illustrative.",
+        "Each has one input (the crank); the frame is the fixed link.",
+    )
+    return Solution("2-1", EXERCISE_2_1.title, dict(p), (), tuple(parts), assumptions=assumptions)
+
+
+def _sample_2_1(rng):
+    a = int(rng.integers(15, 40))
+    return {"a": a, "b": int(rng.integers(a + 20, a + 60)), "c": int(rng.integers(a + 15, a + 50)),
+            "d": int(rng.integers(a + 25, a + 60)), "r": int(rng.integers(15, 40)), "l": int(rng.integers(90, 150)),
+            "e": int(rng.integers(0, 20)), "g": int(rng.integers(20, 60)), "h": int(rng.integers(30, 90))}
+
+
 # ----------------------------------------------------------------------------- registry
+EXERCISE_2_1 = Exercise(
+    number="2-1",
+    title="Kinematic diagrams, degrees of freedom and types of three mechanisms",
+    tag="G",
+    statement=_STATEMENT_2_1,
+    parameters=(
+        Parameter("a", 25.0, "mm", "assumed crank of (a)"), Parameter("b", 60.0, "mm", "assumed coupler of (a)"),
+        Parameter("c", 50.0, "mm", "assumed rocker of (a)"), Parameter("d", 70.0, "mm", "assumed frame of (a)"),
+        Parameter("r", 30.0, "mm", "assumed crank of (b)"), Parameter("l", 100.0, "mm", "assumed rod of (b)"),
+        Parameter("e", 0.0, "mm", "assumed offset of (b)"), Parameter("g", 40.0, "mm", "assumed crank of (c)"),
+        Parameter("h", 80.0, "mm", "assumed frame of (c)"),
+    ),
+    solver=_solve_2_1,
+    sampler=_sample_2_1,
+)
+
 EXERCISE_2_2 = Exercise(
     number="2-2",
     title="Ranges of the crank length for each type of four-bar",
@@ -476,6 +587,8 @@ EXERCISE_2_6 = Exercise(
     sampler=_sample_2_6,
 )
 
-EXERCISES = (EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7,
-             EXERCISE_2_10, EXERCISE_2_19, EXERCISE_2_20, EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23,
-             EXERCISE_2_24, EXERCISE_2_27, EXERCISE_2_28, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)
+EXERCISES = (EXERCISE_2_1, EXERCISE_2_2, EXERCISE_2_3, EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_6, EXERCISE_2_7, EXERCISE_2_8,
+             EXERCISE_2_9, EXERCISE_2_10, EXERCISE_2_11, EXERCISE_2_12, EXERCISE_2_13, EXERCISE_2_14,
+             EXERCISE_2_15, EXERCISE_2_16, EXERCISE_2_17, EXERCISE_2_18, EXERCISE_2_19, EXERCISE_2_20,
+             EXERCISE_2_21, EXERCISE_2_22, EXERCISE_2_23, EXERCISE_2_24, EXERCISE_2_25, EXERCISE_2_26, EXERCISE_2_27,
+             EXERCISE_2_28, EXERCISE_2_29, EXERCISE_2_30, EXERCISE_2_31, EXERCISE_2_32)

@@ -248,7 +248,7 @@ def test_as_linkage_matches_fourbar_and_slider_crank():
 
 
 def test_exercise_2_22_virtual_work_and_friction():
-    from mech.exercises.chapter2_statics import EXERCISE_2_22, LAYOUT_2_22, linkage_2_22
+    from mech.exercises.chapter2_reactions import EXERCISE_2_22, LAYOUT_2_22, linkage_2_22
 
     s = EXERCISE_2_22.solve()
     sol = linkage_2_22().solve(LAYOUT_2_22["theta"], order=1)
