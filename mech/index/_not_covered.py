@@ -13,8 +13,6 @@ __all__ = ["NOT_COVERED"]
 _DRAWABLE = "drawable from the text's data or from chosen data; not yet redrawn on a page"
 _ART = "a machine drawing, photograph or sketch of a device; nothing to compute"
 _SCHEMATIC = "an explanatory sketch without data; not redrawn"
-_GRAPHICAL_EXERCISE = ("a graphical exercise (instant centres, velocity or force polygons); "
-                       "no generated solution yet (issue 18, item 1)")
 
 #: (kind, number) -> why it is not covered yet.
 NOT_COVERED = {
@@ -25,20 +23,6 @@ NOT_COVERED = {
                     "neither derived nor computed; the guidance page says why",
     ("eq", "2-58"): "the coupler-point model of example 2-24: computed by "
                     "mech.planar.synthesis.path_synthesis_model, but not derived in a notebook",
-    ("exercise", "2-1"): "asks for the degrees of freedom of sketched mechanisms; no data",
-    ("exercise", "2-8"): _GRAPHICAL_EXERCISE,
-    ("exercise", "2-9"): _GRAPHICAL_EXERCISE,
-    ("exercise", "2-11"): _GRAPHICAL_EXERCISE,
-    ("exercise", "2-12"): _GRAPHICAL_EXERCISE,
-    ("exercise", "2-13"): "a six-bar on a stated layout; not yet in mech.exercises (issue 18)",
-    ("exercise", "2-14"): _GRAPHICAL_EXERCISE,
-    ("exercise", "2-15"): "a six-bar on a stated layout; not yet in mech.exercises (issue 18)",
-    ("exercise", "2-16"): "a six-bar on a stated layout; not yet in mech.exercises (issue 18)",
-    ("exercise", "2-17"): "force analysis by polygons; not yet in mech.exercises (issue 18)",
-    ("exercise", "2-18"): "force analysis by polygons; not yet in mech.exercises (issue 18)",
-    ("exercise", "2-25"): "a disc cam with an oscillating follower needs a higher-pair element; "
-                          "not yet in mech.exercises (issue 18)",
-    ("exercise", "2-26"): "a slider-crank with friction; not yet in mech.exercises (issue 18)",
     ("chapter", "3"): "rigid-body guidance on the sphere (Burmester theory): not yet derived",
     ("chapter", "4"): "rigid-body guidance by spherical six-bars: not yet derived",
     ("fig", "2-2"): "drawing symbols of the basic mechanisms; " + _SCHEMATIC,
