@@ -27,6 +27,7 @@ from mech._generated.quick_return_design import (
     qr_alpha_from_offset,
     qr_crank_rocker,
     qr_crank_rocker_cos_gamma,
+    qr_crank_rocker_k1,
     qr_slider_crank,
 )
 from mech._scaling import length_scale
@@ -346,9 +347,28 @@ def _build_crank_rocker(K, theta, c, swing, alpha, side):
         )
     # design frame of the derivation, in units of c: O = 0, chord C1C2 at height R cos(theta)
     A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
-    D = -1j * H
     C1 = complex(-R * math.sin(theta), R * math.cos(theta))
     C2 = complex(R * math.sin(theta), R * math.cos(theta))
+    return _placed_crank_rocker(K, theta, c, swing, alpha, side, (a, b, d, gamma), A, -1j * H, C1, C2)
+
+
+def _build_crank_rocker_k1(c, swing, coupler, side):
+    """K = 1 (Fig. 2-100): A on the line C1C2 at `coupler` from its midpoint, the limit of (2-46)."""
+    b = positive_length("coupler", coupler) / c
+    a, d = (float(v) for v in qr_crank_rocker_k1(1.0, swing, b))
+    k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
+    if not (b > a and abs(k0) <= 1.0 and abs(kpi) <= 1.0):
+        raise ValueError(f"Expected `coupler` > c sin(swing/2) = {a * c!r} for which the crank revolves, "
+                         f"got {coupler!r}")
+    gamma = min(float(_acute(k0)), float(_acute(kpi)))
+    # design frame for K = 1, in units of c: the chord's midpoint at 0, C1C2 along +x
+    C1, C2 = complex(-a, 0.0), complex(a, 0.0)
+    D = complex(0.0, -side * math.cos(swing / 2))
+    return _placed_crank_rocker(1.0, 0.0, c, swing, 0.0, side, (a, b, d, gamma), complex(-b, 0.0), D, C1, C2)
+
+
+def _placed_crank_rocker(K, theta, c, swing, alpha, side, unit, A, D, C1, C2):
+    a, b, d, gamma = unit
     u = (D - A) / abs(D - A)
     C1s, C2s = (C1 - A) / u, (C2 - A) / u
     B2 = a * C2s / abs(C2s)
@@ -367,12 +387,12 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     """The crank-rocker with time ratio K, rocker `rocker` swinging through `swing`, (2-46).
 
     Give exactly one of `alpha` (the textbook's free parameter), `crank` (example 2-17) or
-    `coupler` (example 2-18).
+    `coupler` (example 2-18). K = 1 (no quick return, Fig. 2-100) takes `coupler` only.
 
     Parameters
     ----------
     time_ratio : float
-        K > 1.
+        K >= 1.
     rocker : float
         Rocker length c > 0.
     swing : float
@@ -418,7 +438,17 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     (28.5, [31.4, 73.67, 100.0, 95.98])
     >>> round(q.check().time_ratio, 9)
     1.3
+    >>> [round(x, 4) for x in quick_return_crank_rocker(1.0, 100.0, np.radians(40.0), coupler=90.0).lengths]
+    [34.202, 90.0, 100.0, 130.1162]
     """
+    if real_number("time_ratio", time_ratio) == 1.0:
+        c = positive_length("rocker", rocker)
+        swing = _angle_in("swing", swing, 0.0, math.pi)
+        side = branch_sign(side, "side")
+        if alpha is not None or crank is not None or coupler is None:
+            raise ValueError("Expected `coupler` alone for `time_ratio` = 1 (the crank is c sin(swing/2) and "
+                             f"alpha is 0), got alpha={alpha!r}, crank={crank!r}, coupler={coupler!r}")
+        return _build_crank_rocker_k1(c, swing, coupler, side)
     K, theta = _theta(time_ratio)
     c = positive_length("rocker", rocker)
     swing = _angle_in("swing", swing, 0.0, math.pi)
