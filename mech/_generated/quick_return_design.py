@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:170fa576106ac0ffaca2312503e4aad936c9ea612db450c521a2619ca91627ca"
+INPUT_HASH = "sha256:9c3214aa7d30fe04ce4906c26fe0cc58f52031de3b906ba0e50528506f4f61fb"
 
 __all__ = ['qr_crank_rocker', 'qr_crank_rocker_cos_gamma', 'qr_slider_crank', 'qr_alpha_from_lengths', 'qr_crank_rocker_k1', 'qr_alpha_from_offset']
 
@@ -39,24 +39,40 @@ def qr_crank_rocker(theta, c, phi, alpha, side):
     b : ndarray
         coupler BC
     d : ndarray
-        frame AD
+        frame AD (midpoint form)
+    ax : ndarray
+        x of A - M, M the midpoint of C1C2
+    ay : ndarray
+        y of A - M
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
     x0 = np.sin(theta)
     x1 = (1/2)*phi
     x2 = np.sin(x1)
-    x3 = c*x2/x0
-    x4 = c*side*np.cos(x1) - x3*np.cos(theta)
-    x5 = (1/2)*theta
-    x6 = (1/2)*alpha + x5
-    x7 = 2*x3
+    x3 = c*x2
+    x4 = x3/x0
+    x5 = c*side*np.cos(x1)
+    x6 = 2*x4
+    x7 = (1/2)*theta
+    x8 = (1/2)*alpha + x7
+    x9 = np.cos(x8)
+    x10 = np.sin(x7)
+    x11 = x10*x9
+    x12 = x11*x6
+    x13 = np.cos(x7)
+    x14 = np.sin(x8)
+    x15 = x13*x14
+    x16 = x15*x6
+    x17 = (1/2)*x0*(x12 - x16)*(x12 + x16)/(c*x2)
     return (
-        x3,
         x4,
-        x7*np.sin(x5)*np.cos(x6),
-        x7*np.sin(x6)*np.cos(x5),
-        np.sqrt(c**2*x2**2/x0**2 + x4**2 + x4*x7*np.cos(alpha + theta)),
+        -x4*np.cos(theta) + x5,
+        x12,
+        x16,
+        np.sqrt(16*c**2*x10**2*x13**2*x14**2*x2**2*x9**2/x0**4 + (x17 + x5)**2),
+        -4*x11*x15*x3/x0**2,
+        x17,
     )
 
 

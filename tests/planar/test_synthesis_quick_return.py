@@ -430,7 +430,10 @@ def test_crank_rocker_k1_is_the_limit_of_k_above_1():
     """The K = 1 design is the limit of (2-46) with the coupler held fixed, as the derivation proves."""
     c, swing, b = 100.0, deg(40), 90.0
     k1 = quick_return_crank_rocker(1.0, c, swing, coupler=b)
-    for K, tol in ((1.0 + 1e-3, 1e-3), (1.0 + 1e-5, 1e-5)):
-        near = quick_return_crank_rocker(K, c, swing, coupler=b)
-        assert np.allclose(near.lengths, k1.lengths, rtol=tol, atol=0)
+    for gap in (1e-3, 1e-6, 1e-9, 1e-12):
+        near = quick_return_crank_rocker(1.0 + gap, c, swing, coupler=b)
+        # the lengths differ by O(K - 1) and no more: (2-46) is evaluated from the chord's midpoint
+        assert np.allclose(near.lengths, k1.lengths, rtol=2 * gap, atol=0)
         assert near.fourbar.branch == k1.fourbar.branch
+        assert abs(near.theta_extended - k1.theta_extended) <= gap
+        assert near.fourbar.limit_positions().time_ratio == pytest.approx(1.0 + gap, abs=1e-14)

@@ -265,7 +265,7 @@ class QuickReturnCrankRocker:
     time_ratio, extreme_angle, swing : float
         The task: K, theta = pi (K - 1)/(K + 1) and the rocker swing phi (rad).
     alpha : float
-        The free parameter, angle AOC1 in (0, pi - theta) (rad).
+        The free parameter, angle AOC1 in (0, pi - theta) (rad); 0 when K = 1.
     side : int
         +1: D on the side of A of the chord C1C2 (the textbook's Fig. 2-101); -1: the
         other side.
@@ -279,7 +279,8 @@ class QuickReturnCrankRocker:
     placement : tuple
         ``(origin, rotation)``: a point z of the standard frame is at
         ``origin + exp(1j*rotation) * z`` in the design frame of page
-        ``deriv-quick-return-design`` (circle centre O at 0, chord C1C2 parallel to x).
+        ``deriv-quick-return-design`` (circle centre O at 0, chord C1C2 parallel to x; for
+        K = 1, the chord's midpoint at 0 and C1C2 along +x).
     """
 
     fourbar: FourBar
@@ -316,18 +317,18 @@ class QuickReturnCrankRocker:
 
 
 def _crank_rocker_unit(theta, swing, alpha, side):
-    """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min and whether the crank revolves."""
-    R, H, a, b, d = qr_crank_rocker(theta, 1.0, swing, alpha, side)
+    """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min, whether the crank revolves, and
+    the points A, D, C1, C2 measured from the midpoint M of C1C2 (bounded as K -> 1)."""
+    R, H, a, b, d, ax, ay = qr_crank_rocker(theta, 1.0, swing, alpha, side)
     with np.errstate(invalid="ignore"):
         k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
     # the crank revolves when it passes both positions along the frame line
     revolves = (np.abs(k0) <= 1.0) & (np.abs(kpi) <= 1.0) & (a > 0.0) & (b > a)
     # and C1, C2 must be positions of one assembly branch (C on one side of B->D at both);
     # (2-46) alone does not ensure it, e.g. for a small swing with a large K
-    A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
-    D = -1j * H
-    C1 = R * (-np.sin(theta) + 1j * np.cos(theta))
-    C2 = R * (np.sin(theta) + 1j * np.cos(theta))
+    A = ax + 1j * ay
+    D = -1j * side * np.cos(swing / 2)
+    C1, C2 = -np.sin(swing / 2) + 0j, np.sin(swing / 2) + 0j
     with np.errstate(invalid="ignore", divide="ignore"):
         B2 = A + a * (C2 - A) / np.abs(C2 - A)
         B1 = A - a * (C1 - A) / np.abs(C1 - A)
@@ -335,21 +336,22 @@ def _crank_rocker_unit(theta, swing, alpha, side):
     side1 = np.imag(np.conj(D - B1) * (C1 - B1))
     revolves = revolves & (side1 * side2 > 0.0)
     gamma = np.where(revolves, np.minimum(_acute(k0), _acute(kpi)), -1.0)
-    return R, H, a, b, d, gamma, revolves
+    return R, H, a, b, d, gamma, revolves, (A, D, C1, C2)
 
 
 def _build_crank_rocker(K, theta, c, swing, alpha, side):
-    R, H, a, b, d, gamma, revolves = (float(v) for v in _crank_rocker_unit(theta, swing, alpha, side))
+    R, H, a, b, d, gamma, revolves, points = _crank_rocker_unit(theta, swing, alpha, side)
     if not revolves:
         raise ValueError(
             f"Expected `alpha` for which the design is a crank-rocker (the crank passes both positions "
             f"along the frame, both limit positions on one branch), got {alpha!r}"
         )
-    # design frame of the derivation, in units of c: O = 0, chord C1C2 at height R cos(theta)
-    A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
-    C1 = complex(-R * math.sin(theta), R * math.cos(theta))
-    C2 = complex(R * math.sin(theta), R * math.cos(theta))
-    return _placed_crank_rocker(K, theta, c, swing, alpha, side, (a, b, d, gamma), A, -1j * H, C1, C2)
+    A, D, C1, C2 = (complex(v) for v in points)
+    design = _placed_crank_rocker(K, theta, c, swing, alpha, side, (float(a), float(b), float(d), float(gamma)),
+                                  A, D, C1, C2)
+    # placement in the design frame of the derivation: O = 0, the midpoint M at (0, R cos(theta))
+    origin, rotation = design.placement
+    return replace(design, placement=(origin + 1j * float(R) * math.cos(theta) * c, rotation))
 
 
 def _build_crank_rocker_k1(c, swing, coupler, side):
