@@ -268,7 +268,8 @@ class CentricSliderCrank:
         the branch that reproduces the poses.
     origin, angle : complex, float
         Placement: a standard-frame point ``w`` is at ``origin + exp(1j*angle)*w`` in the
-        task frame; ``origin`` is A, ``angle`` the guide angle beta of A -> C_1, (F84).
+        task frame; ``origin`` is A, ``angle`` the guide angle beta of A -> C_1 (the text's
+        tan(beta) after (2-42)).
     crank, slider : Dyad, SliderDyad
         The crank AB and the slider dyad of the pin C.
     theta_input : ndarray, shape (4,)
