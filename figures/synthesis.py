@@ -170,7 +170,7 @@ __all__ += ["guidance_slider_crank_figure"]
 
 
 def guidance_slider_crank_figure(theta, d, A, B, C, line_point, direction, path, *, length,
-                                 circles=(), ax=None):
+                                 circles=(), through=(), ax=None):
     """Draw a guidance slider-crank at each pose, its guide, and the path of the reference point.
 
     Parameters
@@ -189,6 +189,9 @@ def guidance_slider_crank_figure(theta, d, A, B, C, line_point, direction, path,
         Length of the drawn reference lines.
     circles : sequence of (complex, float), optional
         Slider circles (centre, radius) already placed in the ground frame, drawn dashed.
+    through : sequence of complex, optional
+        Further points on the guide that the drawn guide must reach (A, for a centric
+        slider-crank).
     """
     ax = poses_figure(theta, d, length=length, ax=ax)
     B, C, d = (np.asarray(v, dtype=complex) for v in (B, C, d))
@@ -197,7 +200,7 @@ def guidance_slider_crank_figure(theta, d, A, B, C, line_point, direction, path,
         ring = centre + radius * np.exp(1j * np.linspace(0.0, 2.0 * np.pi, 361))
         ax.plot(ring.real, ring.imag, "--", color=_DYAD_COLOURS[(k + 2) % len(_DYAD_COLOURS)], lw=0.9,
                 label=f"slider circle {k + 1} (pose 1)")
-    s = np.real(np.conj(direction) * (C - line_point))
+    s = np.real(np.conj(direction) * (np.append(C, np.asarray(through, dtype=complex)) - line_point))
     span = s.max() - s.min()
     ends = line_point + direction * np.array([s.min() - 0.3 * span, s.max() + 0.3 * span])
     ax.plot(ends.real, ends.imag, "-", color="grey", lw=3.0, alpha=0.5, label="guide")

@@ -1160,7 +1160,27 @@ CASES.update({
                                                             {"theta_input": "real"}, theta_input=[0.2, 0.5]),
 })
 RECORDS.update({f"planar.synthesis.{n}": "result record built by the package"
-                for n in ("SliderDyad", "SliderCircle", "GuidanceSliderCrank")})
+                for n in ("SliderDyad", "SliderCircle", "GuidanceSliderCrank", "CentricSliderCrank")})
+
+
+# centric slider-cranks of four poses (2-42): poses of example 2-15, 1-4
+_CP = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j])
+_CTH = np.radians([0.0, 8.88, 22.1, 63.68])
+
+
+def _centric_design():
+    return sy.centric_slider_cranks(_CTH, _CP)[0]
+
+
+CASES.update({
+    "planar.synthesis.centric_slider_cranks": E(lambda: sy.centric_slider_cranks,
+                                                {"theta": "real", "d": "point", "rtol": "scalar",
+                                                 "imag_tol": "scalar"},
+                                                theta=_CTH, d=_CP, rtol=1e-9, imag_tol=1e-7),
+    "planar.synthesis.CentricSliderCrank.coupler_poses": E(lambda: _centric_design().coupler_poses,
+                                                           {"theta_input": "real"}, theta_input=[0.2, 0.5]),
+    "planar.synthesis.CentricSliderCrank.to_ground": E(lambda: _centric_design().to_ground, {"w": "point"}, w=1 + 1j),
+})
 
 
 # ----------------------------------------------------------------------------- atlas (issue 13)

@@ -323,7 +323,12 @@ def test_simulation_detects_a_wrong_design():
 
 
 @pytest.mark.parametrize("call, name", [
-    (lambda: quick_return_crank_rocker(1.0, 1.0, 0.5, alpha=0.5), "time_ratio"),
+    (lambda: quick_return_crank_rocker(0.9, 1.0, 0.5, alpha=0.5), "time_ratio"),
+    (lambda: quick_return_crank_rocker(1.0, 1.0, 0.5, alpha=0.5), "coupler"),
+    (lambda: quick_return_crank_rocker(1.0, 1.0, 0.5, crank=0.2), "coupler"),
+    (lambda: quick_return_crank_rocker(1.0, 1.0, 0.5, coupler=0.1), "coupler"),
+    (lambda: quick_return_crank_rocker(1.0, 1.0, 0.5, coupler=-1.0), "coupler"),
+    (lambda: quick_return_crank_rocker(1.0, 1.0, 0.5, coupler=2.0, side=0), "side"),
     (lambda: quick_return_crank_rocker("1.3", 1.0, 0.5, alpha=0.5), "time_ratio"),
     (lambda: quick_return_crank_rocker(1.3, -1.0, 0.5, alpha=0.5), "rocker"),
     (lambda: quick_return_crank_rocker(1.3, 1.0, 4.0, alpha=0.5), "swing"),
@@ -394,3 +399,46 @@ def test_eq_2_49_printed_derivative_is_wrong():
             printed = (common - 2 * a * ap * d * c) / (-4 * b**2 * c**2 * mpmath.sin(gamma))
             assert abs(dgamma - corrected) < mpmath.mpf(10) ** -20 * (1 + abs(dgamma))
             assert abs(dgamma - printed) > 1e-6 * (1 + abs(float(dgamma)))
+
+
+@pytest.mark.parametrize("side", [1, -1])
+def test_crank_rocker_k1_simulates_to_no_quick_return(side):
+    """Fig. 2-100: K = 1 puts A on the line C1C2; `FourBar.limit_positions` gives K = 1 and the swing."""
+    rng = np.random.default_rng(100 + side)
+    for _ in range(40):
+        c, swing = rng.uniform(10.0, 500.0), rng.uniform(0.1, 2.8)
+        a = c * math.sin(swing / 2)
+        b = a * rng.uniform(1.05, 8.0)
+        try:
+            q = quick_return_crank_rocker(1.0, c, swing, coupler=b, side=side)
+        except ValueError:
+            continue            # the crank does not revolve for this coupler
+        lp = q.fourbar.limit_positions()
+        assert abs(lp.time_ratio - 1.0) <= 1e-12
+        assert abs(lp.extreme_angle) <= 1e-12
+        assert lp.swing == pytest.approx(swing, rel=1e-12)
+        assert q.lengths[0] == pytest.approx(a, rel=1e-14)
+        assert q.lengths[3] == pytest.approx(math.hypot(b, c * math.cos(swing / 2)), rel=1e-14)
+        assert np.exp(1j * q.theta_extended) == pytest.approx(np.exp(1j * lp.theta_extended), abs=1e-12)
+        assert np.exp(1j * q.theta_folded) == pytest.approx(np.exp(1j * lp.theta_folded), abs=1e-12)
+        # A, C1 and C2 collinear in the placed frame, with the chord's midpoint at 0
+        A, rot = q.placement
+        pose = q.fourbar.solve(np.array([q.theta_extended, q.theta_folded]))
+        C2, C1 = A + np.exp(1j * rot) * pose.C
+        assert abs(C1 + C2) <= 1e-12 * c and abs(C1.imag) <= 1e-12 * c and abs(A.imag) <= 1e-12 * c
+        m = q.check()
+        assert m.time_ratio == pytest.approx(1.0, abs=1e-12)
+        assert m.output_range == pytest.approx(swing, rel=1e-12)
+
+
+def test_crank_rocker_k1_is_the_limit_of_k_above_1():
+    """The K = 1 design is the limit of (2-46) with the coupler held fixed, as the derivation proves."""
+    c, swing, b = 100.0, deg(40), 90.0
+    k1 = quick_return_crank_rocker(1.0, c, swing, coupler=b)
+    for gap in (1e-3, 1e-6, 1e-9, 1e-12):
+        near = quick_return_crank_rocker(1.0 + gap, c, swing, coupler=b)
+        # the lengths differ by O(K - 1) and no more: (2-46) is evaluated from the chord's midpoint
+        assert np.allclose(near.lengths, k1.lengths, rtol=2 * gap, atol=0)
+        assert near.fourbar.branch == k1.fourbar.branch
+        assert abs(near.theta_extended - k1.theta_extended) <= gap
+        assert near.fourbar.limit_positions().time_ratio == pytest.approx(1.0 + gap, abs=1e-14)

@@ -24,7 +24,13 @@ from mech.planar.synthesis._guidance import (
     dyad_for_centre_point,
     dyad_for_circle_point,
 )
-from mech.planar.synthesis._guidance_fourbar import GuidanceFourBar, GuidanceSynthesis, guidance_fourbars
+from mech.planar.synthesis._guidance_fourbar import (
+    CentricSliderCrank,
+    GuidanceFourBar,
+    GuidanceSynthesis,
+    centric_slider_cranks,
+    guidance_fourbars,
+)
 from mech.planar.synthesis._optimisation import DesignModel, OptimisationResult, grid_search, scipy_minimize
 from mech.planar.synthesis._optimisation_examples import (
     PATH_VARIABLES,
@@ -71,7 +77,7 @@ __all__ = [
     "BurmesterCurve", "circle_point_curve", "BurmesterPoints", "burmester",
     "GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars",
     "SliderDyad", "slider_dyad_for_point", "SliderCircle", "slider_point_circle", "slider_dyads",
-    "GuidanceSliderCrank", "guidance_slider_crank",
+    "GuidanceSliderCrank", "guidance_slider_crank", "CentricSliderCrank", "centric_slider_cranks",
     # function generation (2-43)-(2-45)
     "FunctionGenerator", "FunctionMap", "chebyshev_spacing", "freudenstein_coefficients",
     "least_squares", "lengths_from_coefficients", "precision_pairs",

@@ -1,16 +1,25 @@
-"""Four-bars from pairs of guidance dyads, each proved by analysis with `FourBar`."""
+"""Linkages built from guidance dyads, each proved by analysis.
+
+Four-bars from pairs of RR dyads (`guidance_fourbars`, moved by `FourBar`), and the centric
+slider-cranks of four poses, (2-42), whose guide passes through the crank's fixed pivot
+(`centric_slider_cranks`, moved by `SliderCrank` and `Linkage`).
+"""
 
 from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import InputTypeError, _show, finite_array, planar_points, real_number
+from mech._generated import displacement as _gen
+from mech._validate import InputTypeError, _show, finite_array, nonnegative_number, planar_points, real_number
 from mech.planar.kinematics._fourbar import FourBar
+from mech.planar.kinematics._slider_crank import SliderCrank
 from mech.planar.structure._grashof import grashof
 from mech.planar.synthesis._displacement import pose_set
-from mech.planar.synthesis._guidance import Dyad, burmester
+from mech.planar.synthesis._guidance import Dyad, _det_cubic, burmester
+from mech.planar.synthesis._slider_guidance import (GuidanceSliderCrank, SliderDyad, _images, guidance_slider_crank,
+                                                    slider_dyads)
 
-__all__ = ["GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars"]
+__all__ = ["GuidanceFourBar", "GuidanceSynthesis", "guidance_fourbars", "CentricSliderCrank", "centric_slider_cranks"]
 
 _TWO_PI = 2.0 * np.pi
 
@@ -246,3 +255,165 @@ def guidance_fourbars(theta, d, dyads=None, *, rtol=1e-9):
                 if found is not None:
                     candidates.append(found)
     return GuidanceSynthesis(dyads, tuple(candidates), tuple(c for c in candidates if c.passes))
+
+
+@dataclass(frozen=True)
+class CentricSliderCrank:
+    """A centric slider-crank for four poses (Fig. 2-91), proved by analysis.
+
+    Attributes
+    ----------
+    slider_crank : SliderCrank
+        The linkage in its standard frame: A = 0, the guide along the x axis (offset 0), on
+        the branch that reproduces the poses.
+    origin, angle : complex, float
+        Placement: a standard-frame point ``w`` is at ``origin + exp(1j*angle)*w`` in the
+        task frame; ``origin`` is A, ``angle`` the guide angle beta of A -> C_1 (the text's
+        tan(beta) after (2-42)).
+    crank, slider : Dyad, SliderDyad
+        The crank AB and the slider dyad of the pin C.
+    theta_input : ndarray, shape (4,)
+        Crank angle at every pose, standard frame, in (-pi, pi].
+    pose_error : float
+        Largest error of the poses reproduced by `SliderCrank` (as in `GuidanceSliderCrank`).
+    guidance : GuidanceSliderCrank
+        The same linkage built and checked as a `Linkage` (order of the poses, mode of
+        the RRP group, transmission angles).
+    passes : bool
+        ``guidance.passes`` and ``pose_error <= rtol``.
+    """
+
+    slider_crank: SliderCrank
+    origin: complex
+    angle: float
+    crank: Dyad
+    slider: SliderDyad
+    theta_input: np.ndarray
+    pose_error: float
+    guidance: GuidanceSliderCrank
+    passes: bool
+
+    def to_ground(self, w):
+        """Map standard-frame points (complex) to the task's ground frame."""
+        return self.origin + np.exp(1j * self.angle) * planar_points("w", w)
+
+    def coupler_poses(self, theta_input):
+        """The coupler's pose ``(theta, d)`` in the task frame at crank angles `theta_input` (standard frame)."""
+        sol = self.slider_crank.solve(finite_array("theta_input", theta_input))
+        zB, zC = self.crank.circle_point, self.slider.slider_point
+        theta = np.angle(np.exp(1j * (np.angle(sol.C - sol.B) + self.angle - np.angle(zC - zB))))
+        return theta, self.to_ground(sol.B) - np.exp(1j * theta) * zB
+
+
+def _centric_rows(theta, dn, A):
+    """The three equations (2-40) at centre point A as rows [m_x, m_y, m_0] (linear in the circle point)."""
+    m = _gen.centric_crank_rows(theta[0], dn[0].real, dn[0].imag, theta[1:], dn[1:].real, dn[1:].imag,
+                                A.real, A.imag)
+    return np.stack([np.broadcast_to(v, (3,)) for v in m], axis=-1)
+
+
+def _centric(theta, d, crank, slider, rtol):
+    A, C1 = complex(crank.centre_point), complex(slider.moving_pivot)
+    beta = float(np.angle(C1 - A)) if C1 != A else float(np.angle(slider.direction))
+    rot = np.exp(-1j * beta)
+    zB, zC = complex(crank.circle_point), complex(slider.slider_point)
+    B, C = (rot * (_images(theta, d, z) - A) for z in (zB, zC))
+    a, b = float(crank.length), abs(zC - zB)
+    theta_in = np.angle(B)
+    size = max(a, b, float(np.max(np.abs(C))))
+    best = None
+    for branch in (1, -1):
+        sol = SliderCrank(a, b, 0.0, branch=branch).solve(theta_in)
+        if not np.all(sol.valid):
+            continue
+        t_rec = np.angle(sol.C - sol.B) + beta - np.angle(zC - zB)
+        d_rec = A + np.exp(1j * beta) * sol.B - np.exp(1j * t_rec) * zB
+        err = float(max(np.max(np.abs(d_rec - d)) / size, np.max(np.abs(np.angle(np.exp(1j * (t_rec - theta)))))))
+        if best is None or err < best[0]:
+            best = (err, branch)
+    err, branch = best if best is not None else (float("inf"), 1)
+    check = guidance_slider_crank(theta, d, crank, slider, rtol=rtol)
+    return CentricSliderCrank(SliderCrank(a, b, 0.0, branch=branch), A, beta, crank, slider, theta_in, err,
+                              check, bool(check.passes and err <= rtol))
+
+
+def centric_slider_cranks(theta, d, *, rtol=1e-9, imag_tol=1e-7):
+    """Every centric slider-crank through four poses, (2-42), each proved by analysis.
+
+    The guide of the slider pin C passes through the crank's fixed pivot A (Fig. 2-91).
+    The pin is the slider point of the four poses (`slider_dyads`); A is a centre point of
+    the four poses on its guide, a root of a cubic along the guide; the crank's circle
+    point then solves three linear equations. Each linkage is moved by `SliderCrank`
+    (offset 0) and by `Linkage` (`guidance_slider_crank`) through the poses.
+
+    Parameters
+    ----------
+    theta : array_like, shape (4,)
+        Pose angles, radians.
+    d : array_like of complex, shape (4,)
+        Pose translations.
+    rtol : float, optional
+        Collinearity check of the slider point and the largest accepted pose error.
+    imag_tol : float, optional
+        A root of the cubic counts as real when its imaginary part is at most this, relative
+        to its size (in units of the pose set's size, at least 1).
+
+    Returns
+    -------
+    tuple of CentricSliderCrank
+        Zero to three designs, by crank length; ``passes`` says which reproduce the poses
+        in order on one branch.
+
+    Raises
+    ------
+    ValueError
+        For bad poses, or poses whose slider points are not finitely many (`slider_dyads`).
+
+    Notes
+    -----
+    (2-42) also holds, trivially, with C_1 = A for any centre point; that family of
+    spurious roots is avoided by taking C as the slider point. With the centre point
+    ``A = C_1 + t e`` on the guide, (2-40) is linear in the circle point with coefficients
+    affine in t, and its three equations are consistent where their 3 x 3 determinant, a
+    cubic in t, vanishes. The poses are moved to their centroid and scaled first.
+    Derivation: :ref:`deriv-displacement`; book page :ref:`synthesis-guidance`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.planar.synthesis import centric_slider_cranks
+    >>> P = [13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j]
+    >>> theta = np.radians([0.0, 8.88, 22.1, 63.68])            # example 2-15, poses 1-4
+    >>> [(round(k.slider_crank.a, 3), round(k.slider_crank.b, 3), k.passes) for k in centric_slider_cranks(theta, P)]
+    [(211.347, 239.286, True)]
+    """
+    theta, d = pose_set(theta, d, (4,))
+    rtol = nonnegative_number("rtol", rtol)
+    imag_tol = nonnegative_number("imag_tol", imag_tol)
+    found = slider_dyads(theta, d, rtol=rtol)
+    if not found:
+        return ()
+    slider = found[0]
+    centre = d.mean()
+    size = float(np.max(np.abs(d - centre))) or 1.0
+    dn = (d - centre) / size
+    A0, e = (slider.line_point - centre) / size, slider.direction
+    base = _centric_rows(theta, dn, A0)
+    cubic = _det_cubic(np.stack([base, _centric_rows(theta, dn, A0 + e) - base], axis=-1)[None])[0]
+    cubic = np.trim_zeros(cubic / np.max(np.abs(cubic)), "b")
+    designs = []
+    for t in np.roots(cubic[::-1]) if cubic.size > 1 else ():
+        if abs(t.imag) > imag_tol * max(1.0, abs(t)):
+            continue
+        A = A0 + t.real * e
+        M = _centric_rows(theta, dn, A)
+        xy = np.linalg.lstsq(M[:, :2], -M[:, 2], rcond=None)[0]
+        z = complex(xy[0], xy[1]) * size
+        Ag = centre + A * size
+        B1 = np.exp(1j * theta[0]) * z + d[0]
+        length = abs(B1 - Ag)
+        if not (length > 0.0 and z != slider.slider_point):
+            continue
+        designs.append(_centric(theta, d, Dyad(z, complex(B1), complex(Ag), float(length)), slider, rtol))
+    designs.sort(key=lambda k: k.crank.length)
+    return tuple(designs)

@@ -27,6 +27,7 @@ from mech._generated.quick_return_design import (
     qr_alpha_from_offset,
     qr_crank_rocker,
     qr_crank_rocker_cos_gamma,
+    qr_crank_rocker_k1,
     qr_slider_crank,
 )
 from mech._scaling import length_scale
@@ -267,7 +268,7 @@ class QuickReturnCrankRocker:
     time_ratio, extreme_angle, swing : float
         The task: K, theta = pi (K - 1)/(K + 1) and the rocker swing phi (rad).
     alpha : float
-        The free parameter, angle AOC1 in (0, pi - theta) (rad).
+        The free parameter, angle AOC1 in (0, pi - theta) (rad); 0 when K = 1.
     side : int
         +1: D on the side of A of the chord C1C2 (the textbook's Fig. 2-101); -1: the
         other side.
@@ -281,7 +282,8 @@ class QuickReturnCrankRocker:
     placement : tuple
         ``(origin, rotation)``: a point z of the standard frame is at
         ``origin + exp(1j*rotation) * z`` in the design frame of page
-        ``deriv-quick-return-design`` (circle centre O at 0, chord C1C2 parallel to x).
+        ``deriv-quick-return-design`` (circle centre O at 0, chord C1C2 parallel to x; for
+        K = 1, the chord's midpoint at 0 and C1C2 along +x).
     """
 
     fourbar: FourBar
@@ -318,18 +320,18 @@ class QuickReturnCrankRocker:
 
 
 def _crank_rocker_unit(theta, swing, alpha, side):
-    """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min and whether the crank revolves."""
-    R, H, a, b, d = qr_crank_rocker(theta, 1.0, swing, alpha, side)
+    """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min, whether the crank revolves, and
+    the points A, D, C1, C2 measured from the midpoint M of C1C2 (bounded as K -> 1)."""
+    R, H, a, b, d, ax, ay = qr_crank_rocker(theta, 1.0, swing, alpha, side)
     with np.errstate(invalid="ignore"):
         k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
     # the crank revolves when it passes both positions along the frame line
     revolves = (np.abs(k0) <= 1.0) & (np.abs(kpi) <= 1.0) & (a > 0.0) & (b > a)
     # and C1, C2 must be positions of one assembly branch (C on one side of B->D at both);
     # (2-46) alone does not ensure it, e.g. for a small swing with a large K
-    A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
-    D = -1j * H
-    C1 = R * (-np.sin(theta) + 1j * np.cos(theta))
-    C2 = R * (np.sin(theta) + 1j * np.cos(theta))
+    A = ax + 1j * ay
+    D = -1j * side * np.cos(swing / 2)
+    C1, C2 = -np.sin(swing / 2) + 0j, np.sin(swing / 2) + 0j
     with np.errstate(invalid="ignore", divide="ignore"):
         B2 = A + a * (C2 - A) / np.abs(C2 - A)
         B1 = A - a * (C1 - A) / np.abs(C1 - A)
@@ -337,21 +339,41 @@ def _crank_rocker_unit(theta, swing, alpha, side):
     side1 = np.imag(np.conj(D - B1) * (C1 - B1))
     revolves = revolves & (side1 * side2 > 0.0)
     gamma = np.where(revolves, np.minimum(_acute(k0), _acute(kpi)), -1.0)
-    return R, H, a, b, d, gamma, revolves
+    return R, H, a, b, d, gamma, revolves, (A, D, C1, C2)
 
 
 def _build_crank_rocker(K, theta, c, swing, alpha, side):
-    R, H, a, b, d, gamma, revolves = (float(v) for v in _crank_rocker_unit(theta, swing, alpha, side))
+    R, H, a, b, d, gamma, revolves, points = _crank_rocker_unit(theta, swing, alpha, side)
     if not revolves:
         raise ValueError(
             f"Expected `alpha` for which the design is a crank-rocker (the crank passes both positions "
             f"along the frame, both limit positions on one branch), got {alpha!r}"
         )
-    # design frame of the derivation, in units of c: O = 0, chord C1C2 at height R cos(theta)
-    A = R * np.exp(1j * (np.pi / 2 + theta + alpha))
-    D = -1j * H
-    C1 = complex(-R * math.sin(theta), R * math.cos(theta))
-    C2 = complex(R * math.sin(theta), R * math.cos(theta))
+    A, D, C1, C2 = (complex(v) for v in points)
+    design = _placed_crank_rocker(K, theta, c, swing, alpha, side, (float(a), float(b), float(d), float(gamma)),
+                                  A, D, C1, C2)
+    # placement in the design frame of the derivation: O = 0, the midpoint M at (0, R cos(theta))
+    origin, rotation = design.placement
+    return replace(design, placement=(origin + 1j * float(R) * math.cos(theta) * c, rotation))
+
+
+def _build_crank_rocker_k1(c, swing, coupler, side):
+    """K = 1 (Fig. 2-100): A on the line C1C2 at `coupler` from its midpoint, the limit of (2-46)."""
+    b = positive_length("coupler", coupler) / c
+    a, d = (float(v) for v in qr_crank_rocker_k1(1.0, swing, b))
+    k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
+    if not (b > a and abs(k0) <= 1.0 and abs(kpi) <= 1.0):
+        raise ValueError(f"Expected `coupler` > c sin(swing/2) = {a * c!r} for which the crank revolves, "
+                         f"got {coupler!r}")
+    gamma = min(float(_acute(k0)), float(_acute(kpi)))
+    # design frame for K = 1, in units of c: the chord's midpoint at 0, C1C2 along +x
+    C1, C2 = complex(-a, 0.0), complex(a, 0.0)
+    D = complex(0.0, -side * math.cos(swing / 2))
+    return _placed_crank_rocker(1.0, 0.0, c, swing, 0.0, side, (a, b, d, gamma), complex(-b, 0.0), D, C1, C2)
+
+
+def _placed_crank_rocker(K, theta, c, swing, alpha, side, unit, A, D, C1, C2):
+    a, b, d, gamma = unit
     u = (D - A) / abs(D - A)
     C1s, C2s = (C1 - A) / u, (C2 - A) / u
     B2 = a * C2s / abs(C2s)
@@ -370,12 +392,12 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     """The crank-rocker with time ratio K, rocker `rocker` swinging through `swing`, (2-46).
 
     Give exactly one of `alpha` (the textbook's free parameter), `crank` (example 2-17) or
-    `coupler` (example 2-18).
+    `coupler` (example 2-18). K = 1 (no quick return, Fig. 2-100) takes `coupler` only.
 
     Parameters
     ----------
     time_ratio : float
-        K > 1.
+        K >= 1.
     rocker : float
         Rocker length c > 0.
     swing : float
@@ -421,7 +443,17 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     (28.5, [31.4, 73.67, 100.0, 95.98])
     >>> round(q.check().time_ratio, 9)
     1.3
+    >>> [round(x, 4) for x in quick_return_crank_rocker(1.0, 100.0, np.radians(40.0), coupler=90.0).lengths]
+    [34.202, 90.0, 100.0, 130.1162]
     """
+    if real_number("time_ratio", time_ratio) == 1.0:
+        c = positive_length("rocker", rocker)
+        swing = _angle_in("swing", swing, 0.0, math.pi)
+        side = branch_sign(side, "side")
+        if alpha is not None or crank is not None or coupler is None:
+            raise ValueError("Expected `coupler` alone for `time_ratio` = 1 (the crank is c sin(swing/2) and "
+                             f"alpha is 0), got alpha={alpha!r}, crank={crank!r}, coupler={coupler!r}")
+        return _build_crank_rocker_k1(c, swing, coupler, side)
     K, theta = _theta(time_ratio)
     c = positive_length("rocker", rocker)
     swing = _angle_in("swing", swing, 0.0, math.pi)
