@@ -16,11 +16,6 @@ _SCHEMATIC = "an explanatory sketch without data; not redrawn"
 
 #: (kind, number) -> why it is not covered yet.
 NOT_COVERED = {
-    ("eq", "2-41"): "guidance by an offset slider-crank (the slider pin moved by the "
-                    "displacement matrix): the guidance page designs a slider-crank from slider "
-                    "circles, but no derivation declares (2-41)",
-    ("eq", "2-42"): "the centric slider-crank for guidance (six equations for four poses): "
-                    "neither derived nor computed; the guidance page says why",
     ("eq", "2-58"): "the coupler-point model of example 2-24: computed by "
                     "mech.planar.synthesis.path_synthesis_model, but not derived in a notebook",
     ("chapter", "3"): "rigid-body guidance on the sphere (Burmester theory): not yet derived",
@@ -66,8 +61,6 @@ NOT_COVERED = {
     ("fig", "2-83"): "the slotting-machine guide-bar; " + _DRAWABLE,
     ("fig", "2-84"): "a flying shear; " + _ART,
     ("fig", "2-85"): "a slider with its pin off the guide; " + _DRAWABLE,
-    ("fig", "2-91"): "the centric slider-crank for guidance, like (2-42): not computed (the "
-                     "guidance page says why)",
     ("fig", "2-115"): "spatial pairs; " + _ART,
     ("fig", "2-116"): "robot structures; " + _ART,
     ("fig", "2-117"): "frame rotations about z and x; " + _DRAWABLE,
