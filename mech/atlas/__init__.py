@@ -18,7 +18,8 @@ loaded, tqdm when a build shows a progress bar.
 
 from mech.atlas._signature import curve_signature, read_points, resample
 from mech.atlas._sampling import FourBarSamples, sample_fourbars
-from mech.atlas._store import ATLAS_VERSION, Atlas, build_atlas
+from mech.atlas._store import ATLAS_VERSION, Atlas
+from mech.atlas._build import build_atlas
 from mech.atlas._search import Match, PlacedLinkage, query, refine
 
 __all__ = [
