@@ -7,8 +7,8 @@
 ``build`` samples four-bars in blocks and computes their signatures with a progress bar,
 writing each block as a Parquet part (``--resume`` continues a stopped build; ``--append``
 adds one part built with another seed to an atlas); ``--dask`` computes the blocks on a
-Dask cluster, with the same result. ``query`` reads a closed target curve from a CSV file of ``x, y``
-rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
+Dask cluster, with the same result. ``query`` reads a target curve (closed, or an open arc
+with ``--open``) from a CSV file of ``x, y`` rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
 draws them over the target (Matplotlib).
 """
 
@@ -72,6 +72,9 @@ def _describe(m):
              f"{'full turn' if m.full_turn else 'rocking %.1f..%.1f deg' % tuple(map(math.degrees, m.theta_range))}",
              f"    ABCD  a={f.a:.5g} b={f.b:.5g} c={f.c:.5g} d={f.d:.5g} p={f.coupler[0]:.5g} q={f.coupler[1]:.5g} "
              f"branch={f.branch:+d}  A=({A.real:.5g}, {A.imag:.5g}) D=({D.real:.5g}, {D.imag:.5g})"]
+    if m.arc is not None:
+        lines.append(f"    the part of its curve with curve parameter u from {math.degrees(m.arc[0]):.1f} "
+                     f"to {math.degrees(m.arc[1]):.1f} deg")
     for c in m.cognates:
         g = c.fourbar
         P, Q = c.pivots
@@ -86,7 +89,7 @@ def _query(args):
     atlas = Atlas.from_parquet(args.atlas)
     target = read_points(args.points)
     started = time.perf_counter()
-    matches = query(atlas, target, k=args.k)
+    matches = query(atlas, target, k=args.k, closed=not args.open)
     print(f"{len(atlas)} linkages searched in {1000 * (time.perf_counter() - started):.1f} ms")
     for m in matches:
         print(_describe(m))
@@ -103,7 +106,7 @@ def _plot(target, matches, path):
     fig, ax = plt.subplots(figsize=(6, 5))
     ax.plot(target.real, target.imag, "k.", ms=3, label="target")
     for m in matches:
-        curve = np.append(m.curve, m.curve[0])
+        curve = m.curve if m.arc is not None else np.append(m.curve, m.curve[0])
         A, D = m.linkage.pivots
         line, = ax.plot(curve.real, curve.imag, lw=1, label=f"#{m.rank} ({m.kind})")
         ax.plot([A.real, D.real], [A.imag, D.imag], "^", color=line.get_color())
@@ -130,10 +133,11 @@ def main(argv=None):
                    help="compute the blocks on Dask: local:N for a local cluster of N workers, "
                         "or a scheduler address such as tcp://host:8786")
     b.add_argument("--quiet", action="store_true", help="no progress bar")
-    q = sub.add_parser("query", help="find linkages for a closed curve given as a CSV of x, y rows")
+    q = sub.add_parser("query", help="find linkages for a curve (closed, or open with --open) given as a CSV of x, y rows")
     q.add_argument("atlas")
     q.add_argument("points")
     q.add_argument("-k", type=int, default=5)
+    q.add_argument("--open", action="store_true", help="the points are an open arc (matched against parts of curves)")
     q.add_argument("--plot", help="draw the matches over the target into this image file")
     args = parser.parse_args(argv)
     try:

@@ -79,6 +79,11 @@ class Atlas:
         """Squared norms of the signatures (the search's brute force reuses them)."""
         return np.einsum("ij,ij->i", self.signatures, self.signatures)
 
+    @cached_property
+    def _arc_cache(self):
+        """Sub-arc signatures of the curves, by (span, starts), for open targets (filled by `query`)."""
+        return {}
+
     @property
     def harmonics(self):
         """Harmonics per side of the signatures."""

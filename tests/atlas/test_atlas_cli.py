@@ -51,3 +51,18 @@ def test_cli_build_resume_and_dask(tmp_path, capsys):
     assert np.array_equal(Atlas.from_parquet(other).signatures, reference.signatures)
     assert main(["build", str(other), "-n", "10", "--dask", "local:x", "--quiet"]) == 2
     assert "Expected --dask local:N" in capsys.readouterr().err
+
+
+def test_cli_query_open_arc(tmp_path, capsys):
+    folder = tmp_path / "atlas"
+    assert main(["build", str(folder), "-n", "300", "--seed", "4", "--quiet"]) == 0
+    from mech.atlas._sampling import coupler_points
+
+    atlas = Atlas.from_parquet(folder)
+    row = int(np.flatnonzero(atlas.linkages.full_turn)[0])
+    arc = coupler_points(atlas.linkages.take([row]).columns(), np.linspace(0.5, 0.5 + np.pi, 150)[None, :])[0]
+    np.savetxt(tmp_path / "arc.csv", np.c_[arc.real, arc.imag], delimiter=",")
+    capsys.readouterr()
+    assert main(["query", str(folder), str(tmp_path / "arc.csv"), "-k", "1", "--open"]) == 0
+    out = capsys.readouterr().out
+    assert "curve parameter u from" in out
