@@ -1199,6 +1199,10 @@ CASES.update({
     "atlas.refine": E(lambda: functools.partial(at.refine, at.query(_small_atlas(), _SQUARE, k=1)[0]),
                       {"target": "point", "samples": "count", "iterations": "count"},
                       target=_SQUARE, samples=32, iterations=3),
+    "atlas.find_linkages": E(lambda: functools.partial(at.find_linkages, _small_atlas()),
+                             {"target": "point", "starts": "count", "goal": "scalar?", "samples": "count",
+                              "iterations": "count"},
+                             target=_SQUARE, starts=2, goal=0.5, samples=32, iterations=3),
     "atlas.PlacedLinkage.place": E(lambda: at.query(_small_atlas(), _SQUARE, k=1)[0].linkage.place,
                                    {"z": "point"}, z=[0.0, 1 + 1j]),
 })
