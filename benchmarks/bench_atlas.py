@@ -7,6 +7,13 @@
   of the time, moved, turned and scaled at random, with Gaussian noise of 1e-3 of their RMS
   radius; a trial succeeds when the first match is that row or one of its cognates (a miss
   is listed with the row's own rank and error among the first five);
+- open arcs: targets that are half a cycle of an atlas curve (from a random start, so half a
+  turn of the crank when it turns fully), with the same random similarity, reversal and
+  1e-3 noise; the recovery rate of the first match (the row or a cognate), overall and for
+  full-turn inputs, on the 10^4 atlas;
+- refinement from several starts (`find_linkages`, 8 starts): the coupler curve of example
+  2-1's linkage with a coupler point (20, 15), and curves of random linkages drawn with
+  another seed (not in the atlas): the relative RMS error of the first match and after;
 - Dask: the same build of the largest atlas on a local Dask cluster of 2 worker processes
   (one thread each), its throughput beside the single-process build's, and whether its
   signatures are identical to the single-process build's (they must be: every block is a
@@ -36,8 +43,8 @@ sys.path.insert(0, str(HERE))
 
 from bench_coupler_curve import machine, versions  # noqa: E402
 
-from mech.atlas import build_atlas, curve_signature, query  # noqa: E402
-from mech.atlas._sampling import coupler_curves  # noqa: E402
+from mech.atlas import build_atlas, curve_signature, find_linkages, query, sample_fourbars  # noqa: E402
+from mech.atlas._sampling import coupler_curves, coupler_points  # noqa: E402
 from mech.planar import FourBar, cognates  # noqa: E402
 
 GOAL_QUERY_S = 0.050
@@ -82,6 +89,64 @@ def _invariance(trials, rng):
         worst = max(worst, float(np.max(np.abs(curve_signature(w, resampled=True)
                                                - curve_signature(z, resampled=True)))))
     return worst
+
+
+def _arc_target(atlas, i, rng, points=200):
+    u0 = rng.uniform(0, 2 * np.pi)
+    arc = coupler_points(atlas.linkages.take([i]).columns(), (u0 + np.pi * np.linspace(0, 1, points))[None, :])[0]
+    if rng.random() < 0.5:
+        arc = arc[::-1]
+    moved = complex(*rng.normal(scale=10, size=2)) + 10 ** rng.uniform(-2, 2) * np.exp(
+        1j * rng.uniform(-np.pi, np.pi)) * arc
+    size = np.sqrt(np.mean(np.abs(moved - moved.mean()) ** 2))
+    return moved + 1e-3 * size * (rng.normal(size=points) + 1j * rng.normal(size=points)) / np.sqrt(2)
+
+
+def _open_arcs(atlas, trials, rng):
+    """Recovery of half-cycle arcs taken from atlas rows (first match is the row or a cognate)."""
+    query(atlas, _arc_target(atlas, 0, rng), closed=False)            # the sub-arc signatures
+    hits, full_hits, full, times, kinds = 0, 0, 0, [], {}
+    for _ in range(trials):
+        i = int(rng.integers(len(atlas)))
+        target = _arc_target(atlas, i, rng)
+        t = time.perf_counter()
+        best = query(atlas, target, closed=False, k=1)[0]
+        times.append(time.perf_counter() - t)
+        ok = _found(atlas, i, best)
+        hits += ok
+        kind = str(atlas.linkages.kind[i])
+        kinds.setdefault(kind, [0, 0])
+        kinds[kind][0] += ok
+        kinds[kind][1] += 1
+        if atlas.linkages.full_turn[i]:
+            full += 1
+            full_hits += ok
+    print(f"open arcs (half a cycle, 1e-3 noise), n = {len(atlas)}: recovered {hits}/{trials}, full-turn inputs "
+          f"{full_hits}/{full}, query median {1e3 * np.median(times):.0f} ms; by kind "
+          + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in sorted(kinds.items())))
+    return {"n": len(atlas), "trials": trials, "recovered": hits, "full_turn_trials": full,
+            "full_turn_recovered": full_hits, "by_kind": kinds, "query_median_s": float(np.median(times))}
+
+
+def _refinement(atlas, targets, rng):
+    """Multi-start refinement of targets not in the atlas: relative error before and after."""
+    t = np.linspace(0, 2 * np.pi, 300, endpoint=False)
+    cases = [("example 2-1, coupler (20, 15)", FourBar(10, 40, 30, 35, coupler=(20, 15)).solve(t).P)]
+    others = sample_fourbars(400, seed=987654)
+    others = others.take(others.usable & others.full_turn)
+    for j in range(targets):
+        cases.append((f"random crank-driven linkage {j}", others.fourbar(j).solve(t).P))
+    rows = []
+    for name, curve in cases:
+        started = time.perf_counter()
+        first = query(atlas, curve, k=1)[0]
+        found = find_linkages(atlas, curve, starts=8)
+        rows.append({"target": name, "first_relative_error": first.relative_error,
+                     "refined_relative_error": found[0].relative_error,
+                     "each_start": [m.relative_error for m in found], "seconds": time.perf_counter() - started})
+        print(f"refine, 8 starts: {name}: first match {100 * first.relative_error:.3f} % -> "
+              f"{100 * found[0].relative_error:.4f} % RMS of its size ({rows[-1]['seconds']:.1f} s)")
+    return rows
 
 
 def _dask_build(n, single):
@@ -149,11 +214,15 @@ def main(argv=None):
             print(f"    miss: row {miss['row']} ({miss['kind']}) first match error {miss['first_relative_error']:.2e}, "
                   f"the row itself at rank {miss['row_rank']} with error {miss['row_relative_error']}")
     dask_report = _dask_build(sizes[-1], atlas)
+    small = build_atlas(sizes[0], seed=0)
+    arcs = _open_arcs(small, 20 if args.quick else 100, rng)
+    refined = _refinement(small, 2 if args.quick else 10, rng)
     worst = _invariance(200 if args.quick else 5000, rng)
     print(f"largest signature change under similarity + restart + reversal: {worst:.2e}")
     report = {"date": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"),
               "goal_query_s": GOAL_QUERY_S, "machine": machine(), "versions": versions(),
-              "results": results, "dask": dask_report, "invariance_max": worst}
+              "results": results, "dask": dask_report, "open_arcs": arcs, "refinement": refined,
+              "invariance_max": worst}
     output = args.output or (None if args.quick else OUTPUT)
     if output is not None:
         output.write_text(json.dumps(report, indent=2) + "\n")
