@@ -1,6 +1,6 @@
 """A searchable atlas of coupler curves: which four-bars trace a curve like this one (issue 13).
 
-Four layers, each usable alone:
+Layers, each usable alone:
 
 - shape signatures (`curve_signature`, `resample`, `read_points`): a fixed-length vector
   that does not depend on where a curve lies, its size, its turn, its start or its direction
@@ -13,7 +13,10 @@ Four layers, each usable alone:
   the closed curves), `refine`, which improves a match by optimisation on the real curve
   error, and `find_linkages`, which refines the best few matches and keeps the best;
 - builds in blocks (`build_atlas`), on a Dask cluster if asked, written part by part to a
-  folder and resumable.
+  folder and resumable;
+- on the sphere: `sphere_signature` (invariant to rotations of the sphere, start and
+  direction; :ref:`deriv-sphere-signature`), `build_sphere_atlas` and `query_sphere` for
+  spherical four-bars whose crank turns fully.
 
 ``import mech.atlas`` loads NumPy only: pyarrow is imported when an atlas is saved or
 loaded, tqdm when a build shows a progress bar, Dask only by the code that makes a client.
@@ -25,6 +28,7 @@ from mech.atlas._store import ATLAS_VERSION, Atlas
 from mech.atlas._build import build_atlas
 from mech.atlas._search import Match, PlacedLinkage, query, refine
 from mech.atlas._multistart import find_linkages
+from mech.atlas._sphere import SphereAtlas, SphereMatch, build_sphere_atlas, query_sphere, sphere_signature
 
 __all__ = [
     "ATLAS_VERSION",
@@ -32,12 +36,17 @@ __all__ = [
     "FourBarSamples",
     "Match",
     "PlacedLinkage",
+    "SphereAtlas",
+    "SphereMatch",
     "build_atlas",
+    "build_sphere_atlas",
     "curve_signature",
     "find_linkages",
     "query",
+    "query_sphere",
     "read_points",
     "refine",
     "resample",
     "sample_fourbars",
+    "sphere_signature",
 ]
