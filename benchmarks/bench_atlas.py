@@ -14,6 +14,9 @@
 - refinement from several starts (`find_linkages`, 8 starts): the coupler curve of example
   2-1's linkage with a coupler point (20, 15), and curves of random linkages drawn with
   another seed (not in the atlas): the relative RMS error of the first match and after;
+- sphere: a spherical atlas of 2000 four-bars whose crank turns fully; targets from random
+  rows under a random rotation of the sphere, restart, reversal and 1e-3 noise; the rate at
+  which the row comes first, and the query time;
 - Dask: the same build of the largest atlas on a local Dask cluster of 2 worker processes
   (one thread each), its throughput beside the single-process build's, and whether its
   signatures are identical to the single-process build's (they must be: every block is a
@@ -43,7 +46,8 @@ sys.path.insert(0, str(HERE))
 
 from bench_coupler_curve import machine, versions  # noqa: E402
 
-from mech.atlas import build_atlas, curve_signature, find_linkages, query, sample_fourbars  # noqa: E402
+from mech.atlas import (build_atlas, build_sphere_atlas, curve_signature, find_linkages, query,  # noqa: E402
+                        query_sphere, sample_fourbars)
 from mech.atlas._sampling import coupler_curves, coupler_points  # noqa: E402
 from mech.planar import FourBar, cognates  # noqa: E402
 
@@ -149,6 +153,28 @@ def _refinement(atlas, targets, rng):
     return rows
 
 
+def _sphere(trials, rng, n=2000):
+    """Recovery on the sphere under a random rotation, restart, reversal and 1e-3 noise."""
+    t = time.perf_counter()
+    atlas = build_sphere_atlas(n, seed=4)
+    build = time.perf_counter() - t
+    hits, times = 0, []
+    for _ in range(trials):
+        i = int(rng.integers(n))
+        c = np.roll(atlas.curves(i, 300)[0], int(rng.integers(300)), axis=0)
+        if rng.random() < 0.5:
+            c = c[::-1]
+        q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+        x = c @ (q * np.sign(np.linalg.det(q))).T + 1e-3 * rng.normal(size=c.shape)
+        t = time.perf_counter()
+        best = query_sphere(atlas, x / np.linalg.norm(x, axis=1)[:, None], k=1)[0]
+        times.append(time.perf_counter() - t)
+        hits += best.index == i
+    print(f"sphere: n = {n}, build {build:.2f} s, recovered {hits}/{trials} under rotation + 1e-3 noise, "
+          f"query median {1e3 * np.median(times):.0f} ms")
+    return {"n": n, "build_s": build, "trials": trials, "recovered": hits, "query_median_s": float(np.median(times))}
+
+
 def _dask_build(n, single):
     """Build the atlas of `single` again on a local cluster of 2 worker processes; compare."""
     import logging
@@ -217,11 +243,12 @@ def main(argv=None):
     small = build_atlas(sizes[0], seed=0)
     arcs = _open_arcs(small, 20 if args.quick else 100, rng)
     refined = _refinement(small, 2 if args.quick else 10, rng)
+    sphere = _sphere(10 if args.quick else 100, rng)
     worst = _invariance(200 if args.quick else 5000, rng)
     print(f"largest signature change under similarity + restart + reversal: {worst:.2e}")
     report = {"date": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"),
               "goal_query_s": GOAL_QUERY_S, "machine": machine(), "versions": versions(),
-              "results": results, "dask": dask_report, "open_arcs": arcs, "refinement": refined,
+              "results": results, "dask": dask_report, "open_arcs": arcs, "refinement": refined, "sphere": sphere,
               "invariance_max": worst}
     output = args.output or (None if args.quick else OUTPUT)
     if output is not None:
