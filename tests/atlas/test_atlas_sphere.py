@@ -90,3 +90,13 @@ def test_query_sphere_errors(atlas):
     with pytest.raises(ValueError, match="Expected one curve in `target`"):
         query_sphere(atlas, np.ones((2, 5, 3)))
     assert isinstance(atlas, SphereAtlas)
+
+
+def test_sphere_signature_derivation_checks_pass():
+    """The derivation page generates no code, so the freshness test skips it: run its checks here."""
+    pytest.importorskip("sympy")
+    from derivations import __main__ as runner
+
+    page = next(p for p in runner.notebooks() if p.stem == "sphere_signature")
+    namespace = runner.run(page)
+    assert namespace["worst"] < 1e-12 and namespace["apart"] > 1e-4
