@@ -7,7 +7,7 @@ Plain plotting function: takes the target points and the ``Match`` records that
 
 import numpy as np
 
-__all__ = ["search_figure"]
+__all__ = ["arc_figure", "search_figure"]
 
 
 def _poses(match, count):
@@ -57,3 +57,26 @@ def search_figure(target, matches, axes=None, poses=4):
         ax.set_xlabel("x")
         ax.set_ylabel("y")
     return axes
+
+
+def arc_figure(target, matches, wholes, ax=None):
+    """Draw an open target (dots), the matched parts of the matches' curves (solid) and
+    the rest of each closed curve (dashed); ``wholes[i]`` is match i's closed curve, placed."""
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        _, ax = plt.subplots(figsize=(7.0, 5.5), layout="constrained")
+    ax.plot(target.real, target.imag, ".", color="0.3", ms=3, label="target arc (noisy)")
+    for m, whole in zip(matches, wholes):
+        closed = np.append(whole, whole[0])
+        line, = ax.plot(m.curve.real, m.curve.imag, lw=2.5 if m.rank == 0 else 1.2,
+                        label=f"#{m.rank}: row {m.index}, {m.kind}, error {100 * m.relative_error:.2g} %")
+        ax.plot(closed.real, closed.imag, "--", lw=0.8, color=line.get_color())
+        A, D = m.linkage.pivots
+        ax.plot([A.real, D.real], [A.imag, D.imag], "^", color=line.get_color(), ms=7)
+    ax.set_title("An open target and the parts of closed coupler curves that match it")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12))
+    ax.set_aspect("equal")
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    return ax

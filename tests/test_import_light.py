@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-HEAVY = ("sympy", "scipy", "matplotlib", "pyarrow", "dask", "tqdm")
+HEAVY = ("sympy", "scipy", "matplotlib", "pyarrow", "dask", "distributed", "tqdm")
 
 
 def _heavy_modules_after(statements):

@@ -1212,6 +1212,11 @@ def _new_dir():
 
 
 _SQUARE = [0, 1, 1 + 1j, 1j]
+_SPHERE_CURVE = [[0.6, 0.0, 0.8], [0.0, 0.6, 0.8], [-0.6, 0.0, 0.8], [0.0, -0.5, 0.8], [0.3, -0.3, 0.9]]
+
+
+def _small_sphere_atlas():
+    return at.build_sphere_atlas(8, seed=1, harmonics=3, samples=16)
 CASES.update({
     "atlas.curve_signature": E(lambda: at.curve_signature,
                                {"points": "point", "closed": "bool", "harmonics": "count", "samples": "count",
@@ -1234,25 +1239,44 @@ CASES.update({
                            {"n": "count", "seed": "seed", "harmonics": "count", "samples": "count",
                             "lengths": ("scalar", lambda v: (v, 5.0)),
                             "coupler": ("scalar", lambda v: (v, 2.0, -1.0, 1.0)), "min_transmission": "scalar",
-                            "block": "count", "progress": "bool"},
+                            "block": "count", "progress": "bool", "resume": "bool"},
                            n=30, seed=2, harmonics=4, samples=32, lengths=(0.2, 5.0), coupler=(-1.0, 2.0, -1.0, 1.0),
-                           min_transmission=0.0, block=64, progress=False),
+                           min_transmission=0.0, block=64, progress=False, resume=False),
     "atlas.Atlas.curves": E(lambda: _small_atlas().curves, {"index": "int", "samples": "count?"},
                             index=[0, 3], samples=None),
     "atlas.Atlas.to_parquet": E(lambda: functools.partial(_small_atlas().to_parquet, _new_dir()),
                                 {"append": "bool"}, append=False),
     "atlas.Atlas.from_parquet": E(lambda: functools.partial(at.Atlas.from_parquet, _atlas_dir())),
     "atlas.query": E(lambda: functools.partial(at.query, _small_atlas()),
-                     {"target": "point", "k": "count", "shortlist": "count", "resampled": "bool"},
-                     target=_SQUARE, k=2, shortlist=8, resampled=False),
+                     {"target": "point", "k": "count", "shortlist": "count", "resampled": "bool",
+                      "closed": "bool", "span": "scalar", "starts": "count"},
+                     target=_SQUARE, k=2, shortlist=8, resampled=False, closed=True, span=0.5, starts=8),
     "atlas.refine": E(lambda: functools.partial(at.refine, at.query(_small_atlas(), _SQUARE, k=1)[0]),
                       {"target": "point", "samples": "count", "iterations": "count"},
                       target=_SQUARE, samples=32, iterations=3),
+    "atlas.find_linkages": E(lambda: functools.partial(at.find_linkages, _small_atlas()),
+                             {"target": "point", "starts": "count", "goal": "scalar?", "samples": "count",
+                              "iterations": "count"},
+                             target=_SQUARE, starts=2, goal=0.5, samples=32, iterations=3),
+    "atlas.sphere_signature": E(lambda: at.sphere_signature,
+                                {"points": "vec3", "harmonics": "count", "samples": "count", "resampled": "bool"},
+                                points=_SPHERE_CURVE, harmonics=3, samples=16, resampled=False),
+    "atlas.build_sphere_atlas": E(lambda: at.build_sphere_atlas,
+                                  {"n": "count", "seed": "seed", "harmonics": "count", "samples": "count",
+                                   "arcs": ("scalar", lambda v: (v, 1.4)),
+                                   "coupler_arc": ("scalar", lambda v: (v, 1.2))},
+                                  n=3, seed=1, harmonics=3, samples=16, arcs=(0.15, 1.4), coupler_arc=(0.1, 1.2)),
+    "atlas.query_sphere": E(lambda: functools.partial(at.query_sphere, _small_sphere_atlas()),
+                            {"target": "vec3", "k": "count", "shortlist": "count", "resampled": "bool"},
+                            target=_SPHERE_CURVE, k=1, shortlist=4, resampled=False),
+    "atlas.SphereAtlas.fourbar": E(lambda: _small_sphere_atlas().fourbar, {"i": "int"}, i=1),
+    "atlas.SphereAtlas.curves": E(lambda: _small_sphere_atlas().curves, {"samples": "count?"},
+                                  index=[0, 1], samples=None),
     "atlas.PlacedLinkage.place": E(lambda: at.query(_small_atlas(), _SQUARE, k=1)[0].linkage.place,
                                    {"z": "point"}, z=[0.0, 1 + 1j]),
 })
 RECORDS.update({f"atlas.{n}": "result record built by the package"
-                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage")})
+                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "SphereAtlas", "SphereMatch")})
 
 
 # ----------------------------------------------------------------------------- the walk

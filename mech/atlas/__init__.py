@@ -1,6 +1,6 @@
 """A searchable atlas of coupler curves: which four-bars trace a curve like this one (issue 13).
 
-Three layers, each usable alone:
+Layers, each usable alone:
 
 - shape signatures (`curve_signature`, `resample`, `read_points`): a fixed-length vector
   that does not depend on where a curve lies, its size, its turn, its start or its direction
@@ -9,17 +9,26 @@ Three layers, each usable alone:
   the Grashof type, assembly branch, input range and minimum transmission angle of each;
 - the atlas itself (`build_atlas`, `Atlas`, stored as Parquet through pyarrow) and its
   search (`query`, returning `Match` records placed on the target, with the two
-  Roberts-Chebyshev cognates of each match), and `refine`, which improves a match by
-  optimisation on the real curve error.
+  Roberts-Chebyshev cognates of each match; an open arc is matched against parts of
+  the closed curves), `refine`, which improves a match by optimisation on the real curve
+  error, and `find_linkages`, which refines the best few matches and keeps the best;
+- builds in blocks (`build_atlas`), on a Dask cluster if asked, written part by part to a
+  folder and resumable;
+- on the sphere: `sphere_signature` (invariant to rotations of the sphere, start and
+  direction; :ref:`deriv-sphere-signature`), `build_sphere_atlas` and `query_sphere` for
+  spherical four-bars whose crank turns fully.
 
 ``import mech.atlas`` loads NumPy only: pyarrow is imported when an atlas is saved or
-loaded, tqdm when a build shows a progress bar.
+loaded, tqdm when a build shows a progress bar, Dask only by the code that makes a client.
 """
 
 from mech.atlas._signature import curve_signature, read_points, resample
 from mech.atlas._sampling import FourBarSamples, sample_fourbars
-from mech.atlas._store import ATLAS_VERSION, Atlas, build_atlas
+from mech.atlas._store import ATLAS_VERSION, Atlas
+from mech.atlas._build import build_atlas
 from mech.atlas._search import Match, PlacedLinkage, query, refine
+from mech.atlas._multistart import find_linkages
+from mech.atlas._sphere import SphereAtlas, SphereMatch, build_sphere_atlas, query_sphere, sphere_signature
 
 __all__ = [
     "ATLAS_VERSION",
@@ -27,11 +36,17 @@ __all__ = [
     "FourBarSamples",
     "Match",
     "PlacedLinkage",
+    "SphereAtlas",
+    "SphereMatch",
     "build_atlas",
+    "build_sphere_atlas",
     "curve_signature",
+    "find_linkages",
     "query",
+    "query_sphere",
     "read_points",
     "refine",
     "resample",
     "sample_fourbars",
+    "sphere_signature",
 ]

@@ -1,15 +1,19 @@
 """Command line of the coupler-curve atlas.
 
-    python -m mech.atlas build ATLAS_DIR -n 10000 [--seed 0] [--append] [--min-transmission DEG]
-    python -m mech.atlas query ATLAS_DIR points.csv [-k 5] [--plot out.png]
+    python -m mech.atlas build ATLAS_DIR -n 10000 [--seed 0] [--min-transmission DEG]
+                                          [--resume | --append] [--dask local:2 | --dask tcp://host:8786]
+    python -m mech.atlas query ATLAS_DIR points.csv [-k 5] [--open] [--plot out.png]
 
-``build`` samples four-bars, computes their signatures with a progress bar and writes (or
-appends) a Parquet part; ``query`` reads a closed target curve from a CSV file of ``x, y``
-rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
+``build`` samples four-bars in blocks and computes their signatures with a progress bar,
+writing each block as a Parquet part (``--resume`` continues a stopped build; ``--append``
+adds one part built with another seed to an atlas); ``--dask`` computes the blocks on a
+Dask cluster, with the same result. ``query`` reads a target curve (closed, or an open arc
+with ``--open``) from a CSV file of ``x, y`` rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
 draws them over the target (Matplotlib).
 """
 
 import argparse
+import contextlib
 import math
 import sys
 import time
@@ -20,13 +24,44 @@ import numpy as np
 def _build(args):
     from mech.atlas import Atlas, build_atlas
 
+    if args.append and args.resume:
+        raise ValueError("Expected one of --append and --resume, got both")
     started = time.perf_counter()
-    atlas = build_atlas(args.n, seed=args.seed, harmonics=args.harmonics, samples=args.samples,
-                        min_transmission=math.radians(args.min_transmission), progress=not args.quiet)
-    part = atlas.to_parquet(args.atlas, append=args.append)
+    options = dict(seed=args.seed, harmonics=args.harmonics, samples=args.samples, block=args.block,
+                   min_transmission=math.radians(args.min_transmission), progress=not args.quiet)
+    with _client(args.dask) as client:
+        if args.append:
+            atlas = build_atlas(args.n, client=client, **options)
+            part = atlas.to_parquet(args.atlas, append=True)
+            where = f"to {part}"
+        else:
+            atlas = build_atlas(args.n, client=client, path=args.atlas, resume=args.resume, **options)
+            where = f"to {args.atlas}"
     total = len(Atlas.from_parquet(args.atlas))
-    print(f"wrote {len(atlas)} linkages to {part} in {time.perf_counter() - started:.2f} s "
-          f"(atlas now {total})")
+    print(f"wrote {len(atlas)} linkages {where} in {time.perf_counter() - started:.2f} s (atlas now {total})")
+
+
+@contextlib.contextmanager
+def _client(spec):
+    """No client for None; a local cluster of N worker processes for "local:N"; else a scheduler address."""
+    if spec is None:
+        yield None
+        return
+    import logging
+
+    from distributed import Client, LocalCluster
+
+    logging.getLogger("distributed").setLevel(logging.ERROR)
+    if spec.startswith("local"):
+        _, _, count = spec.partition(":")
+        if not (count or "2").isdigit() or int(count or "2") < 1:
+            raise ValueError(f"Expected --dask local:N with N >= 1 workers, got {spec!r}")
+        with LocalCluster(n_workers=int(count or "2"), threads_per_worker=1, dashboard_address=None) as cluster, \
+                Client(cluster) as client:
+            yield client
+    else:
+        with Client(spec) as client:
+            yield client
 
 
 def _describe(m):
@@ -37,6 +72,9 @@ def _describe(m):
              f"{'full turn' if m.full_turn else 'rocking %.1f..%.1f deg' % tuple(map(math.degrees, m.theta_range))}",
              f"    ABCD  a={f.a:.5g} b={f.b:.5g} c={f.c:.5g} d={f.d:.5g} p={f.coupler[0]:.5g} q={f.coupler[1]:.5g} "
              f"branch={f.branch:+d}  A=({A.real:.5g}, {A.imag:.5g}) D=({D.real:.5g}, {D.imag:.5g})"]
+    if m.arc is not None:
+        lines.append(f"    the part of its curve with curve parameter u from {math.degrees(m.arc[0]):.1f} "
+                     f"to {math.degrees(m.arc[1]):.1f} deg")
     for c in m.cognates:
         g = c.fourbar
         P, Q = c.pivots
@@ -51,7 +89,7 @@ def _query(args):
     atlas = Atlas.from_parquet(args.atlas)
     target = read_points(args.points)
     started = time.perf_counter()
-    matches = query(atlas, target, k=args.k)
+    matches = query(atlas, target, k=args.k, closed=not args.open)
     print(f"{len(atlas)} linkages searched in {1000 * (time.perf_counter() - started):.1f} ms")
     for m in matches:
         print(_describe(m))
@@ -68,7 +106,7 @@ def _plot(target, matches, path):
     fig, ax = plt.subplots(figsize=(6, 5))
     ax.plot(target.real, target.imag, "k.", ms=3, label="target")
     for m in matches:
-        curve = np.append(m.curve, m.curve[0])
+        curve = m.curve if m.arc is not None else np.append(m.curve, m.curve[0])
         A, D = m.linkage.pivots
         line, = ax.plot(curve.real, curve.imag, lw=1, label=f"#{m.rank} ({m.kind})")
         ax.plot([A.real, D.real], [A.imag, D.imag], "^", color=line.get_color())
@@ -88,12 +126,18 @@ def main(argv=None):
     b.add_argument("--harmonics", type=int, default=8)
     b.add_argument("--samples", type=int, default=128)
     b.add_argument("--min-transmission", type=float, default=0.0, help="degrees")
+    b.add_argument("--block", type=int, default=4096, help="linkages drawn per block (default 4096)")
     b.add_argument("--append", action="store_true", help="add a part to an existing atlas")
+    b.add_argument("--resume", action="store_true", help="continue a stopped build (same settings)")
+    b.add_argument("--dask", metavar="CLUSTER",
+                   help="compute the blocks on Dask: local:N for a local cluster of N workers, "
+                        "or a scheduler address such as tcp://host:8786")
     b.add_argument("--quiet", action="store_true", help="no progress bar")
-    q = sub.add_parser("query", help="find linkages for a closed curve given as a CSV of x, y rows")
+    q = sub.add_parser("query", help="find linkages for a curve (closed, or open with --open) given as a CSV of x, y rows")
     q.add_argument("atlas")
     q.add_argument("points")
     q.add_argument("-k", type=int, default=5)
+    q.add_argument("--open", action="store_true", help="the points are an open arc (matched against parts of curves)")
     q.add_argument("--plot", help="draw the matches over the target into this image file")
     args = parser.parse_args(argv)
     try:

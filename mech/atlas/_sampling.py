@@ -162,11 +162,19 @@ def _kinds(a, b, c, d):
 
 def coupler_curves(cols, samples):
     """Closed coupler curves (n, samples) for columns a, b, c, d, p, q, branch, full_turn, theta_lo/hi."""
+    return coupler_points(cols, 2 * np.pi * (np.arange(samples) + 0.5) / samples)
+
+
+def coupler_points(cols, u):
+    """Coupler points at curve parameters `u` (broadcast against (n, 1)) of the closed curves.
+
+    ``u`` runs over [0, 2 pi) once around each closed curve: the input angle for a full
+    turn, ``theta = mid + half * sin(u)`` on ``branch * sign(cos u)`` for a rocking input.
+    """
     a, b, c, d, p, q = (np.asarray(cols[k], dtype=float)[:, None] for k in "abcdpq")
     branch = np.asarray(cols["branch"])[:, None]
     full = np.asarray(cols["full_turn"])[:, None]
     lo, hi = np.asarray(cols["theta_lo"])[:, None], np.asarray(cols["theta_hi"])[:, None]
-    u = 2 * np.pi * (np.arange(samples) + 0.5) / samples
     theta = np.where(full, u, 0.5 * (lo + hi) + 0.5 * (hi - lo) * np.sin(u))
     side = np.where(full, branch, branch * np.where(np.cos(u) >= 0.0, 1, -1))
     gaps = fourbar_assembly_gaps(a, b, c, d)

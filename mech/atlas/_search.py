@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import bool_flag, instance, integer, planar_points
-from mech.atlas._signature import _curves, _resample_rows, _samples, normal_form
+from mech._validate import bool_flag, instance, integer, planar_points, real_number
+from mech.atlas._signature import _close_arc, _curves, _resample_rows, _samples, normal_form
 from mech.atlas._store import Atlas
 from mech.planar.kinematics._fourbar import FourBar
 
@@ -25,6 +25,8 @@ _UPSAMPLE = 16
 _DENSE = 4
 _REFINE = 8
 _LEVELS = 6
+_ARC_WIDER = 4
+_ARC_COARSE = 4
 
 
 @dataclass(frozen=True)
@@ -96,6 +98,11 @@ class Match:
     refined : bool
         True for a match returned by `refine` (its linkage is no longer the atlas row
         `index`, from which the refinement started).
+    arc : (float, float) or None
+        For an open target, the part of the closed coupler curve that matches it, as the
+        curve parameter u at its two ends (the input angle for a crank that turns fully;
+        see `FourBarSamples.curves`), with `direction` telling which end the target starts
+        at; None for a closed target.
     """
 
     rank: int
@@ -112,6 +119,7 @@ class Match:
     theta_range: tuple
     curve: np.ndarray
     refined: bool = False
+    arc: tuple = None
 
 
 def _signature_distances(signatures, norms, candidates):
@@ -191,22 +199,33 @@ def _placed_cognates(fourbar, origin, w):
     return tuple(out)
 
 
-def query(atlas, target, *, k=5, shortlist=64, resampled=False):
-    """Find the four-bars of an atlas whose coupler curves best match a closed target curve.
+def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, span=0.5, starts=32):
+    """Find the four-bars of an atlas whose coupler curves best match a target curve or arc.
 
     Parameters
     ----------
     atlas : Atlas
         The atlas to search (`build_atlas`, `Atlas.from_parquet`).
     target : array_like, complex, shape (m,)
-        Points ``x + 1j*y`` along a closed curve, in order, m >= 3; any placement, size,
-        start and direction (read a CSV file with `read_points`).
+        Points ``x + 1j*y`` along a closed curve (m >= 3) or an open arc (m >= 2), in
+        order; any placement, size, start and direction (read a CSV file with
+        `read_points`).
     k : int, optional
         Number of matches returned, 1 <= k <= shortlist.
     shortlist : int, optional
-        Entries taken from the signature stage to the exact alignment stage.
+        Entries taken from the signature stage to the exact alignment stage (for an open
+        arc, four times as many get a coarse alignment first).
     resampled : bool, optional
-        True if `target` is already at equal arc-length steps (used as given).
+        True if a closed `target` is already at equal arc-length steps (used as given).
+    closed : bool, optional
+        False for an open arc, matched against parts of the atlas's closed curves.
+    span : float, optional
+        For an open arc: the fraction of a closed curve's cycle (of its curve parameter,
+        the input angle for a crank that turns fully) the arc is expected to cover, in
+        (0, 1]; it places the sub-arcs of the signature stage, and the alignment frees it.
+    starts : int, optional
+        For an open arc: sub-arcs per closed curve in the signature stage (their
+        signatures are computed on the first open query and kept with the atlas).
 
     Returns
     -------
@@ -225,7 +244,9 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False):
     target (:ref:`deriv-shape-signature`), so it needs no tie-break; the alignment stage
     then removes the normalisation's sensitivity (a nearly circular first harmonic) by
     aligning exactly. Matches are linkages of the atlas scaled, turned and moved; their
-    cognates trace the same curve with other pivots.
+    cognates trace the same curve with other pivots. An open arc is compared with the
+    signatures of sub-arcs of each closed curve (the arc run forward and back), then
+    aligned by a pattern search on the two ends of the sub-arc; its matches carry `arc`.
 
     Examples
     --------
@@ -244,11 +265,18 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False):
     k = integer("k", k, minimum=1, maximum=10**4)
     shortlist = integer("shortlist", shortlist, minimum=1, maximum=10**5)
     resampled = bool_flag("resampled", resampled)
+    closed = bool_flag("closed", closed)
+    span = real_number("span", span)
+    if not 0.0 < span <= 1.0:
+        raise ValueError(f"Expected `span` in (0, 1], got {span!r}")
+    starts = integer("starts", starts, minimum=1, maximum=1024)
     if k > shortlist:
         raise ValueError(f"Expected `k` <= shortlist = {shortlist}, got {k}")
-    z, lead = _curves(target, True, "target")
+    z, lead = _curves(target, closed, "target")
     if lead != (1,) and lead != ():
         raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
+    if not closed:
+        return _query_arc(atlas, z, k, shortlist, span, starts)
     n = atlas.samples
     if resampled:
         if z.shape[1] != n:
@@ -264,6 +292,36 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False):
     err, w, centroid, radius, curves, direction = _best_fits(t[0], dense, max(k, _REFINE))
     return [_match(rank, int(short[j]), atlas.linkages.take([short[j]]), t[0], w[j], centroid[j], err[j],
                    radius, direction[j], float(dist[short[j]]), curves[j])
+            for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+
+
+def _query_arc(atlas, z, k, shortlist, span, starts):
+    """`query` for an open arc `z` (1, m): sub-arc signatures, then alignment of both ends."""
+    from mech.atlas._arcs import align_arcs, arc_signatures
+
+    n = atlas.samples
+    t = _resample_rows(z, n // 2 + 1, False)
+    form = normal_form(_close_arc(t), atlas.harmonics)
+    sigs, norms = arc_signatures(atlas, span, starts)
+    dist = _signature_distances(sigs.reshape(-1, sigs.shape[2]), norms.reshape(-1),
+                                form.candidates[0]).reshape(len(atlas), starts)
+    where = np.argmin(dist, axis=1)
+    best = dist[np.arange(len(atlas)), where]
+    # a sub-arc's signature changes with its ends, so the signature stage is less sharp
+    # than for closed curves: a longer list gets a coarse alignment, the best of it a fine one
+    m = min(_ARC_WIDER * shortlist, len(atlas))
+    short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    u0 = 2 * np.pi * (where[short] / starts + 0.5 / (2 * atlas.samples))
+    step = np.pi / starts
+    err, *_, u0, u1, _ = align_arcs(t[0], atlas.linkages.take(short), u0, u0 + 2 * np.pi * span, step,
+                                    levels=_ARC_COARSE)
+    keep = np.argsort(err, kind="stable")[:min(shortlist, m)]
+    short, u0, u1 = short[keep], u0[keep], u1[keep]
+    rows = atlas.linkages.take(short)
+    err, w, centroid, points, u0, u1, direction = align_arcs(t[0], rows, u0, u1, step / 2**_ARC_COARSE)
+    radius = np.sqrt(np.mean(np.abs(t[0] - t[0].mean()) ** 2))
+    return [_match(rank, int(short[j]), rows.take([j]), t[0], w[j], centroid[j], err[j], radius, direction[j],
+                   float(best[short[j]]), points[j], arc=(float(u0[j]), float(u1[j])))
             for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
 
 
@@ -290,7 +348,7 @@ def _best_fits(t, dense, keep, levels=None):
     return err, w, centroid, radius, curves, direction
 
 
-def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, curve, refined=False):
+def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, curve, refined=False, arc=None):
     """The `Match` of one linkage (a one-row FourBarSamples) placed by ``z -> origin + w z``."""
     a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
     branch = int(row.branch[0])
@@ -301,7 +359,7 @@ def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, c
                                             float(np.angle(w))),
                  _placed_cognates(unit, origin, w), int(direction), float(err), float(err / radius), distance,
                  str(row.kind[0]), float(row.gamma_min[0]), bool(row.full_turn[0]),
-                 (float(row.theta_lo[0]), float(row.theta_hi[0])), origin + w * curve, refined)
+                 (float(row.theta_lo[0]), float(row.theta_hi[0])), origin + w * curve, refined, arc)
 
 
 

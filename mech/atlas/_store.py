@@ -10,22 +10,21 @@ the parts. pyarrow is imported only here, inside the functions that read or writ
 
 import json
 import os
-import time
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
 
 import numpy as np
 
-from mech._validate import _show, bool_flag, integer, nonnegative_number
-from mech.atlas._sampling import COUPLER, LENGTHS, FourBarSamples, coupler_curves, sample_fourbars
-from mech.atlas._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
+from mech._validate import _show, bool_flag, integer
+from mech.atlas._sampling import FourBarSamples, coupler_curves
 
-__all__ = ["ATLAS_VERSION", "Atlas", "build_atlas"]
+__all__ = ["ATLAS_VERSION", "Atlas"]
 
 #: Format version of a stored atlas; a different version is refused on loading.
 ATLAS_VERSION = 1
 _META_KEY = b"mech.atlas"
+_CHUNK_KEY = b"mech.atlas.chunk"
 _COLUMNS = ("a", "b", "c", "d", "p", "q", "branch", "kind", "full_turn", "theta_lo", "theta_hi",
             "gamma_min", "movable", "usable")
 
@@ -80,6 +79,11 @@ class Atlas:
         """Squared norms of the signatures (the search's brute force reuses them)."""
         return np.einsum("ij,ij->i", self.signatures, self.signatures)
 
+    @cached_property
+    def _arc_cache(self):
+        """Sub-arc signatures of the curves, by (span, starts), for open targets (filled by `query`)."""
+        return {}
+
     @property
     def harmonics(self):
         """Harmonics per side of the signatures."""
@@ -115,9 +119,6 @@ class Atlas:
         pathlib.Path
             The part written.
         """
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-
         append = bool_flag("append", append)
         folder = _folder(path)
         parts = sorted(folder.glob("part-*.parquet")) if folder.exists() else []
@@ -127,16 +128,10 @@ class Atlas:
         if parts:
             _check_settings(_read_settings(parts[0]), self.settings, str(path))
         folder.mkdir(parents=True, exist_ok=True)
-        cols = self.linkages.columns()
-        arrays = [pa.array(cols[name]) for name in _COLUMNS]
-        arrays.append(pa.array(self.seeds.astype(np.int64)))
-        width = self.signatures.shape[1]
-        flat = pa.array(np.ascontiguousarray(self.signatures, dtype=np.float64).reshape(-1))
-        arrays.append(pa.FixedSizeListArray.from_arrays(flat, width))
-        table = pa.Table.from_arrays(arrays, names=[*_COLUMNS, "seed", "signature"])
-        table = table.replace_schema_metadata({_META_KEY: json.dumps(self.settings).encode()})
-        target = folder / f"part-{len(parts):05d}.parquet"
-        pq.write_table(table, target)
+        # after the last part (a chunked build may leave gaps in the numbers)
+        number = max((int(p.stem.split("-")[1]) for p in parts if p.stem.split("-")[1].isdigit()), default=-1) + 1
+        target = folder / f"part-{number:05d}.parquet"
+        write_part(target, self.linkages, self.signatures, self.seeds, self.settings)
         return target
 
     @classmethod
@@ -171,6 +166,40 @@ class Atlas:
         return cls(FourBarSamples(**cols), sig.reshape(-1, width), seeds, settings)
 
 
+def write_part(target, linkages, signatures, seeds, settings, chunk=None):
+    """Write one Parquet part atomically (a temporary file renamed into place).
+
+    `chunk` (the block index of a chunked build) is recorded in the part's metadata, so a
+    resumed build knows which blocks are done.
+    """
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    cols = linkages.columns()
+    arrays = [pa.array(cols[name]) for name in _COLUMNS]
+    arrays.append(pa.array(np.asarray(seeds).astype(np.int64)))
+    width = signatures.shape[1]
+    flat = pa.array(np.ascontiguousarray(signatures, dtype=np.float64).reshape(-1))
+    arrays.append(pa.FixedSizeListArray.from_arrays(flat, width))
+    table = pa.Table.from_arrays(arrays, names=[*_COLUMNS, "seed", "signature"])
+    meta = {_META_KEY: json.dumps(settings).encode()}
+    if chunk is not None:
+        meta[_CHUNK_KEY] = json.dumps(chunk).encode()
+    table = table.replace_schema_metadata(meta)
+    target = Path(target)
+    scratch = target.with_name(target.name + ".partial")
+    pq.write_table(table, scratch)
+    os.replace(scratch, target)
+
+
+def read_chunk(part):
+    """The chunk record of a part written by a chunked build, or None."""
+    import pyarrow.parquet as pq
+
+    meta = pq.read_schema(part).metadata or {}
+    return json.loads(meta[_CHUNK_KEY]) if _CHUNK_KEY in meta else None
+
+
 def _folder(path):
     if not isinstance(path, (str, os.PathLike)) or isinstance(path, bytes):
         raise TypeError(f"Expected `path` to be a folder name, got {_show(path)}")
@@ -192,113 +221,3 @@ def _check_settings(have, new, where):
     if diff:
         shown = ", ".join(f"{k}: {have.get(k)!r} vs {new.get(k)!r}" for k in diff)
         raise ValueError(f"Expected atlas parts with the same settings in `path`, got {shown} in {where!r}")
-
-
-def signatures_of(linkages, harmonics, samples):
-    """Signatures (n, 4K) of the closed coupler curves of `linkages` (and their normal forms)."""
-    curves = coupler_curves(linkages.columns(), samples)
-    form = normal_form(_resample_rows(curves, samples, True), harmonics)
-    return form.signature, form
-
-
-def block_seed(seed, index):
-    """The seed of block `index` of a build with `seed` (NumPy's SeedSequence of the pair)."""
-    return int(np.random.SeedSequence([seed, index]).generate_state(1, dtype=np.uint64)[0] >> 1)
-
-
-def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENGTHS, coupler=COUPLER,
-                min_transmission=0.0, block=4096, progress=False):
-    """Build an atlas of `n` usable four-bars with the signatures of their coupler curves.
-
-    Samples are drawn by `sample_fourbars` in blocks of `block`, block ``i`` with the seed
-    `block_seed` ``(seed, i)`` (so a build is reproduced exactly by its seed and block size,
-    and builds with different seeds draw different blocks);
-    those that cannot move or whose minimum transmission angle is below `min_transmission`
-    are left out, until `n` are kept.
-
-    Parameters
-    ----------
-    n : int
-        Number of linkages, in [1, 10**7].
-    seed : int, optional
-        Seed of the first block.
-    harmonics, samples : int, optional
-        Signature settings (see `curve_signature`); `samples` is also the number of input
-        steps along each coupler curve.
-    lengths, coupler : tuple, optional
-        The design space (see `sample_fourbars`).
-    min_transmission : float, optional
-        Keep only linkages whose `gamma_min` is at least this, radians in [0, pi/2]; any
-        value above 0 keeps only linkages whose crank turns fully.
-    block : int, optional
-        Samples drawn per block, in [16, 10**6].
-    progress : bool, optional
-        Show a tqdm progress bar.
-
-    Returns
-    -------
-    Atlas
-
-    Examples
-    --------
-    >>> from mech.atlas import build_atlas
-    >>> atlas = build_atlas(200, seed=5)
-    >>> len(atlas), atlas.signatures.shape, atlas.settings["version"]
-    (200, (200, 32), 1)
-    >>> bool(atlas.linkages.usable.all())
-    True
-    """
-    n = integer("n", n, minimum=1, maximum=10**7)
-    seed = integer("seed", seed, minimum=0)
-    harmonics = integer("harmonics", harmonics, minimum=1, maximum=1 << 14)
-    samples = _samples(samples, harmonics=harmonics)
-    block = integer("block", block, minimum=16, maximum=10**6)
-    progress = bool_flag("progress", progress)
-    min_transmission = nonnegative_number("min_transmission", min_transmission)
-    sample_fourbars(0, lengths=lengths, coupler=coupler, min_transmission=min_transmission)  # checks
-    kept, sigs, seeds, total = [], [], [], 0
-    bar = _bar(progress, n)
-    started = time.perf_counter()
-    with bar:
-        index = 0
-        while total < n:
-            drawn = sample_fourbars(block, seed=block_seed(seed, index), lengths=lengths, coupler=coupler,
-                                    min_transmission=min_transmission)
-            good = drawn.take(drawn.usable)
-            sig, _ = signatures_of(good, harmonics, samples)
-            finite = np.all(np.isfinite(sig), axis=1)          # a pose that did not assemble
-            good, sig = good.take(finite), sig[finite]
-            take = min(len(good), n - total)
-            kept.append(good.take(np.arange(take)))
-            sigs.append(sig[:take])
-            seeds.append(np.full(take, seed, dtype=np.int64))
-            total += take
-            bar.update(take)
-            index += 1
-            if index > 1000 and total == 0:
-                raise ValueError(f"Expected a design space with movable linkages, got none in {index} blocks")
-    cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in _COLUMNS}
-    settings = {"version": ATLAS_VERSION, "harmonics": harmonics, "samples": samples,
-                "lengths": list(map(float, lengths)), "coupler": list(map(float, coupler)),
-                "min_transmission": min_transmission, "block": block,
-                "build_seconds": round(time.perf_counter() - started, 3)}
-    return Atlas(FourBarSamples(**cols), np.concatenate(sigs), np.concatenate(seeds), settings)
-
-
-class _NoBar:
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return False
-
-    def update(self, n=1):
-        pass
-
-
-def _bar(progress, total):
-    if not progress:
-        return _NoBar()
-    from tqdm.auto import tqdm
-
-    return tqdm(total=total, desc="atlas", unit="linkage")

@@ -30,4 +30,39 @@ def test_cli_errors_are_messages(tmp_path, capsys):
     folder = tmp_path / "a"
     assert main(["build", str(folder), "-n", "50", "--quiet"]) == 0
     assert main(["build", str(folder), "-n", "50", "--quiet"]) == 2
-    assert "append=True" in capsys.readouterr().err
+    assert "resume=True" in capsys.readouterr().err
+
+
+def test_cli_build_resume_and_dask(tmp_path, capsys):
+    """A build resumed on disk, and one on a local Dask cluster, give the atlas built in one go."""
+    pytest.importorskip("distributed")
+    from mech.atlas import build_atlas
+
+    reference = build_atlas(300, seed=4, block=64)
+    folder = tmp_path / "atlas"
+    assert main(["build", str(folder), "-n", "300", "--seed", "4", "--block", "64", "--quiet"]) == 0
+    for part in sorted(folder.glob("part-*.parquet"))[2:]:
+        part.unlink()                                   # as if stopped after two blocks
+    assert main(["build", str(folder), "-n", "300", "--seed", "4", "--block", "64", "--resume", "--quiet"]) == 0
+    assert np.array_equal(Atlas.from_parquet(folder).signatures, reference.signatures)
+    other = tmp_path / "dask"
+    assert main(["build", str(other), "-n", "300", "--seed", "4", "--block", "64", "--dask", "local:2",
+                 "--quiet"]) == 0
+    assert np.array_equal(Atlas.from_parquet(other).signatures, reference.signatures)
+    assert main(["build", str(other), "-n", "10", "--dask", "local:x", "--quiet"]) == 2
+    assert "Expected --dask local:N" in capsys.readouterr().err
+
+
+def test_cli_query_open_arc(tmp_path, capsys):
+    folder = tmp_path / "atlas"
+    assert main(["build", str(folder), "-n", "300", "--seed", "4", "--quiet"]) == 0
+    from mech.atlas._sampling import coupler_points
+
+    atlas = Atlas.from_parquet(folder)
+    row = int(np.flatnonzero(atlas.linkages.full_turn)[0])
+    arc = coupler_points(atlas.linkages.take([row]).columns(), np.linspace(0.5, 0.5 + np.pi, 150)[None, :])[0]
+    np.savetxt(tmp_path / "arc.csv", np.c_[arc.real, arc.imag], delimiter=",")
+    capsys.readouterr()
+    assert main(["query", str(folder), str(tmp_path / "arc.csv"), "-k", "1", "--open"]) == 0
+    out = capsys.readouterr().out
+    assert "curve parameter u from" in out

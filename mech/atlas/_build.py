@@ -1,0 +1,240 @@
+"""Building an atlas: in blocks, in one process or on a Dask cluster, stoppable and resumable.
+
+A build draws samples in blocks of `block` linkages; block ``i`` of a build with `seed`
+uses its own seed, `block_seed` ``(seed, i)``, so every block is a pure function of
+``(seed, i)`` and the settings. That is what lets the blocks run anywhere: in this process,
+or as tasks of a Dask ``distributed.Client`` (a local cluster or many machines), and still
+give the same atlas, bit for bit. The blocks are then taken in order until `n` usable
+linkages are kept; the last block is cut short.
+
+With a folder, each block's kept rows are written as a Parquet part as soon as the block is
+taken (its index in the part's metadata), so a build that is stopped can be resumed: the
+blocks already on disk are skipped. Dask and tqdm are imported only when asked for.
+"""
+
+import time
+from contextlib import closing
+
+import numpy as np
+
+from mech._validate import _show, bool_flag, integer, nonnegative_number
+from mech.atlas._sampling import COUPLER, LENGTHS, FourBarSamples, coupler_curves, sample_fourbars
+from mech.atlas._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
+from mech.atlas._store import _COLUMNS, ATLAS_VERSION, Atlas, _folder, read_chunk, write_part
+
+__all__ = ["build_atlas"]
+
+#: Blocks kept in flight per worker thread of a Dask cluster.
+_AHEAD = 2
+
+
+def signatures_of(linkages, harmonics, samples):
+    """Signatures (n, 4K) of the closed coupler curves of `linkages` (and their normal forms)."""
+    curves = coupler_curves(linkages.columns(), samples)
+    form = normal_form(_resample_rows(curves, samples, True), harmonics)
+    return form.signature, form
+
+
+def block_seed(seed, index):
+    """The seed of block `index` of a build with `seed` (NumPy's SeedSequence of the pair)."""
+    return int(np.random.SeedSequence([seed, index]).generate_state(1, dtype=np.uint64)[0] >> 1)
+
+
+def build_block(seed, index, block, harmonics, samples, lengths, coupler, min_transmission):
+    """Block `index` of a build: its usable linkages (as a dict of columns) and their signatures.
+
+    A pure function of its arguments (the unit of work of a Dask build).
+    """
+    drawn = sample_fourbars(block, seed=block_seed(seed, index), lengths=lengths, coupler=coupler,
+                            min_transmission=min_transmission)
+    good = drawn.take(drawn.usable)
+    sig, _ = signatures_of(good, harmonics, samples)
+    finite = np.all(np.isfinite(sig), axis=1)          # a pose that did not assemble
+    return good.take(finite).columns(), sig[finite]
+
+
+def _blocks(start, work, client):
+    """Yield ``(index, columns, signatures)`` for blocks start, start + 1, ... in order.
+
+    Without a client each block is computed here when asked for; with one, a window of
+    blocks ahead is kept running on the cluster and the results are taken in order.
+    """
+    if client is None:
+        index = start
+        while True:
+            yield (index, *build_block(*work(index)))
+            index += 1
+    ahead = max(1, _AHEAD * sum(client.nthreads().values()))
+    pending = {}
+    index = start
+    try:
+        while True:
+            for j in range(index, index + ahead):
+                if j not in pending:
+                    pending[j] = client.submit(build_block, *work(j), pure=False, key=f"mech-atlas-block-{j}")
+            cols, sig = pending.pop(index).result()
+            yield index, cols, sig
+            index += 1
+    finally:
+        # blocks not needed: let those in flight end before releasing them (a task
+        # cancelled while it runs makes the worker log a warning)
+        from distributed import wait
+
+        wait(list(pending.values()))
+        pending.clear()
+
+
+def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENGTHS, coupler=COUPLER,
+                min_transmission=0.0, block=4096, progress=False, client=None, path=None, resume=False):
+    """Build an atlas of `n` usable four-bars with the signatures of their coupler curves.
+
+    Samples are drawn by `sample_fourbars` in blocks of `block`, block ``i`` with a seed
+    derived from ``(seed, i)``; those that cannot move or whose minimum transmission angle is
+    below `min_transmission` are left out, and blocks are taken in order until `n` are kept.
+    The blocks can run on a Dask cluster (`client`) and be written to a folder as they come
+    (`path`), so that a stopped build can be resumed.
+
+    Parameters
+    ----------
+    n : int
+        Number of linkages, in [1, 10**7].
+    seed : int, optional
+        Master seed of the build.
+    harmonics, samples : int, optional
+        Signature settings (see `curve_signature`); `samples` is also the number of input
+        steps along each coupler curve.
+    lengths, coupler : tuple, optional
+        The design space (see `sample_fourbars`).
+    min_transmission : float, optional
+        Keep only linkages whose `gamma_min` is at least this, radians in [0, pi/2]; any
+        value above 0 keeps only linkages whose crank turns fully.
+    block : int, optional
+        Samples drawn per block, in [16, 10**6].
+    progress : bool, optional
+        Show a tqdm progress bar.
+    client : distributed.Client, optional
+        Compute the blocks as tasks on this Dask cluster (its workers need `mech`); the
+        result is identical to a build in this process.
+    path : str or os.PathLike, optional
+        Write each block as a Parquet part of the atlas folder `path` as soon as it is taken.
+    resume : bool, optional
+        With `path`: continue a stopped build of the same settings, skipping the blocks on
+        disk. Without it the folder must not hold an atlas yet.
+
+    Returns
+    -------
+    Atlas
+        Read back from `path` when one is given.
+
+    Raises
+    ------
+    ValueError
+        For bad settings (named), a folder that already holds an atlas (without `resume`)
+        or parts of another build (with it).
+
+    Notes
+    -----
+    Every block is a pure function of ``(seed, index)`` and the settings, so a build is
+    reproduced exactly by its seed and block size, whether its blocks ran here, on a cluster
+    or in several sessions. Builds with different seeds draw different blocks.
+
+    Examples
+    --------
+    >>> from mech.atlas import build_atlas
+    >>> atlas = build_atlas(200, seed=5)
+    >>> len(atlas), atlas.signatures.shape, atlas.settings["version"]
+    (200, (200, 32), 1)
+    >>> bool(atlas.linkages.usable.all())
+    True
+    """
+    n = integer("n", n, minimum=1, maximum=10**7)
+    seed = integer("seed", seed, minimum=0)
+    harmonics = integer("harmonics", harmonics, minimum=1, maximum=1 << 14)
+    samples = _samples(samples, harmonics=harmonics)
+    block = integer("block", block, minimum=16, maximum=10**6)
+    progress = bool_flag("progress", progress)
+    resume = bool_flag("resume", resume)
+    min_transmission = nonnegative_number("min_transmission", min_transmission)
+    sample_fourbars(0, lengths=lengths, coupler=coupler, min_transmission=min_transmission)  # checks
+    if client is not None and not (callable(getattr(client, "submit", None))
+                                   and callable(getattr(client, "nthreads", None))):
+        raise TypeError(f"Expected `client` to be a dask.distributed Client, got {_show(client)}")
+    if resume and path is None:
+        raise ValueError("Expected a `path` to resume a build in, got None")
+    lengths, coupler = list(map(float, lengths)), list(map(float, coupler))
+    settings = {"version": ATLAS_VERSION, "harmonics": harmonics, "samples": samples, "lengths": lengths,
+                "coupler": coupler, "min_transmission": min_transmission, "block": block}
+    build = {"seed": seed, "n": n, "block": block}
+    folder = None if path is None else _folder(path)
+    done, total = (_done_blocks(folder, settings, build, resume) if folder is not None else (-1, 0))
+
+    def work(index):
+        return seed, index, block, harmonics, samples, lengths, coupler, min_transmission
+
+    kept, sigs = [], []
+    started = time.perf_counter()
+    with _bar(progress, n, total) as bar, closing(_blocks(done + 1, work, client)) as blocks:
+        for index, cols, sig in (blocks if total < n else ()):
+            take = min(len(sig), n - total)
+            rows = FourBarSamples(**{k: v[:take] for k, v in cols.items()})
+            if folder is not None and take:
+                folder.mkdir(parents=True, exist_ok=True)
+                write_part(folder / f"part-{index:05d}.parquet", rows, sig[:take], np.full(take, seed), settings,
+                           chunk={**build, "index": index})
+            else:
+                kept.append(rows)
+                sigs.append(sig[:take])
+            total += take
+            bar.update(take)
+            if total >= n:
+                break
+            if index > 1000 and total == 0:
+                raise ValueError(f"Expected a design space with movable linkages, got none in {index} blocks")
+    if folder is not None:
+        return Atlas.from_parquet(folder)
+    cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in _COLUMNS}
+    settings["build_seconds"] = round(time.perf_counter() - started, 3)
+    return Atlas(FourBarSamples(**cols), np.concatenate(sigs), np.full(total, seed, dtype=np.int64), settings)
+
+
+def _done_blocks(folder, settings, build, resume):
+    """The last block index on disk and the rows there, checking that they belong to `build`."""
+    parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
+    if not parts:
+        return -1, 0
+    if not resume:
+        raise ValueError(f"Expected `path` without an atlas (or resume=True), got {str(folder)!r} "
+                         f"holding {len(parts)} part(s)")
+    import pyarrow.parquet as pq
+
+    from mech.atlas._store import _check_settings, _read_settings
+
+    last, rows = -1, 0
+    for part in parts:
+        _check_settings(_read_settings(part), settings, str(part))
+        chunk = read_chunk(part)
+        if chunk is None or any(chunk.get(k) != v for k, v in build.items()):
+            raise ValueError(f"Expected the parts of a build of {build} in `path` to resume, got "
+                             f"{chunk!r} in {str(part)!r}")
+        last = max(last, int(chunk["index"]))
+        rows += pq.read_metadata(part).num_rows
+    return last, rows
+
+
+class _NoBar:
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def update(self, n=1):
+        pass
+
+
+def _bar(progress, total, initial=0):
+    if not progress:
+        return _NoBar()
+    from tqdm.auto import tqdm
+
+    return tqdm(total=total, initial=initial, desc="atlas", unit="linkage")

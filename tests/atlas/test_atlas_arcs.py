@@ -1,0 +1,84 @@
+"""Open targets: an arc over half a turn finds the linkage it was taken from, or a cognate."""
+
+import numpy as np
+import pytest
+
+from mech.atlas import build_atlas, query
+from mech.atlas._sampling import coupler_points
+from mech.planar import FourBar, cognates
+
+
+@pytest.fixture(scope="module")
+def atlas():
+    return build_atlas(1500, seed=21)
+
+
+def _arc(atlas, i, u0, rng, noise=1e-3, points=200):
+    """Half a cycle of row i's closed curve from u0, moved, turned, scaled, maybe reversed, noisy."""
+    arc = coupler_points(atlas.linkages.take([i]).columns(), (u0 + np.pi * np.linspace(0, 1, points))[None, :])[0]
+    if rng.random() < 0.5:
+        arc = arc[::-1]
+    moved = complex(*rng.normal(scale=10, size=2)) + 10 ** rng.uniform(-2, 2) * np.exp(
+        1j * rng.uniform(-np.pi, np.pi)) * arc
+    size = np.sqrt(np.mean(np.abs(moved - moved.mean()) ** 2))
+    return moved + noise * size * (rng.normal(size=points) + 1j * rng.normal(size=points)) / np.sqrt(2)
+
+
+def _found(atlas, i, match):
+    """The match is row i, or one of row i's Roberts-Chebyshev cognates (same shape of linkage)."""
+    if match.index == i:
+        return True
+    f = atlas.linkages.fourbar(i)
+    g = match.linkage.fourbar
+    mine = np.array([g.a, g.b, g.c, g.d]) / g.d
+    return any(np.allclose(np.array(c.lengths) / c.lengths[3], mine, rtol=1e-6) for c in cognates(f))
+
+
+def test_query_open_arc_exact(atlas):
+    """A noise-free half turn of a crank-rocker is found first, with its ends and a tiny error."""
+    i = int(np.flatnonzero(atlas.linkages.kind == "crank-rocker")[3])
+    rng = np.random.default_rng(0)
+    target = _arc(atlas, i, 1.0, rng, noise=0.0)
+    best = query(atlas, target, closed=False, k=3)[0]
+    assert _found(atlas, i, best)
+    assert best.relative_error < 2e-3
+    u0, u1 = best.arc
+    assert abs((u1 - u0) - np.pi) < 0.05
+    assert best.curve.shape == (atlas.samples // 2 + 1,)
+    # the placed arc lies on the target
+    gap = np.min(np.abs(best.curve[:, None] - target[None, :]), axis=1)
+    assert np.max(gap) < 0.02 * np.ptp(target.real) + 0.02 * np.ptp(target.imag)
+
+
+def test_query_open_arc_caches_sub_arc_signatures(atlas):
+    query(atlas, [0, 1, 1 + 1j, 2 + 1j], closed=False, k=1)
+    assert (0.5, 32) in atlas._arc_cache
+
+
+def test_query_open_arc_recovery_quick(atlas):
+    """Crank-driven arcs with random similarity and 1e-3 noise: found first in most trials."""
+    rng = np.random.default_rng(7)
+    rows = rng.choice(np.flatnonzero(atlas.linkages.full_turn), 6, replace=False)
+    hits = sum(_found(atlas, int(i), query(atlas, _arc(atlas, int(i), rng.uniform(0, 2 * np.pi), rng),
+                                           closed=False, k=1)[0]) for i in rows)
+    assert hits >= 5
+
+
+@pytest.mark.slow
+def test_query_open_arc_recovery_rate(atlas):
+    """All kinds of linkage, 30 trials: at least 70 % found first (the benchmark reports the rate)."""
+    rng = np.random.default_rng(11)
+    hits = 0
+    for _ in range(30):
+        i = int(rng.integers(len(atlas)))
+        hits += _found(atlas, i, query(atlas, _arc(atlas, i, rng.uniform(0, 2 * np.pi), rng), closed=False, k=1)[0])
+    assert hits >= 21
+
+
+def test_query_open_arc_options(atlas):
+    with pytest.raises(ValueError, match="Expected `span` in"):
+        query(atlas, [0, 1, 2j], closed=False, span=1.5)
+    with pytest.raises(ValueError, match="Expected `target` of shape"):
+        query(atlas, [0], closed=False)
+    with pytest.raises(ValueError, match="Expected `target` of shape"):
+        query(atlas, [0, 1], closed=True)
