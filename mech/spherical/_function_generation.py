@@ -12,7 +12,7 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
-from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, function_pairs, integer,
+from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, finite_result, function_pairs, integer,
                             MAX_COUNT, option, real_number)
 
 __all__ = [
@@ -82,7 +82,9 @@ def freudenstein_coefficients(a, b, c, d):
     [0.540302, 1.990266, 0.99903, 0.960597]
     """
     arcs = [_arc(n, v) for n, v in zip("abcd", (a, b, c, d))]
-    return np.array(sfg_coefficients(*arcs), dtype=float)
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):   # checked below
+        k = np.array(sfg_coefficients(*arcs), dtype=float)
+    return finite_result(k, "each of the coefficients k1..k4", a=arcs[0], b=arcs[1], c=arcs[2], d=arcs[3])
 
 
 def arcs_from_coefficients(k1, k2, k3, k4):
