@@ -366,9 +366,9 @@ def _check_two_force_members(sol, pairs, rho, loaded):
         span = float(np.min(np.abs(pa.at - pb.at)))
         if ra + rb >= span:
             raise ValueError(
-                f"Expected the friction circles of the two-force member {link!r} to fit between its pins "
-                f"(rho_{pa.name} + rho_{pb.name} < |{pa.name}{pb.name}| = {span!r}), got {ra + rb!r}: "
-                "the cross tangent does not exist")
+                f"Expected `rho` with the friction circles of the two-force member {link!r} fitting between "
+                f"its pins (rho_{pa.name} + rho_{pb.name} < |{pa.name}{pb.name}| = {span!r}), got "
+                f"rho_{pa.name}={ra!r}, rho_{pb.name}={rb!r}: the cross tangent does not exist")
 
 
 def _check_valid(sol):
