@@ -22,6 +22,18 @@ VALUES = (1e300, -1e300, 1e-300, -1e-300, 1e154, 5e-324, 0.0)
 # left for later (issue 11 follow-up): an inner check on a derived quantity, whose message
 # names the inner argument; each reproduces with the slot at one of VALUES
 KNOWN = {
+    # a length below 2**-1074 of the longest: the scaled length 0.0 is reported as `a` > 0
+    ('planar.limit_positions', 'a'),
+    ('planar.limit_positions', 'b'),
+    ('planar.limit_positions', 'c'),
+    ('planar.min_transmission_angle', 'a'),
+    ('planar.min_transmission_angle', 'b'),
+    ('planar.min_transmission_angle', 'c'),
+    ('planar.min_transmission_angle', 'd'),
+    ('planar.transmission_extremes', 'a'),
+    ('planar.transmission_extremes', 'b'),
+    ('planar.transmission_extremes', 'c'),
+    ('planar.transmission_extremes', 'd'),
     ('exercises.Exercise.solve', 'AB'),
     ('exercises.Exercise.solve#2-28', 'AD'),
     ('exercises.Exercise.solve#2-28', 'CD'),

@@ -1601,7 +1601,7 @@ def test_freudenstein_coefficients_beyond_the_float_range_named():
     k = [float(v) for v in sph.freudenstein_coefficients(0.4, 0.9, 0.7, 1.0)]
     with pytest.raises(ValueError, match="Expected `k1` .. `k4`"):
         sph.arcs_from_coefficients(k[0], 1e300, 1e300, k[3])
-    with pytest.raises(ValueError, match="Expected \\|cos b\\| < 1"):
+    with pytest.raises(ValueError, match="Expected `k1` .. `k4` with \\|cos b\\| < 1"):
         sph.arcs_from_coefficients(k[0], k[1], k[2], 1e300)
     arcs = sph.arcs_from_coefficients(k[0], 1e300, k[2], k[3])      # a tiny crank arc: fine
     assert np.all(np.isfinite(arcs)) and 0.0 < arcs[0] < 1e-299
