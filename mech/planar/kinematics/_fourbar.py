@@ -32,10 +32,6 @@ def fourbar_lengths(a, b, c, d):
     raw = [positive_length(name, value) for name, value in zip("abcd", (a, b, c, d))]
     exponent = math.frexp(max(raw))[1]
     scaled = [math.ldexp(x, -exponent) for x in raw]
-    for name, value, x in zip("abcd", raw, scaled):
-        if x == 0.0:                 # below 2**-1075 of the longest: rounds to zero when scaled
-            raise ValueError(f"Expected `{name}` of at least 2**-1074 times the longest link "
-                             f"({max(raw)!r}) so that its ratio to it is a float, got {value!r}")
     total = math.fsum(scaled)
     for k, (name, value, x) in enumerate(zip("abcd", raw, scaled)):
         if x >= total - x:
