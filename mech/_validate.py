@@ -49,6 +49,8 @@ __all__ = [
     "planar_points",
     "function_pairs",
     "common_shape",
+    "finite_result",
+    "naming",
 ]
 
 
@@ -435,3 +437,23 @@ def function_pairs(x, y, minimum):
     if np.unique(x).size != x.size:
         raise ValueError(f"Expected distinct `x` values, got {x}")
     return x, y
+
+
+def naming(**given):
+    """The givens as "`a`, `b` and `c`" and "a=1.0, b=2.0, c=3.0" for an error message."""
+    names = [f"`{k}`" for k in given]
+    listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+    return listed, ", ".join(f"{k}={_show(v)}" for k, v in given.items())
+
+
+def finite_result(value, what, **given):
+    """`value` if every entry is finite; else a ValueError naming the givens and values.
+
+    For results whose true value lies beyond the float range (an overflow), computed under
+    ``np.errstate`` so that no RuntimeWarning escapes: "Expected `a` and `b` so that
+    <what> is finite, got a=..., b=...".
+    """
+    if np.all(np.isfinite(value)):
+        return value
+    listed, shown = naming(**given)
+    raise ValueError(f"Expected {listed} so that {what} is finite, got {shown}")

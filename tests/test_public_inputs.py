@@ -584,8 +584,9 @@ CASES = {
     "spatial.RSSR": E(lambda: sp.RSSR,
                       {"l1": "scalar", "l2": "scalar", "l3": "scalar", "s0": "scalar", "s3": "scalar",
                        "h0": "scalar", "lam": "scalar", "branch": "branch",
-                       "coupler": ("scalar", lambda v: (v, 0.0, 0.0))},
-                      l1=1.0, l2=4.0, l3=2.0, s0=0.5, s3=0.8, h0=3.0, lam=1.0, branch=1, coupler=(0.1, 0.2, 0.3)),
+                       "coupler": ("scalar", lambda v: (v, 0.0, 0.0)), "rtol": "scalar"},
+                      l1=1.0, l2=4.0, l3=2.0, s0=0.5, s3=0.8, h0=3.0, lam=1.0, branch=1, coupler=(0.1, 0.2, 0.3),
+                      rtol=1e-12),
     "spatial.RSSR.coefficients": E(lambda: _rssr().coefficients, {"phi01": "real"}, phi01=[0.0, 1.0]),
     "spatial.RSSR.points": E(lambda: _rssr().points, {"phi01": "real", "phi03": "real"}, phi01=[0.0, 1.0],
                              phi03=0.5),
@@ -594,6 +595,7 @@ CASES = {
                             {"phi01": "real", "order": "order", "omega": "real", "alpha": "real", "strict": "bool"},
                             phi01=[0.0, 1.0], order=2, omega=1.5, alpha=0.5, strict=False),
     "spatial.RSSR.assembly_range": E(lambda: _rssr().assembly_range),
+    "spatial.RSSR.change_angles": E(lambda: _rssr().change_angles),
     "spatial.example_2_25_manipulator": E(lambda: sp.example_2_25_manipulator, {"s0": "scalar"}, s0=0.5),
     "spatial.example_2_25_pose": E(lambda: sp.example_2_25_pose,
                                    {"phi01": "real", "phi12": "real", "s2": "real", "phi34": "real", "s0": "real",
@@ -1666,7 +1668,7 @@ def test_freudenstein_coefficients_beyond_the_float_range_named():
     k = [float(v) for v in sph.freudenstein_coefficients(0.4, 0.9, 0.7, 1.0)]
     with pytest.raises(ValueError, match="Expected `k1` .. `k4`"):
         sph.arcs_from_coefficients(k[0], 1e300, 1e300, k[3])
-    with pytest.raises(ValueError, match="Expected \\|cos b\\| < 1"):
+    with pytest.raises(ValueError, match="Expected `k1` .. `k4` with \\|cos b\\| < 1"):
         sph.arcs_from_coefficients(k[0], k[1], k[2], 1e300)
     arcs = sph.arcs_from_coefficients(k[0], 1e300, k[2], k[3])      # a tiny crank arc: fine
     assert np.all(np.isfinite(arcs)) and 0.0 < arcs[0] < 1e-299

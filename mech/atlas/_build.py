@@ -189,7 +189,9 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENG
             if total >= n:
                 break
             if index > 1000 and total == 0:
-                raise ValueError(f"Expected a design space with movable linkages, got none in {index} blocks")
+                raise ValueError(f"Expected `lengths`, `coupler` and `min_transmission` of a design space with "
+                                 f"movable linkages, got lengths={lengths!r}, coupler={coupler!r}, "
+                                 f"min_transmission={min_transmission!r}: none in {index} blocks")
     if folder is not None:
         return Atlas.from_parquet(folder)
     cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in _COLUMNS}

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import integer, option, positive_length, real_number
+from mech._validate import integer, naming, option, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import FourBar, GuideBar, extreme_angle, grashof
 from mech.planar.synthesis import crank_rocker_family, quick_return_crank_rocker, simulate_quick_return
@@ -127,7 +127,8 @@ def _solve_2_30(p):
     for tag, given, title in (("(1)", "a", "Part 1: crank given"), ("(2)", "b", "Part 2: coupler given")):
         found = designs_2_30(p, given)
         if not found:
-            raise ValueError(f"Expected givens that admit a crank-rocker in part {tag}, got {p!r}")
+            listed, shown = naming(**dict(p))
+            raise ValueError(f"Expected {listed} that admit a crank-rocker in part {tag}, got {shown}")
         results = tuple(r for side, q, check in found for r in _design_results(tag, side, q, check, gamma_allowed))
         parts.append(Part(title, results, (
             "Both sides of the chord C1C2 for the pivot D give a crank-rocker with the given "
@@ -242,7 +243,8 @@ _STATEMENT_2_31 = (
 def _solve_2_31(p):
     found = designs_2_31(p)
     if not found:
-        raise ValueError(f"Expected givens that admit a crank-rocker, got {p!r}")
+        listed, shown = naming(**dict(p))
+        raise ValueError(f"Expected {listed} that admit a crank-rocker, got {shown}")
     results = []
     for k, (limit, fb, check) in enumerate(found, 1):
         results += [
@@ -378,7 +380,8 @@ def shaper_2_32(p):
     if not sagitta / 2 < l_DE:
         raise ValueError(f"Expected `l_DE` > half the sagitta {sagitta / 2!r}, got {l_DE!r}")
     if not l_CD > AC + a:
-        raise ValueError(f"Expected the guide CD = {l_CD!r} longer than AC + AB = {AC + a!r}, got H = {H!r}")
+        raise ValueError(f"Expected `H`, `l_AB` and `K` that make the guide CD = {l_CD!r} longer than AC + AB = "
+                         f"{AC + a!r}, got H={H!r}, l_AB={a!r}, K={p['K']!r}")
     return Shaper(GuideBar(a, AC), l_CD, l_DE, AC - l_CD * (1 + math.cos(theta / 2)) / 2)
 
 

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mech._validate import bool_flag, positive_length, real_number
+from mech._validate import bool_flag, naming, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import FourBar, Guide, Linkage, grashof
 from mech.planar.synthesis import dyad_for_circle_point, guidance_fourbars, precision_pairs
@@ -148,8 +148,9 @@ def _sample_2_29(rng):
 def _checked_solver(p):
     solution = _solve_2_29(p)
     if not solution["one branch covers phi1..phi3"].value:
-        raise ValueError("Expected givens whose design one branch carries through the three positions, got "
-                         f"{dict(p)!r}")
+        listed, shown = naming(**dict(p))
+        raise ValueError(f"Expected {listed} whose design one branch carries through the three positions, "
+                         f"got {shown}")
     return solution
 
 
@@ -229,7 +230,9 @@ def design_2_27(p):
     x0 = real_number("x0", p["x0"])
     span1, span2 = abs(C1 - B1), abs(C2 - B2)
     if not span1 > 0.0 or abs(span2 - span1) > 1e-9 * span1:
-        raise ValueError(f"Expected |B2C2| = |B1C1| > 0 (a rigid door), got |B1C1| = {span1!r}, |B2C2| = {span2!r}")
+        listed, shown = naming(**{f"{x}{k}": p[f"{x}{k}"] for k in ("B1", "C1", "B2", "C2") for x in "xy"})
+        raise ValueError(f"Expected {listed} with |B2C2| = |B1C1| > 0 (a rigid door), got {shown} "
+                         f"(|B1C1| = {span1!r}, |B2C2| = {span2!r})")
     turn = float(np.angle((C2 - B2) / (C1 - B1)))
     theta, d = np.array([0.0, turn]), np.array([B1, B2])
     crank_b = dyad_for_circle_point(theta, d, 0.0, along=_bisector_along(B1, B2, x0, "B", "A"))
@@ -237,8 +240,9 @@ def design_2_27(p):
     found = guidance_fourbars(theta, d, [crank_b, crank_c])
     driven_b = [g for g in found.candidates if g.input_dyad is crank_b]
     if not driven_b:
-        raise ValueError(f"Expected fixed pivots that make a four-bar, got A = {complex(crank_b.centre_point)!r}, "
-                         f"D = {complex(crank_c.centre_point)!r}")
+        listed, shown = naming(**dict(p))
+        raise ValueError(f"Expected {listed} whose fixed pivots make a four-bar, got {shown} "
+                         f"(A = {complex(crank_b.centre_point)!r}, D = {complex(crank_c.centre_point)!r})")
     return driven_b[0]
 
 
@@ -296,8 +300,9 @@ def _solve_2_27(p):
 def _checked_2_27(p):
     solution = _solve_2_27(p)
     if not solution["reaches both door positions on one branch"].value:
-        raise ValueError("Expected fixed pivots whose four-bar moves the door from one position to the other "
-                         "on one branch, got a design that does not")
+        listed, shown = naming(**dict(p))
+        raise ValueError(f"Expected {listed} whose four-bar moves the door from one position to the other "
+                         f"on one branch, got {shown}")
     return solution
 
 
@@ -411,8 +416,8 @@ def _crank_candidates(a, b, c, d, psi):
     k = (a * a + r * r - b * b) / (2.0 * a * r)
     if np.any(np.abs(k) > 1.0):
         j = int(np.argmax(np.abs(k)))
-        raise ValueError(f"Expected rocker angles that the crank-rocker reaches, got psi{j + 1} = "
-                         f"{math.degrees(psi[j]):.6g}°, out of its reach")
+        raise ValueError(f"Expected `psi{j + 1}` that the crank-rocker (AB, BC, CD, AD) = ({a!r}, {b!r}, {c!r}, "
+                         f"{d!r}) reaches, got psi{j + 1}={math.degrees(psi[j]):.6g} (degrees), out of its reach")
     out = []
     for Cj, kj in zip(C, k):
         row = []
@@ -443,8 +448,10 @@ def _ordered_crank_angles(a, b, c, d, psi, samples=721):
         if (np.all(sweep.valid) and np.all(rising > 0.0)
                 and np.max(np.abs(np.angle(np.exp(1j * (at.psi - psi))))) < 1e-9):
             return fb, t[0] + np.concatenate([[0.0], np.cumsum(steps)])
-    raise ValueError("Expected rocker positions psi1, psi2, psi3 that the crank, turning counter-clockwise, "
-                     "meets in this order on one stroke, got positions it does not")
+    p1, p2, p3 = (float(round(math.degrees(x), 9)) for x in psi)
+    raise ValueError("Expected `psi1`, `psi2` and `psi3` that the crank, turning counter-clockwise, meets in this "
+                     f"order on one stroke, got psi1={p1!r}, psi2={p2!r}, psi3={p3!r} (degrees) for (AB, BC, CD, AD) "
+                     f"= ({a!r}, {b!r}, {c!r}, {d!r})")
 
 
 def design_2_28(p):
@@ -554,7 +561,9 @@ def _checked_2_28(p):
     solution = _solve_2_28(p)
     if not (solution["assembles from position 1 to 3"].value
             and solution["largest error at the three positions"].value <= 1e-9):
-        raise ValueError("Expected a link that the six-bar carries through the three positions, got one it does not")
+        listed, shown = naming(**dict(p))
+        raise ValueError(f"Expected {listed} whose six-bar carries the link through the three positions, "
+                         f"got {shown}")
     return solution
 
 

@@ -8,10 +8,12 @@ from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import rssr as _gen
 from mech._validate import (
-    bool_flag, branch_sign, finite_array, motion_inputs, positive_length, real_number, real_tuple,
+    bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_number, positive_length, real_number,
+    real_tuple,
 )
 from mech._pose import mask_singular_rates, Pose
 from mech._scaling import DEAD_POINT_RTOL, length_scale
+from mech.spatial._rssr_change import change_points
 
 __all__ = ["RSSR", "RSSRPose", "AssemblyRange"]
 
@@ -98,11 +100,16 @@ class RSSR:
     branch : {1, -1}, optional
         Assembly mode: +1 takes the + sign of the root in (2-71),
         phi03 = 2 atan((A + sqrt(A**2 + B**2 - C**2)) / (B - C)) with A, B, C of the
-        textbook (C corrected). Geometrically, +1 when z3 . ((C - D) x (B - C)) > 0.
+        textbook (C corrected). Geometrically, +1 when z3 . ((C - D) x (B - C)) > 0. For a
+        change-point linkage, the sign at the smallest non-negative crank angle where the
+        two branches differ (see Notes).
     coupler : (float, float, float), optional
         Coupler point ``(p, q, u)``: ``P = B + p e1 + q e2 + u e3`` with ``e1`` along B->C,
         ``e3`` along ``e1 x z3`` and ``e2 = e3 x e1`` (the coupler's idle spin about BC
         fixed by the rocker axis).
+    rtol : float, optional
+        A double zero of A**2 + B**2 - C**2 within ``rtol`` times the size of its Fourier
+        coefficients of zero is a change point (the branches meet there).
 
     Raises
     ------
@@ -119,6 +126,16 @@ class RSSR:
     branch to the other there, so a motion through a limit position is followed by
     switching `branch`.
 
+    *Branch rule.* At a change point (`change_angles`: a double zero of the discriminant,
+    where the branches meet and cross, as in the planar parallelogram and kite) the
+    solution continues smoothly: the root of (2-71) is taken with its sign, which changes
+    there (module `mech.spatial._rssr_change`), and `branch` names the sign at the smallest
+    non-negative crank angle where the two branches differ, the rule of `FourBar` and
+    `SphericalFourBar`. Rates there are the limits along the branch, finite and
+    continuous; where the crank pin crosses the rocker axis (A = B = C = 0, the spatial
+    kite) the pose is the limit along the branch too. As sin(phi01/2) has period 4 pi, a
+    linkage with an odd number of change points per turn returns on the other branch.
+
     Examples
     --------
     >>> import numpy as np
@@ -129,9 +146,15 @@ class RSSR:
     array([4., 4., 4.])
     >>> rssr.assembly_range().full_turn
     True
+
+    A change point: the planar kite (1, 2, 2, 1) continues through phi01 = 0.
+
+    >>> pose = RSSR(1, 2, 2, 0, 0, 1, 0).solve([-1e-9, 1e-9], order=1)
+    >>> pose.omega_output.round(12).tolist()
+    [0.75, 0.75]
     """
 
-    def __init__(self, l1, l2, l3, s0, s3, h0, lam, *, branch=1, coupler=(0.0, 0.0, 0.0)):
+    def __init__(self, l1, l2, l3, s0, s3, h0, lam, *, branch=1, coupler=(0.0, 0.0, 0.0), rtol=1e-12):
         self._l1, self._l2, self._l3 = (positive_length(n, v) for n, v in (("l1", l1), ("l2", l2), ("l3", l3)))
         self._s0, self._s3, self._h0, self._lam = (
             real_number(n, v) for n, v in (("s0", s0), ("s3", s3), ("h0", h0), ("lam", lam)))
@@ -152,6 +175,9 @@ class RSSR:
                 f"squared) so that the coefficients of (2-71) stay finite, got `l1` = {self._l1!r}, "
                 f"`l3` = {self._l3!r}"
             )
+        self._rtol = nonnegative_number("rtol", rtol)
+        # double zeros of the discriminant, where the branches meet (None if there are none)
+        self._change = change_points(self._unit, self._rtol)
 
     l1 = property(lambda self: self._l1, doc="Crank length AB.")
     l2 = property(lambda self: self._l2, doc="Coupler length BC.")
@@ -162,6 +188,25 @@ class RSSR:
     lam = property(lambda self: self._lam, doc="Twist lambda_30 of the rocker axis.")
     branch = property(lambda self: self._branch, doc="Assembly mode, +1 or -1.")
     coupler = property(lambda self: self._coupler, doc="Coupler point (p, q, u).")
+    rtol = property(lambda self: self._rtol, doc="Relative tolerance of a change point.")
+
+    @property
+    def change_point(self):
+        """True if the two branches meet at some crank angle (a double zero of A^2 + B^2 - C^2)."""
+        return self._change is not None
+
+    def change_angles(self):
+        """The crank angles in [0, 2 pi) where the two branches meet (empty without any).
+
+        Examples
+        --------
+        >>> from mech.spatial._rssr import RSSR
+        >>> RSSR(1.0, 2.0, 2.0, 0.0, 0.0, 1.0, 0.0).change_angles().tolist()
+        [0.0]
+        """
+        if self._change is None:
+            return np.empty(0)
+        return np.array(self._change.crank_angles())
 
     def _dims(self):
         """The dimensions with every length divided by the power of two `_scale`."""
@@ -169,7 +214,7 @@ class RSSR:
 
     def __repr__(self):
         return (f"RSSR({self._l1!r}, {self._l2!r}, {self._l3!r}, {self._s0!r}, {self._s3!r}, "
-                f"{self._h0!r}, {self._lam!r}, branch={self._branch}, coupler={self._coupler!r})")
+                f"{self._h0!r}, {self._lam!r}, branch={self._branch}, coupler={self._coupler!r}, rtol={self._rtol!r})")
 
     def _coefficients(self, phi01):
         """A, B, C of A cos(phi03) + B sin(phi03) = C and the discriminant A^2 + B^2 - C^2."""
@@ -276,17 +321,26 @@ class RSSR:
         order, shape, (phi01, *rates) = motion_inputs("phi01", phi01, order, omega, alpha)
         l1, l2, l3, s0, s3, h0, lam = dims = self._dims()
         sigma = self._branch
-        A, B, C, disc = self._coefficients(phi01)
-        # within rounding (DEAD_POINT_RTOL) of a limit position the input is the limit
-        # position: it assembles in every unit of length, with infinite (NaN) rates
-        dead = np.abs(disc) <= DEAD_POINT_RTOL * (A * A + B * B + C * C)
-        disc = np.where(dead & (disc < 0.0), 0.0, disc)
-        valid = disc >= 0.0
-        if strict and not np.all(valid):
-            bad = float(phi01[~valid].ravel()[0])
-            raise AssemblyError(f"Cannot assemble {self!r} at phi01 = {bad!r}")
-        root = np.sqrt(np.where(valid, disc, 0.0))
-        phi03 = np.where(valid, _abc.abc_solve(A, B, C, root, sigma), np.nan)
+        if self._change is not None:
+            # the root taken with its sign through the change points (_rssr_change)
+            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+                jet, valid, dead = self._change.solve(phi01, sigma, order)
+            if strict and not np.all(valid):
+                bad = float(phi01[~valid].ravel()[0])
+                raise AssemblyError(f"Cannot assemble {self!r} at phi01 = {bad!r}")
+            phi03 = np.where(valid, np.angle(np.exp(1j * jet.v)), np.nan)
+        else:
+            A, B, C, disc = self._coefficients(phi01)
+            # within rounding (DEAD_POINT_RTOL) of a limit position the input is the limit
+            # position: it assembles in every unit of length, with infinite (NaN) rates
+            dead = np.abs(disc) <= DEAD_POINT_RTOL * (A * A + B * B + C * C)
+            disc = np.where(dead & (disc < 0.0), 0.0, disc)
+            valid = disc >= 0.0
+            if strict and not np.all(valid):
+                bad = float(phi01[~valid].ravel()[0])
+                raise AssemblyError(f"Cannot assemble {self!r} at phi01 = {bad!r}")
+            root = np.sqrt(np.where(valid, disc, 0.0))
+            phi03 = np.where(valid, _abc.abc_solve(A, B, C, root, sigma), np.nan)
         Bx, By, Bz, Cx, Cy, Cz = _gen.rssr_points(l1, l3, s0, s3, h0, lam, phi01, phi03)
         fields = {"phi01": phi01[()], "phi03": phi03[()], "valid": valid[()],
                   "B": _stack(Bx, By, Bz), "C": _stack(Cx, Cy, Cz)}
@@ -301,14 +355,22 @@ class RSSR:
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             if order >= 1:
                 omega = rates[0]
-                dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega, rates[1] if order >= 2 else 0.0)
-                w3 = np.where(valid & ~dead, _abc.abc_rate(dA, dB, dC, phi03, root, sigma), np.nan)
+                if self._change is not None:
+                    w3 = np.where(valid & ~dead, jet.d1 * omega, np.nan)
+                else:
+                    dA, dB, dC, ddA, ddB, ddC = _gen.rssr_abc_rates(*dims, phi01, omega,
+                                                                    rates[1] if order >= 2 else 0.0)
+                    w3 = np.where(valid & ~dead, _abc.abc_rate(dA, dB, dC, phi03, root, sigma), np.nan)
                 fields["omega_output"] = w3[()]
                 fields["vB"], fields["vC"] = (_stack(*v) for v in np.split(
                     np.array(np.broadcast_arrays(*_gen.rssr_velocity(l1, l3, lam, phi01, phi03, omega, w3))), 2))
             if order >= 2:
                 alpha = rates[1]
-                a3 = np.where(valid & ~dead, _abc.abc_accel(C, dA, dB, ddA, ddB, ddC, phi03, w3, root, sigma), np.nan)
+                if self._change is not None:
+                    a3 = np.where(valid & ~dead, jet.d2 * omega * omega + jet.d1 * alpha, np.nan)
+                else:
+                    a3 = np.where(valid & ~dead,
+                                  _abc.abc_accel(C, dA, dB, ddA, ddB, ddC, phi03, w3, root, sigma), np.nan)
                 fields["alpha_output"] = a3[()]
                 fields["aB"], fields["aC"] = (_stack(*v) for v in np.split(np.array(np.broadcast_arrays(
                     *_gen.rssr_acceleration(l1, l3, lam, phi01, phi03, omega, w3, alpha, a3))), 2))

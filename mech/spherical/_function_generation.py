@@ -12,7 +12,8 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
-from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, function_pairs, integer,
+from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, finite_result, function_pairs,
+                            integer, naming,
                             MAX_COUNT, option, real_number)
 
 __all__ = [
@@ -82,7 +83,9 @@ def freudenstein_coefficients(a, b, c, d):
     [0.540302, 1.990266, 0.99903, 0.960597]
     """
     arcs = [_arc(n, v) for n, v in zip("abcd", (a, b, c, d))]
-    return np.array(sfg_coefficients(*arcs), dtype=float)
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):   # checked below
+        k = np.array(sfg_coefficients(*arcs), dtype=float)
+    return finite_result(k, "each of the coefficients k1..k4", a=arcs[0], b=arcs[1], c=arcs[2], d=arcs[3])
 
 
 def arcs_from_coefficients(k1, k2, k3, k4):
@@ -128,7 +131,8 @@ def arcs_from_coefficients(k1, k2, k3, k4):
     if not np.isfinite(cos_b):
         raise beyond
     if not abs(cos_b) < 1.0:
-        raise ValueError(f"Expected |cos b| < 1 for a real coupler arc, got cos b = {float(cos_b)!r}")
+        raise ValueError(f"Expected `k1` .. `k4` with |cos b| < 1 for a real coupler arc, got k1={k[0]!r}, "
+                         f"k2={k[1]!r}, k3={k[2]!r}, k4={k[3]!r} (cos b = {float(cos_b)!r})")
     if not np.all(np.isfinite([a, b, c, d])):
         raise beyond
     return np.array([a, b, c, d], dtype=float)
@@ -437,8 +441,10 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=None, keep_defective=Fals
         if defect is None or keep_defective:
             designs.append(design)
     if not designs:
-        raise ValueError(f"Expected a real spherical four-bar without branch or limit defect through the "
-                         f"{n} pairs, got none ({len(seen)} candidate start angle(s) examined)")
+        listed, shown = naming(x=x, y=y, theta0=theta0, psi0=psi0)
+        raise ValueError(f"Expected {listed} that admit a real spherical four-bar without branch or limit "
+                         f"defect through the {n} pairs, got {shown} ({len(seen)} candidate start angle(s) "
+                         "examined)")
     return tuple(sorted(designs, key=lambda g: (g.defect is not None, g.rms_error)))
 
 

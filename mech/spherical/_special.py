@@ -357,7 +357,8 @@ def slider_crank_stroke(a, b, e=0.0):
     e = real_number("e", e)
     if not (b - a > abs(e) and a + b + abs(e) < np.pi):
         raise ValueError(
-            f"Expected b - a > |e| and a + b + |e| < pi (a crank), got a = {a!r}, b = {b!r}, e = {e!r}"
+            f"Expected `a`, `b` and `e` with b - a > |e| and a + b + |e| < pi (a crank), got a={a!r}, b={b!r}, "
+            f"e={e!r}"
         )
     s_ext, s_fold, g_ext, g_fold = (float(v) for v in spherical_slider_limits(a, b, e))
     theta = g_fold - g_ext

@@ -11,7 +11,7 @@ import numpy as np
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
 from mech._scaling import length_scale
-from mech._validate import branch_sign, finite_array, positive_length, real_number
+from mech._validate import branch_sign, finite_array, finite_result, positive_length, real_number
 from mech.spherical._dual import Dual
 
 __all__ = ["dual_fourbar_output", "dual_fourbar_joints", "rssr_from_transference"]
@@ -81,12 +81,28 @@ def dual_fourbar_output(a_hat, b_hat, c_hat, d_hat, theta_hat, branch=1):
     arcs = [_arc(n, v) for n, v in (("a_hat", a_hat), ("b_hat", b_hat), ("c_hat", c_hat), ("d_hat", d_hat))]
     theta = _as_dual("theta_hat", theta_hat)
     sigma = -branch_sign(branch)
-    A, B, C = _abc.spherical_fourbar_abc(*arcs, theta)
-    disc = _abc.abc_discriminant(A, B, C)
+    # NaN where it cannot be assembled (a tiny arc may give 0/0 there): no warning
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        A, B, C = _abc.spherical_fourbar_abc(*arcs, theta)
+        disc = _abc.abc_discriminant(A, B, C)
     ok = disc.real_part >= 0.0
     root = np.sqrt(Dual._raw(np.where(ok, disc.real_part, 1.0), np.where(ok, disc.dual_part, 0.0)))
-    psi = _abc.abc_solve(A, B, C, root, sigma)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        psi = _abc.abc_solve(A, B, C, root, sigma)
     return Dual._raw(np.where(ok, psi.real_part, np.nan), np.where(ok, psi.dual_part, np.nan))
+
+
+def _shown(value):
+    """A dual argument as the user gave it, for an error message."""
+    return value if not isinstance(value, Dual) else (value.real_part, value.dual_part)
+
+
+def _unit_scale(u):
+    """The dual vector `u` divided by the largest magnitude of its real parts (if not zero)."""
+    big = np.maximum(np.maximum(np.abs(u[0].real_part), np.abs(u[1].real_part)), np.abs(u[2].real_part))
+    _, exp = np.frexp(np.where(big > 0.0, big, 1.0))
+    k1, k2 = np.ldexp(1.0, -(exp // 2)), np.ldexp(1.0, exp // 2 - exp)   # powers of two, in two
+    return tuple(x * k1 * k2 for x in u)                                   # steps for subnormals
 
 
 def _cross(u, v):
@@ -134,9 +150,15 @@ def dual_fourbar_joints(a_hat, c_hat, d_hat, theta_hat, psi_hat):
     zero = Dual(0.0)
     A, B, C = (zero, zero, Dual(1.0)), (Bx, By, Bz), (Cx, Cy, Cz)
     D = (np.sin(d), zero, np.cos(d))
-    x2, x3, x4 = _cross(A, B), _cross(B, C), _cross(C, D)
-    phi23 = np.arctan2(_dot(_cross(x2, x3), B), _dot(x2, x3))
-    phi34 = np.arctan2(_dot(_cross(x3, x4), C), _dot(x3, x4))
+    # each normal scaled by the size of its real part (a positive real factor leaves both
+    # parts of the angles unchanged), so tiny arcs neither underflow nor divide by zero
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):   # checked below
+        x2, x3, x4 = (_unit_scale(x) for x in (_cross(A, B), _cross(B, C), _cross(C, D)))
+        phi23 = np.arctan2(_dot(_cross(x2, x3), B), _dot(x2, x3))
+        phi34 = np.arctan2(_dot(_cross(x3, x4), C), _dot(x3, x4))
+    for value, what in ((phi23, "the dual angle phi23"), (phi34, "the dual angle phi34")):
+        finite_result(np.stack(np.broadcast_arrays(value.real_part, value.dual_part)), what,
+                      a_hat=_shown(a_hat), c_hat=_shown(c_hat), d_hat=_shown(d_hat))
     return phi23, phi34
 
 

@@ -195,7 +195,7 @@ def test_limit_positions_change_point_branches_meet(lengths, shared):
 
 @pytest.mark.parametrize("lengths", [(40, 20, 30, 35), (35, 40, 30, 10), (30, 40, 20, 35)])
 def test_limit_positions_rejects_other_kinds(lengths):
-    with pytest.raises(ValueError, match="Expected a crank-rocker, got a"):
+    with pytest.raises(ValueError, match="Expected `a`, `b`, `c` and `d` of a crank-rocker, got a"):
         limit_positions(*lengths)
 
 

@@ -375,3 +375,32 @@ def test_rssr_limit_position_samples_valid_in_every_unit(dims):
             got = _quiet(RSSR(*(x * s for x in lengths), lam).solve, theta, order=order)
             np.testing.assert_array_equal(got.valid, ref.valid)
             np.testing.assert_array_equal(got.assembled, ref.assembled)
+
+
+@pytest.mark.parametrize("dims", [(1, 1, 1), (3, 4, 5), (3, 5, 7), (2, 1, 3), (4, 3, 5)])
+def test_linkage_rpr_dead_point_samples_valid_in_every_unit(dims):
+    """The RPR group of a `Linkage` (crank AB, guide pinned at D through the block at B, at
+    an offset e) on a grid of nice angles that lands on its dead points |B - D| = |e|: the
+    masks were scale-dependent (125 of 11340 nice cases over 1e-300..1e300). Reference: the
+    exact angle in 60-digit arithmetic; a dead point assembles with NaN rates."""
+    import mpmath
+    from mech.planar import Linkage
+
+    a, d, e = dims
+    degrees = np.arange(-360, 361) * 0.5
+    theta = np.radians(degrees)
+    with mpmath.workdps(60):
+        gap = [mpmath.sqrt(a * a + d * d - 2 * a * d * mpmath.cos(mpmath.radians(mpmath.mpf(x)))) - e
+               for x in degrees]
+    dead = np.array([abs(x) < 1e-40 for x in gap])
+    assembled = np.array([x > 0 for x in gap]) | dead
+    assert dead.any()
+
+    def linkage(s):
+        return (Linkage({"A": 0, "D": d * s}).crank("crank", pivot="A", tip="B", length=a * s)
+                .rpr(("guide", "block"), pins=("D", "B"), offset=e * s))
+
+    for s in [1e-300, 1e-150, 1.0, 3.7, 1e150, 1e300]:
+        np.testing.assert_array_equal(_quiet(linkage(s).solve, theta).valid, assembled)
+        pose = _quiet(linkage(s).solve, theta, order=2)
+        np.testing.assert_array_equal(pose.valid, assembled & ~dead)

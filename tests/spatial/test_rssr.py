@@ -213,8 +213,9 @@ def test_solve_coupler_point_is_rigid():
 def test_solve_invalid_is_nan_and_strict_raises():
     rssr = RSSR(2.0, 1.0, 1.0, 0.0, 0.0, 2.0, 0.5)
     pose = rssr.solve([0.0, np.pi], order=2)
-    # phi01 = 0 is a limit position: it assembles, but its rocker rates are infinite
-    assert pose.assembled.tolist() == [True, False] and pose.valid.tolist() == [False, False]
+    # at phi01 = 0 the crank pin is on the rocker axis (l2 = l3): a change point of this
+    # spatial kite, where the branch continues with finite rates (test_rssr_change.py)
+    assert pose.assembled.tolist() == [True, False] and pose.valid.tolist() == [True, False]
     assert rssr.solve([0.0, np.pi]).valid.tolist() == [True, False]
     assert np.isnan(pose.phi03[1]) and np.all(np.isnan(pose.C[1])) and np.isnan(pose.alpha_output[1])
     with pytest.raises(AssemblyError, match=r"phi01 = 3\.14159"):

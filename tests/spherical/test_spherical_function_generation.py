@@ -77,7 +77,7 @@ def test_arcs_from_coefficients_roundtrip(arcs):
 def test_arcs_from_coefficients_no_linkage():
     with pytest.raises(ValueError, match=r"Expected \|`k1`\| < 1"):
         arcs_from_coefficients(1.2, 0.5, 0.5, 0.5)
-    with pytest.raises(ValueError, match="Expected \\|cos b\\| < 1"):
+    with pytest.raises(ValueError, match="Expected `k1` .. `k4` with \\|cos b\\| < 1"):
         arcs_from_coefficients(0.5, 0.1, 0.1, 5.0)
 
 
@@ -170,7 +170,7 @@ def test_precision_pairs_bad_counts():
 
 def test_precision_pairs_no_real_linkage():
     x, y = chebyshev_log_pairs(4)
-    with pytest.raises(ValueError, match="Expected a real spherical four-bar"):
+    with pytest.raises(ValueError, match="that admit a real spherical four-bar"):
         precision_pairs(x, y, theta0=0.0, psi0=0.0)
 
 

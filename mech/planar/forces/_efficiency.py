@@ -15,7 +15,7 @@ import numpy as np
 from mech._generated.efficiency import push_rod as _push_rod
 from mech._generated.efficiency import spreading_wedge, wedge_press as _wedge_press
 from mech._generated.friction import eccentric_clamp
-from mech._validate import bool_flag, common_shape, finite_array
+from mech._validate import bool_flag, common_shape, finite_array, finite_result
 from mech.planar.forces._friction import _nonnegative, _out, _positive
 
 __all__ = [
@@ -64,7 +64,10 @@ def efficiency(useful, driving):
     >>> efficiency(80.0, 100.0)
     0.8
     """
-    return _out(finite_array("useful", useful) / _positive("driving", driving))
+    useful, driving = finite_array("useful", useful), _positive("driving", driving)
+    with np.errstate(over="ignore"):
+        eta = useful / driving
+    return _out(finite_result(eta, "the efficiency", useful=useful, driving=driving))
 
 
 def efficiency_from_drive(ideal, actual):
@@ -96,7 +99,10 @@ def efficiency_from_drive(ideal, actual):
     >>> efficiency_from_drive(30.0, 40.0)
     0.75
     """
-    return _out(finite_array("ideal", ideal) / _positive("actual", actual))
+    ideal, actual = finite_array("ideal", ideal), _positive("actual", actual)
+    with np.errstate(over="ignore"):
+        eta = ideal / actual
+    return _out(finite_result(eta, "the efficiency", ideal=ideal, actual=actual))
 
 
 def efficiency_from_resistance(actual, ideal):
@@ -128,7 +134,10 @@ def efficiency_from_resistance(actual, ideal):
     >>> efficiency_from_resistance(45.0, 50.0)
     0.9
     """
-    return _out(finite_array("actual", actual) / _positive("ideal", ideal))
+    actual, ideal = finite_array("actual", actual), _positive("ideal", ideal)
+    with np.errstate(over="ignore"):
+        eta = actual / ideal
+    return _out(finite_result(eta, "the efficiency", actual=actual, ideal=ideal))
 
 
 def series_efficiency(etas):
@@ -295,8 +304,9 @@ def wedge_press(lam, phi):
     if np.any(phi >= np.pi / 4):
         raise ValueError(f"Expected `phi` < pi/4, got {float(phi.max())!r}")
     moves = lam + 2 * phi < np.pi / 2
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         fwd, rev, eta, eta_rev = _wedge_press(lam, phi)
+    finite_result(eta_rev, "the reverse efficiency", lam=lam, phi=phi)
     fwd = np.where(moves, fwd, np.inf)
     eta = np.where(moves, eta, 0.0)
     return WedgePress(_out(fwd), _out(rev), _out(eta), _out(eta_rev), _out(moves),
@@ -388,7 +398,9 @@ def push_rod(mu, offset, length):
     (0.5, 40.0)
     """
     mu, e, L = _nonnegative("mu", mu), _nonnegative("offset", offset), _positive("length", length)
-    eta, L_min = _push_rod(mu, e, L)
+    with np.errstate(over="ignore", invalid="ignore"):
+        eta, L_min = _push_rod(mu, e, L)
+    finite_result(eta, "the efficiency", mu=mu, offset=e, length=L)
     return _out(np.asarray(eta)), _out(np.asarray(L_min + 0 * L))
 
 
@@ -431,9 +443,13 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
     52.428
     """
     e, r, rho, phi = _clamp_args(e, r_disc, rho_pin, phi)
-    x = (r * np.sin(phi) + rho) / e
+    with np.errstate(over="ignore"):             # x beyond the float range is capped at 1
+        x = (r * np.sin(phi) + rho) / e
     capped = np.minimum(x, 1.0)
-    _, alpha_max = eccentric_clamp(0.0, e, r, rho + (capped - x) * e, phi)
+    # rho + (capped - x) e without forming x e: the pin radius that makes x = capped
+    _, alpha_max = eccentric_clamp(0.0, e, r, np.where(x <= 1.0, rho, e - r * np.sin(phi)), phi)
+    # capped (r sin(phi) + rho >= e): asin(1) directly, as e - r sin(phi) loses a tiny e
+    alpha_max = np.where(x >= 1.0, phi + np.pi / 2, alpha_max)
     return _out(alpha_max)
 
 
@@ -472,7 +488,7 @@ def eccentric_clamp_locks(alpha, e, r_disc, rho_pin, phi):
     e, r, rho, phi = _clamp_args(e, r_disc, rho_pin, phi)
     alpha = finite_array("alpha", alpha)
     common_shape(alpha=alpha, e=e, r_disc=r, rho_pin=rho, phi=phi)
-    with np.errstate(invalid="ignore"):      # the largest angle (unused here) is NaN when x > 1
+    with np.errstate(invalid="ignore", over="ignore"):   # the largest angle (unused) NaN when x > 1
         margin, _ = eccentric_clamp(alpha, e, r, rho, phi)
     return _out(np.asarray(margin) >= 0)
 

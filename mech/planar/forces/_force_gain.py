@@ -191,7 +191,8 @@ def slider_crank_mechanical_advantage(a, b, e, theta, *, branch=1, driver="crank
     """Force gain of the slider-crank: -cos(phi) / (a sin(theta - phi)) and its inverse.
 
     Driven by the crank (a press), MA = dtheta/dx: slider force per crank moment,
-    infinite at the dead centres. Driven by the slider (an engine), MA = dx/dtheta: crank
+    infinite (np.inf) at the dead centres and within rounding of them where it exceeds the
+    float range. Driven by the slider (an engine), MA = dx/dtheta: crank
     moment per piston force, zero at the dead centres: the engine's dead points.
 
     Parameters
@@ -230,7 +231,8 @@ def slider_crank_mechanical_advantage(a, b, e, theta, *, branch=1, driver="crank
     _driver(driver, ("crank", "slider"))
     theta = finite_array("theta", theta)
     pose = SliderCrank(a, b, e, branch=branch).solve(theta)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    # infinite at a dead centre, and within rounding of one where it exceeds the float range
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         crank, slider = _g.slider_crank_mechanical_advantage(float(a), theta, pose.phi)
     return _float(np.asarray(crank if driver == "crank" else slider)[()])
 

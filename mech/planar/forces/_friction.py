@@ -17,7 +17,7 @@ from mech._generated.friction import (
     thrust_moment,
     two_force_tilt,
 )
-from mech._validate import (bool_flag, common_shape, finite_array, nonnegative_number, option, planar_points,
+from mech._validate import (bool_flag, common_shape, finite_array, finite_result, nonnegative_number, option, planar_points,
                             positive_length)
 
 __all__ = [
@@ -288,7 +288,10 @@ def vgroove_mu(mu, half_angle):
     theta = _positive("half_angle", half_angle)
     if np.any(theta > np.pi / 2):
         raise ValueError(f"Expected `half_angle` <= pi/2, got {float(theta.max())!r}")
-    return _out(equivalent_mu(_nonnegative("mu", mu), theta)[0])
+    mu = _nonnegative("mu", mu)
+    with np.errstate(over="ignore"):
+        value = equivalent_mu(mu, theta)[0]
+    return _out(finite_result(value, "the equivalent coefficient", mu=mu, half_angle=theta))
 
 
 def curved_contact_mu(mu, k):
@@ -535,8 +538,14 @@ def thrust_friction_moment(Q, mu, r_out, r_in=0.0, *, condition="new", cone_half
     alpha = _positive("cone_half_angle", cone_half_angle)
     if np.any(alpha > np.pi / 2):
         raise ValueError(f"Expected `cone_half_angle` <= pi/2, got {float(alpha.max())!r}")
-    pressure, wear = thrust_moment(Q, mu, R, r, alpha)
-    return _out(pressure if option("condition", condition, ("new", "run-in")) == "new" else wear)
+    new = option("condition", condition, ("new", "run-in")) == "new"
+    # the radius factor at unit load, friction and outer radius (no overflow of R**2), then
+    # scaled: M = mu Q R f
+    with np.errstate(over="ignore", invalid="ignore"):
+        f = thrust_moment(1.0, 1.0, 1.0, r / R, alpha)[0 if new else 1]
+        load = mu * Q
+        moment = np.where(load == 0.0, 0.0, load * (R * f))
+    return _out(finite_result(moment, "the friction moment", Q=Q, mu=mu, r_out=R, cone_half_angle=alpha))
 
 
 def collar_friction_radius(r_out, r_in=0.0, condition="new"):
@@ -607,4 +616,7 @@ def rolling_mill_max_thickness(diameter, gap, mu):
     75.6085
     """
     D, a, mu = _positive("diameter", diameter), _nonnegative("gap", gap), _nonnegative("mu", mu)
-    return _out(mill_max_thickness(D, a, mu))
+    # mu**2 / (s (1 + s)) = 1 - 1/s rounds to 1 for mu >= 1e150: cap mu there (mu**2 finite)
+    with np.errstate(over="ignore"):
+        h = mill_max_thickness(D, a, np.minimum(mu, 1e150))
+    return _out(finite_result(h, "the thickness", diameter=D, gap=a))

@@ -282,8 +282,8 @@ def transmission_extremes(a, b, c, d):
     a, b, c, d = _fourbar_lengths(a, b, c, d)
     kind = grashof(a, b, c, d).kind
     if kind not in ("crank-rocker", "double-crank"):
-        raise ValueError(f"Expected a crank that turns fully (crank-rocker or double-crank), got a {kind} "
-                         f"for (a, b, c, d) = {raw!r}")
+        raise ValueError(f"Expected `a`, `b`, `c` and `d` of a crank that turns fully (crank-rocker or "
+                         f"double-crank), got a {kind}: a={raw[0]!r}, b={raw[1]!r}, c={raw[2]!r}, d={raw[3]!r}")
     (d0, dpi), _ = fourbar_transmission(a, b, c, d, np.array([0.0, np.pi]))
     d0, dpi = float(d0), float(dpi)
     if dpi <= np.pi / 2:

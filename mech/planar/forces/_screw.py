@@ -13,7 +13,7 @@ import numpy as np
 
 from mech._generated.efficiency import screw_geometry, screw_jack as _screw_jack
 from mech._validate import (
-    finite_array, integer, nonnegative_number, option, positive_length, real_number, real_tuple,
+    finite_array, finite_result, integer, nonnegative_number, option, positive_length, real_number, real_tuple,
 )
 from mech.planar.forces._friction import _nonnegative, _out, _positive, collar_friction_radius
 
@@ -55,7 +55,8 @@ def lead_angle(pitch, d2, starts=1):
     """
     starts = integer("starts", starts, minimum=1, maximum=10**6)
     p, d = _positive("pitch", pitch), _positive("d2", d2)
-    return _out(screw_geometry(starts * p, d, 0.0, 0.0)[0])
+    with np.errstate(over="ignore"):        # a lead beyond the float range gives pi/2
+        return _out(screw_geometry(starts * p, d, 0.0, 0.0)[0])
 
 
 def thread_friction_angle(mu, flank_angle=0.0):
@@ -164,7 +165,12 @@ def screw_efficiency(Q, d2, lam, phi_v, mu_c=0.0, r_c=0.0):
         raise ValueError(f"Expected `lam` < pi/2, got {float(lam.max())!r}")
     phi_v = _nonnegative("phi_v", phi_v)
     mu_c, r_c = _nonnegative("mu_c", mu_c), _nonnegative("r_c", r_c)
-    up, hold, eta, eta_rev, lock = _screw_jack(Q, d2, lam, phi_v, mu_c, r_c)
+    # a collar term 2 mu_c r_c / d2 beyond the float range is infinite: eta = 0, locked
+    with np.errstate(over="ignore", invalid="ignore"):
+        up, hold, eta, eta_rev, lock = _screw_jack(Q, d2, lam, phi_v, mu_c, r_c)
+    for value, what in ((up, "the raising torque"), (hold, "the holding torque"), (eta, "the efficiency"),
+                        (eta_rev, "the reverse efficiency")):
+        finite_result(value, what, Q=Q, d2=d2, lam=lam, phi_v=phi_v, mu_c=mu_c, r_c=r_c)
     return ScrewResult(_out(up), _out(hold), _out(eta), _out(eta_rev), _out(lock), _out(np.asarray(hold) <= 0))
 
 

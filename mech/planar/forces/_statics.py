@@ -366,9 +366,9 @@ def _check_two_force_members(sol, pairs, rho, loaded):
         span = float(np.min(np.abs(pa.at - pb.at)))
         if ra + rb >= span:
             raise ValueError(
-                f"Expected the friction circles of the two-force member {link!r} to fit between its pins "
-                f"(rho_{pa.name} + rho_{pb.name} < |{pa.name}{pb.name}| = {span!r}), got {ra + rb!r}: "
-                "the cross tangent does not exist")
+                f"Expected `rho` with the friction circles of the two-force member {link!r} fitting between "
+                f"its pins (rho_{pa.name} + rho_{pb.name} < |{pa.name}{pb.name}| = {span!r}), got "
+                f"rho_{pa.name}={ra!r}, rho_{pb.name}={rb!r}: the cross tangent does not exist")
 
 
 def _check_valid(sol):
@@ -556,8 +556,10 @@ def _assemble(sol, pairs, rough, coeff, force, couple, effort, effort0, ok):
             c = 0.0
             if k in rough:
                 c = -np.sign(p.rate) * coeff[k] * np.abs(R)
-            absR2 = np.abs(R) ** 2
-            off = np.where(absR2 > 0, -c * 1j * R / np.where(absR2 > 0, absR2, 1.0), 0.0)
+            # -c i R / |R|^2 as (c / |R|) times the unit vector R / |R|: no |R|^2 to overflow
+            absR = np.abs(R)
+            safe = np.where(absR > 0, absR, 1.0)
+            off = np.where(absR > 0, -(c / safe) * 1j * (R / safe), 0.0)
             line = p.at + off
         else:
             N = np.real(R / (1j * p.e))

@@ -728,13 +728,20 @@ class Linkage:
         (gl, block), (p1, p2), e0 = step.links, step.get("pins"), step.get("offset")
         P1, P2 = st.P[p1], st.P[p2]
         gx, gy = _re_im(P2 - P1)
-        s, ok = _signed_root(st, step, _g.rpr_position(gx, gy, e0, 1.0)[3])
+        radicand = _g.rpr_position(gx, gy, e0, 1.0)[3]
+        # within DEAD_POINT_RTOL of a dead point (the pins' distance = |offset|), and away
+        # from a change point, the input is the dead point
+        g = np.hypot(gx, gy)
+        dead = np.abs(g - abs(e0)) <= DEAD_POINT_RTOL * (abs(e0) + g)
+        radicand, dead = _dead_point(st, step, radicand, dead)
+        s, ok = _signed_root(st, step, radicand)
         wx, wy = _g.rpr_position_root(gx, gy, e0, s)
         d = wx + 1j * wy
         W = A = None
         slide = Slide(s=s, direction=d)
         if st.order >= 1:
             W, ds = _g.rpr_velocity(wx, wy, s, e0, *_re_im(st.V[p1]), *_re_im(st.V[p2]))
+            W, ds = (np.where(dead, np.nan, x) for x in (W, ds))        # infinite at a dead point
             slide = Slide(s, d, ds)
         if st.order >= 2:
             A, dds, kx, ky = _g.rpr_acceleration(wx, wy, s, e0, *_re_im(st.A[p1]), *_re_im(st.A[p2]), W, ds)

@@ -25,7 +25,7 @@ from types import MappingProxyType
 import numpy as np
 
 from mech._errors import InputTypeError
-from mech._validate import instance, known_name, planar_points, positive_length
+from mech._validate import finite_result, instance, known_name, planar_points, positive_length
 
 __all__ = [
     "Term",
@@ -128,7 +128,11 @@ class Polygon:
         ``mu = 50.0``: a velocity of 1000 mm/s is then drawn 20 mm long.
         """
         mu = positive_length("mu", mu)
-        return MappingProxyType({name: np.abs(t.vector) / mu for name, t in self.terms.items()})
+        with np.errstate(over="ignore"):
+            out = {name: np.abs(t.vector) / mu for name, t in self.terms.items()}
+        for name, value in out.items():
+            finite_result(value, f"the length of {name!r}", mu=mu)
+        return MappingProxyType(out)
 
 
 @dataclass(frozen=True)

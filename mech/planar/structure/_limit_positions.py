@@ -105,7 +105,8 @@ def limit_positions(a, b, c, d, *, branch=1):
     kind = grashof(a, b, c, d).kind
     if kind != "crank-rocker":
         raise ValueError(
-            f"Expected a crank-rocker, got a {kind}: (a, b, c, d) = {raw!r}"
+            f"Expected `a`, `b`, `c` and `d` of a crank-rocker, got a {kind}: a={raw[0]!r}, b={raw[1]!r}, "
+            f"c={raw[2]!r}, d={raw[3]!r}"
         )
     th_e, th_f, ps_e, ps_f, swing, th_s = (float(v) for v in fourbar_limit_positions(a, b, c, d))
     theta = abs(th_s)

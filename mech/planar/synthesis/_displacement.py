@@ -143,8 +143,8 @@ def pole(theta_1, d_1, theta_i, d_i):
     if np.any(turn == 0.0):
         k = np.flatnonzero(turn.ravel() == 0.0)[0]
         raise ValueError(
-            "Expected poses that turn relative to each other (a pure translation has its pole at "
-            f"infinity), got theta_1 = {float(t1.ravel()[k])!r}, theta_i = {float(ti.ravel()[k])!r}"
+            "Expected `theta_1` and `theta_i` of poses that turn relative to each other (a pure translation "
+            f"has its pole at infinity), got theta_1={float(t1.ravel()[k])!r}, theta_i={float(ti.ravel()[k])!r}"
         )
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         qx, qy = _gen.displacement_pole(np.zeros_like(turn), p1.real, p1.imag, turn, pi_.real, pi_.imag)

@@ -14,7 +14,7 @@ meets its pairs, on which branch, and whether one branch covers the range.
 import numpy as np
 
 from mech._generated.function_generation import fg_output_terms, fg_row
-from mech._validate import bool_flag, function_pairs, positive_length, real_number
+from mech._validate import bool_flag, function_pairs, naming, positive_length, real_number
 from mech.planar.synthesis._function_generator import (
     FunctionGenerator,
     FunctionMap,
@@ -268,7 +268,9 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=1.0, target=None, x_range
         designs.append(design)
     if not designs:
         detail = f": {problems[0]}" if problems else ""
-        raise ValueError(f"Expected a real four-bar through the {n} precision pairs, got none{detail}")
+        listed, shown = naming(x=x, y=y, theta0=theta0, psi0=psi0)
+        raise ValueError(f"Expected {listed} that admit a real four-bar through the {n} precision pairs, "
+                         f"got {shown}{detail}")
     return tuple(sorted(designs, key=lambda g: (not g.covers_range, g.defect == "branch", g.pair_error)))
 
 

@@ -77,8 +77,9 @@ def freudenstein_coefficients(a, b, c, d):
     with np.errstate(all="ignore"):
         k = np.array(fg_coefficients(*(lengths / lengths.max())), dtype=float)
     if not np.all(np.isfinite(k)):
-        raise ValueError(f"Expected lengths whose ratios give finite coefficients, got a, b, c, d = "
-                         f"{tuple(float(v) for v in lengths)} (K = {tuple(float(v) for v in k)})")
+        a, b, c, d = (float(v) for v in lengths)
+        raise ValueError(f"Expected `a`, `b`, `c` and `d` whose ratios give finite coefficients, got a={a!r}, "
+                         f"b={b!r}, c={c!r}, d={d!r} (K = {tuple(float(v) for v in k)})")
     return k
 
 
@@ -123,15 +124,16 @@ def lengths_from_coefficients(k1, k2, k3, d=1.0):
     with np.errstate(all="ignore"):
         a, c, b_sq = (float(v) for v in fg_lengths(*np.array(k), np.float64(1.0)))
     if not (np.isfinite(a) and np.isfinite(c) and np.isfinite(b_sq)):
-        raise ValueError(f"Expected coefficients giving finite lengths, got k1 = {k[0]!r}, k2 = {k[1]!r}, "
-                         f"k3 = {k[2]!r}")
+        raise ValueError(f"Expected `k1`, `k2` and `k3` giving finite lengths, got k1={k[0]!r}, k2={k[1]!r}, "
+                         f"k3={k[2]!r}")
     if not b_sq > 0.0:
-        raise ValueError(f"Expected b^2 > 0 for a real coupler, got b^2 = {b_sq * d * d!r} "
-                         f"(k1 = {k[0]!r}, k2 = {k[1]!r}, k3 = {k[2]!r})")
+        raise ValueError(f"Expected `k1`, `k2` and `k3` with b^2 > 0 for a real coupler, got k1={k[0]!r}, "
+                         f"k2={k[1]!r}, k3={k[2]!r} (b^2 = {b_sq * d * d!r})")
     with np.errstate(over="ignore"):
         out = np.array([a, np.sqrt(b_sq), c, 1.0]) * d
     if not np.all(np.isfinite(out)):
-        raise ValueError(f"Expected finite lengths, got {tuple(float(v) for v in out)} for d = {d!r}")
+        raise ValueError(f"Expected `k1`, `k2`, `k3` and `d` giving finite lengths, got k1={k[0]!r}, "
+                         f"k2={k[1]!r}, k3={k[2]!r}, d={d!r} (lengths {tuple(float(v) for v in out)})")
     return out
 
 

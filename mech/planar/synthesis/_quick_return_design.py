@@ -323,7 +323,8 @@ def _crank_rocker_unit(theta, swing, alpha, side):
     """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min, whether the crank revolves, and
     the points A, D, C1, C2 measured from the midpoint M of C1C2 (bounded as K -> 1)."""
     R, H, a, b, d, ax, ay = qr_crank_rocker(theta, 1.0, swing, alpha, side)
-    with np.errstate(invalid="ignore"):
+    # a coupler b = 0 (a swing below the float range) gives NaN: not a crank-rocker
+    with np.errstate(invalid="ignore", divide="ignore"):
         k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
     # the crank revolves when it passes both positions along the frame line
     revolves = (np.abs(k0) <= 1.0) & (np.abs(kpi) <= 1.0) & (a > 0.0) & (b > a)
@@ -734,7 +735,8 @@ def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side
 
     best, intervals = _search(gamma_of, math.pi - theta, gmin, samples, xtol)
     if gamma_of(np.array([best]))[0] < 0.0:
-        raise ValueError(f"Expected K, swing and side that admit a crank-rocker, got none for swing = {swing!r}")
+        raise ValueError(f"Expected `time_ratio`, `swing` and `side` that admit a crank-rocker, got "
+                         f"time_ratio={time_ratio!r}, swing={swing!r}, side={side!r}")
     return QuickReturnFamily(intervals, _build_crank_rocker(K, theta, c, swing, best, side), gmin,
                              lambda al: quick_return_crank_rocker(K, c, swing, alpha=al, side=side))
 
