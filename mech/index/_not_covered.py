@@ -70,10 +70,5 @@ NOT_COVERED = {
                      "guidance page says why)",
     ("fig", "2-115"): "spatial pairs; " + _ART,
     ("fig", "2-116"): "robot structures; " + _ART,
-    ("fig", "2-117"): "frame rotations about z and x; " + _DRAWABLE,
-    ("fig", "2-118"): "successive rotations; " + _DRAWABLE,
-    ("fig", "2-119"): "translation and rotation between frames; " + _DRAWABLE,
-    ("fig", "2-120"): "the H-D parameters (the transforms page draws the four motions of the "
-                      "H-D matrix without naming the figure); " + _DRAWABLE,
     ("fig", "2-124"): "an industrial robot; " + _ART,
 }
