@@ -50,15 +50,9 @@ NOT_COVERED = {
     ("fig", "2-44"): "the proof of the three-centre theorem; " + _DRAWABLE,
     ("fig", "2-48"): "the cam of example 2-7 (its profile is not given); the instant-centre "
                      "page computes the example without the cam drawing",
-    ("fig", "2-61"): "the slider and its friction cone; " + _DRAWABLE,
-    ("fig", "2-62"): "V-groove and cylindrical contact; " + _DRAWABLE,
     ("fig", "2-63"): "journals as machine parts; " + _ART,
-    ("fig", "2-64"): "the journal and its friction circle (figures/friction.py draws a journal, "
-                     "but no caption on a page names the figure); " + _DRAWABLE,
     ("fig", "2-67"): "the weight-and-pulley machine of the efficiency definition; " + _SCHEMATIC,
     ("fig", "2-68"): "the wedge press free bodies and force polygons; " + _DRAWABLE,
-    ("fig", "2-70"): "pressure and transmission angle of a crank-rocker (the transmission "
-                     "page draws its own four-bar without naming the figure); " + _DRAWABLE,
     ("fig", "2-71"): "hand-lever shears; " + _ART,
     ("fig", "2-72"): "the slider-crank at its smallest transmission angle; " + _DRAWABLE,
     ("fig", "2-73"): "the guide-bar with a constant transmission angle; " + _DRAWABLE,
