@@ -27,7 +27,6 @@ NOT_COVERED = {
     ("chapter", "4"): "rigid-body guidance by spherical six-bars: not yet derived",
     ("fig", "2-2"): "drawing symbols of the basic mechanisms; " + _SCHEMATIC,
     ("fig", "2-3"): "the wedge mechanism; " + _SCHEMATIC,
-    ("fig", "2-5"): "the kite four-bars (the 2:1 double-crank is tested, not drawn); " + _DRAWABLE,
     ("fig", "2-6"): "link lengths against type; " + _DRAWABLE,
     ("fig", "2-9"): "forces after swapping slider and guide; " + _SCHEMATIC,
     ("fig", "2-12"): "the R-P-P-P and four-prismatic chains; " + _SCHEMATIC,
