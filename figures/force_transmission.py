@@ -28,7 +28,9 @@ def angle_at_joint(ax, linkage, solution, index, *, joint, force_from, arm_from,
         Which pose.
     joint, force_from, arm_from : str
         The joint J, the other pin of the two-force coupler (force along it -> J), and the
-        follower's pivot (the arm pivot -> J).
+        follower's pivot (the arm pivot -> J). ``force_from`` and ``arm_from`` may instead
+        be complex directions, sequences over the poses (the force on a block pressing
+        normal to a slot, the normal of a slider's guide).
     gamma : float
         The transmission angle at this pose, radians (written in the legend).
     """
@@ -37,17 +39,24 @@ def angle_at_joint(ax, linkage, solution, index, *, joint, force_from, arm_from,
     ax = _axes(ax)
     draw_linkage(ax, linkage, solution, index)
     P = {k: complex(np.asarray(v)[index]) for k, v in solution.points.items()}
-    J, K, F = P[joint], P[force_from], P[arm_from]
+    def _direction(spec, sign):
+        if isinstance(spec, str):
+            d = sign * (J - P[spec])
+        else:
+            d = complex(np.asarray(spec, dtype=complex).reshape(-1)[index if np.size(spec) > 1 else 0])
+        return d / abs(d)
+
+    J = P[joint]
     v = complex(np.asarray(solution.velocities[joint])[index])
-    L = scale or 0.45 * abs(J - F)
-    u = (J - K) / abs(J - K)
+    u = _direction(force_from, 1.0)
+    arm = _direction(arm_from, 1.0)
+    L = scale or 0.45 * (abs(J - P[arm_from]) if isinstance(arm_from, str) else abs(J))
     ax.annotate("", xy=((J + L * u).real, (J + L * u).imag),
                 xytext=(J.real, J.imag), arrowprops=dict(arrowstyle="-|>", color="tab:red", lw=1.8))
     w = v / abs(v) * L
     ax.annotate("", xy=((J + w).real, (J + w).imag), xytext=(J.real, J.imag),
                 arrowprops=dict(arrowstyle="-|>", color="tab:blue", lw=1.8))
     # arc of gamma between the force line and the arm line at J
-    arm = (J - F) / abs(J - F)
     a0, a1 = np.angle(u), np.angle(arm)
     for ref in (arm, -arm):
         d = np.angle(ref / u)
