@@ -7,7 +7,7 @@ Nothing is computed or drawn at import.
 
 import numpy as np
 
-__all__ = ["angle_at_joint", "angle_curves", "gain_curves"]
+__all__ = ["angle_at_joint", "angle_curves", "gain_curves", "ram_line_choice"]
 
 
 def _axes(ax, size=(5.0, 4.0)):
@@ -116,4 +116,22 @@ def gain_curves(ax, x, curves, *, xlabel, ylabel="|mechanical advantage|", log=T
     ax.set_ylabel(ylabel)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3, which="both")
+    return ax
+
+
+def ram_line_choice(ax, linkage, solution, indices, pin, lines):
+    """A linkage at some poses with the path of the pin driving a ram and candidate ram lines
+    (Fig. 2-82): ``lines`` maps a label to a height y; the pin's path comes from ``solution``."""
+    from figures.linkages import draw_linkage
+
+    ax = _axes(ax, (5.0, 5.0))
+    for i in indices:
+        draw_linkage(ax, linkage, solution, i, labels=i == indices[0])
+    path = np.asarray(solution.points[pin])
+    ax.plot(path.real, path.imag, color="tab:brown", lw=2.5, alpha=0.6, label=f"path of {pin}")
+    x0, x1 = path.real.min() - 0.6 * np.ptp(path.real), path.real.max() + 0.6 * np.ptp(path.real)
+    for (label, y), colour in zip(lines.items(), ("C0", "C1", "C2")):
+        ax.plot([x0, x1], [y, y], ls="--", color=colour, lw=1.2, label=label)
+    ax.set_aspect("equal")
+    ax.legend(loc="lower left", fontsize=8)
     return ax

@@ -52,7 +52,6 @@ NOT_COVERED = {
     ("fig", "2-68"): "the wedge press free bodies and force polygons; " + _DRAWABLE,
     ("fig", "2-71"): "hand-lever shears; " + _ART,
     ("fig", "2-73"): "the guide-bar with a constant transmission angle; " + _DRAWABLE,
-    ("fig", "2-82"): "the shaper guide-bar; " + _DRAWABLE,
     ("fig", "2-83"): "the slotting-machine guide-bar; " + _DRAWABLE,
     ("fig", "2-84"): "a flying shear; " + _ART,
     ("fig", "2-85"): "a slider with its pin off the guide; " + _DRAWABLE,
