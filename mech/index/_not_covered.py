@@ -31,7 +31,6 @@ NOT_COVERED = {
     ("fig", "2-9"): "forces after swapping slider and guide; " + _SCHEMATIC,
     ("fig", "2-12"): "the R-P-P-P and four-prismatic chains; " + _SCHEMATIC,
     ("fig", "2-13"): "a motion-adding mechanism; " + _ART,
-    ("fig", "2-19"): "the two-crank five-bar and the lever adder; " + _DRAWABLE,
     ("fig", "2-21"): "the single and double universal joint as machine parts; the "
                      "universal-joint page draws the kinematics instead (Figs. 2-122, 2-123)",
     ("fig", "2-24"): "rotation to intermittent motion; " + _DRAWABLE,
