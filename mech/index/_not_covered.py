@@ -38,7 +38,6 @@ NOT_COVERED = {
     ("fig", "2-27"): "two function generators for y = lg x, link ratios only in the drawing; "
                      + _DRAWABLE,
     ("fig", "2-28"): "a mixer and a rail transfer; " + _ART,
-    ("fig", "2-31"): "special coupler curves (dwell, straight lines); " + _DRAWABLE,
     ("fig", "2-33"): "feeders with constant orientation; " + _ART,
     ("fig", "2-34"): "an engine hood and a feeder; " + _ART,
     ("fig", "2-35"): "straight-line guidance of a mixer motor; " + _ART,
