@@ -7,7 +7,7 @@ Nothing is computed or drawn at import.
 
 import numpy as np
 
-__all__ = ["angle_at_joint", "angle_curves", "gain_curves"]
+__all__ = ["angle_at_joint", "angle_curves", "gain_curves", "ram_line_choice"]
 
 
 def _axes(ax, size=(5.0, 4.0)):
@@ -28,7 +28,9 @@ def angle_at_joint(ax, linkage, solution, index, *, joint, force_from, arm_from,
         Which pose.
     joint, force_from, arm_from : str
         The joint J, the other pin of the two-force coupler (force along it -> J), and the
-        follower's pivot (the arm pivot -> J).
+        follower's pivot (the arm pivot -> J). ``force_from`` and ``arm_from`` may instead
+        be complex directions, sequences over the poses (the force on a block pressing
+        normal to a slot, the normal of a slider's guide).
     gamma : float
         The transmission angle at this pose, radians (written in the legend).
     """
@@ -37,17 +39,24 @@ def angle_at_joint(ax, linkage, solution, index, *, joint, force_from, arm_from,
     ax = _axes(ax)
     draw_linkage(ax, linkage, solution, index)
     P = {k: complex(np.asarray(v)[index]) for k, v in solution.points.items()}
-    J, K, F = P[joint], P[force_from], P[arm_from]
+    def _direction(spec, sign):
+        if isinstance(spec, str):
+            d = sign * (J - P[spec])
+        else:
+            d = complex(np.asarray(spec, dtype=complex).reshape(-1)[index if np.size(spec) > 1 else 0])
+        return d / abs(d)
+
+    J = P[joint]
     v = complex(np.asarray(solution.velocities[joint])[index])
-    L = scale or 0.45 * abs(J - F)
-    u = (J - K) / abs(J - K)
+    u = _direction(force_from, 1.0)
+    arm = _direction(arm_from, 1.0)
+    L = scale or 0.45 * (abs(J - P[arm_from]) if isinstance(arm_from, str) else abs(J))
     ax.annotate("", xy=((J + L * u).real, (J + L * u).imag),
                 xytext=(J.real, J.imag), arrowprops=dict(arrowstyle="-|>", color="tab:red", lw=1.8))
     w = v / abs(v) * L
     ax.annotate("", xy=((J + w).real, (J + w).imag), xytext=(J.real, J.imag),
                 arrowprops=dict(arrowstyle="-|>", color="tab:blue", lw=1.8))
     # arc of gamma between the force line and the arm line at J
-    arm = (J - F) / abs(J - F)
     a0, a1 = np.angle(u), np.angle(arm)
     for ref in (arm, -arm):
         d = np.angle(ref / u)
@@ -107,4 +116,22 @@ def gain_curves(ax, x, curves, *, xlabel, ylabel="|mechanical advantage|", log=T
     ax.set_ylabel(ylabel)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3, which="both")
+    return ax
+
+
+def ram_line_choice(ax, linkage, solution, indices, pin, lines):
+    """A linkage at some poses with the path of the pin driving a ram and candidate ram lines
+    (Fig. 2-82): ``lines`` maps a label to a height y; the pin's path comes from ``solution``."""
+    from figures.linkages import draw_linkage
+
+    ax = _axes(ax, (5.0, 5.0))
+    for i in indices:
+        draw_linkage(ax, linkage, solution, i, labels=i == indices[0])
+    path = np.asarray(solution.points[pin])
+    ax.plot(path.real, path.imag, color="tab:brown", lw=2.5, alpha=0.6, label=f"path of {pin}")
+    x0, x1 = path.real.min() - 0.6 * np.ptp(path.real), path.real.max() + 0.6 * np.ptp(path.real)
+    for (label, y), colour in zip(lines.items(), ("C0", "C1", "C2")):
+        ax.plot([x0, x1], [y, y], ls="--", color=colour, lw=1.2, label=label)
+    ax.set_aspect("equal")
+    ax.legend(loc="lower left", fontsize=8)
     return ax

@@ -6,7 +6,8 @@ Plain plotting functions: they take numbers computed by ``mech`` and a Matplotli
 
 import numpy as np
 
-__all__ = ["journal_friction_circle", "two_force_member", "efficiency_curves", "thrust_pressure"]
+__all__ = ["journal_friction_circle", "two_force_member", "efficiency_curves", "thrust_pressure",
+           "friction_cone", "vgroove"]
 
 
 def _axes(ax, size=(5.0, 4.0)):
@@ -120,4 +121,84 @@ def thrust_pressure(r_in, r_out, ax=None):
     ax.set_ylim(bottom=0.0)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
+    return ax
+
+
+def _arrow(ax, tail, head, colour, text, *, lw=1.6, offset=0.0):
+    tail, head = complex(tail), complex(head)
+    ax.annotate("", xy=(head.real, head.imag), xytext=(tail.real, tail.imag),
+                arrowprops=dict(arrowstyle="-|>", color=colour, lw=lw))
+    at = head + offset
+    ax.text(at.real, at.imag, text, color=colour, fontsize=9, ha="center", va="center")
+
+
+def friction_cone(phi, push_angle, reaction, ax=None, *, title=None, size=1.0):
+    """A slider on a horizontal guide, its friction cone and the forces on it (Fig. 2-61).
+
+    ``phi`` is the friction angle, ``push_angle`` the angle of the push P from the guide's
+    normal (leaning forward, toward +x), ``reaction`` the unit total reaction of the guide on
+    the slider (complex, e.g. ``total_reaction(1j, 1.0, mu)``) when it slides, or NaN when it
+    does not. The cone is the pair of lines at ``phi`` either side of the normal.
+    """
+    ax = _axes(ax)
+    w, h = 1.2 * size, 0.5 * size
+    from matplotlib.patches import Rectangle
+
+    ax.add_patch(Rectangle((-w / 2, 0.0), w, h, facecolor="0.9", edgecolor="black"))
+    ax.plot([-1.3 * size, 1.3 * size], [0.0, 0.0], color="black", lw=1.2)
+    ax.fill_between([-1.3 * size, 1.3 * size], -0.08 * size, 0.0, color="0.75", hatch="///", lw=0)
+    L = 1.5 * size
+    for s in (-1.0, 1.0):                        # the cone, about the normal through the contact
+        ax.plot([0.0, L * np.sin(s * phi)], [0.0, L * np.cos(phi)], color="tab:red", lw=1.0, ls="--")
+    ax.fill([0.0, -L * np.sin(phi), L * np.sin(phi)], [0.0, L * np.cos(phi), L * np.cos(phi)],
+            color="tab:red", alpha=0.08)
+    top = complex(-0.3 * w, h)                    # P acts on the slider's top, R at the contact
+    push = complex(np.sin(push_angle), -np.cos(push_angle))
+    _arrow(ax, top - 0.9 * size * push, top, "tab:blue", "", lw=1.8)
+    tail = top - 0.9 * size * push
+    ax.text(tail.real, tail.imag, "$P$", color="tab:blue", fontsize=10, ha="right", va="bottom")
+    reaction = complex(reaction)
+    if np.isfinite(reaction.real):
+        _arrow(ax, 0.0, 1.1 * size * reaction, "tab:green", r"$R$", offset=0.1 * size * reaction)
+        ax.text(-1.25 * size, -0.25 * size, r"slides: $R$ leans $\varphi$ back on the cone", fontsize=8)
+    else:
+        ax.text(-1.25 * size, -0.25 * size, r"stuck: $R = -P$ lies inside the cone", fontsize=8)
+        _arrow(ax, 0.0, -0.9 * size * push, "tab:green", r"$R$", offset=-0.1 * size * push)
+    ax.text(0.05 * size, 1.55 * size, rf"$\varphi$ = {np.degrees(phi):.1f}°,  $\alpha$ = {np.degrees(push_angle):.1f}°",
+            fontsize=9, ha="center")
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.35 * size, 1.35 * size)
+    ax.set_ylim(-0.35 * size, 1.75 * size)
+    ax.axis("off")
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax
+
+
+def vgroove(half_angle, load, flank_force, ax=None, *, title=None):
+    """Cross-section of a V-groove slider carrying ``load`` down, with the two flank normal
+    forces ``flank_force`` (each, along the flank normals) drawn to the load's scale (Fig. 2-62).
+    ``half_angle`` is the angle between a flank and the plane of symmetry.
+    """
+    ax = _axes(ax, (4.0, 4.0))
+    t = half_angle
+    depth = 1.0
+    xs = depth * np.tan(t)
+    ax.plot([-1.6 * xs - 0.3, -xs, 0.0, xs, 1.6 * xs + 0.3], [depth, depth, 0.0, depth, depth], color="black", lw=1.4)
+    ax.fill([-0.75 * xs, 0.0, 0.75 * xs], [0.75 * depth, 0.0, 0.75 * depth], color="0.85", ec="black")
+    scale = 0.6 / load
+    top = complex(0.0, 0.75 * depth)
+    _arrow(ax, top + 1j * load * scale, top, "tab:blue", "")
+    ax.text(0.05, (top + 1j * load * scale).imag, f" Q = {load:g}", color="tab:blue", fontsize=9, va="top")
+    for s in (-1.0, 1.0):
+        foot = complex(s * 0.4 * xs, 0.4 * depth)        # a point of the flank
+        n = complex(-s * np.cos(t), np.sin(t))           # flank normal, into the slider
+        tail = foot - flank_force * scale * n
+        _arrow(ax, tail, foot, "tab:green", "")
+        ax.text(tail.real, tail.imag, f"N = {flank_force:.3g}", color="tab:green", fontsize=9,
+                ha="right" if s < 0 else "left", va="top")
+    ax.set_aspect("equal")
+    ax.axis("off")
+    if title:
+        ax.set_title(title, fontsize=10)
     return ax

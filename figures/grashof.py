@@ -6,7 +6,7 @@ import. Used by ``book/structure/index.md``.
 
 import numpy as np
 
-__all__ = ["KIND_COLORS", "plot_reachable_region", "plot_kind_map"]
+__all__ = ["KIND_COLORS", "plot_reachable_region", "plot_kind_map", "plot_snapshots"]
 
 #: One colour per four-bar kind, shared by every figure of the chapter.
 KIND_COLORS = {
@@ -88,4 +88,23 @@ def plot_kind_map(ax, intervals, *, name="length", marks=()):
     ax.set_xlabel(name)
     ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=len(seen), fontsize=8,
               frameon=False)
+    return ax
+
+
+def plot_snapshots(ax, linkage, thetas, *, kind=None, title=None):
+    """Draw a `FourBar` at several crank angles, faint to solid in crank order, with the
+    path of C (Fig. 2-5). ``kind`` picks the colour from `KIND_COLORS`."""
+    from figures.fourbar import linkage_snapshot
+
+    colour = KIND_COLORS.get(kind, "C0")
+    thetas = np.asarray(thetas, dtype=float)
+    for k, t in enumerate(thetas):
+        linkage_snapshot(ax, linkage, t, color=colour, alpha=0.25 + 0.75 * (k + 1) / len(thetas))
+    path = linkage.solve(np.linspace(thetas.min(), thetas.max(), 721)).C
+    ax.plot(path.real, path.imag, ":", color="0.4", lw=1.0)
+    ax.plot([0.0, linkage.d], [0.0, 0.0], color="black", lw=2.5)
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.2)
+    if title:
+        ax.set_title(title, fontsize=10)
     return ax

@@ -7,7 +7,7 @@ at import.
 
 import numpy as np
 
-__all__ = ["centre_diagram", "centrode_diagram"]
+__all__ = ["centre_diagram", "centrode_diagram", "velocity_arrows"]
 
 
 def _axes(ax, size=(7.0, 5.6)):
@@ -157,4 +157,37 @@ def centrode_diagram(segments, placed, pole, joints, ax=None, *, extent=None):
     ax.set_aspect("equal")
     ax.grid(alpha=0.2)
     ax.legend(loc="lower left", fontsize=8)
+    return ax
+
+
+def velocity_arrows(ax, points, velocities, *, scale=1.0, colour="tab:orange", labels=None, centre=None,
+                    label=None):
+    """Draw velocity arrows at points (Figs. 2-41, 2-44), optionally with the normals to the
+    velocities through a centre.
+
+    Parameters
+    ----------
+    points, velocities : sequence of complex
+        Where the arrows start and the velocities there (e.g. from
+        ``LinkVelocities.point_velocity``), drawn ``scale`` times their length.
+    labels : sequence of str, optional
+        Text at each arrow's head.
+    centre : complex, optional
+        The instant centre: a dashed line joins it to every point (each velocity is
+        perpendicular to it).
+    label : str, optional
+        Legend entry for the arrows.
+    """
+    for k, (z, v) in enumerate(zip(points, velocities)):
+        z, v = complex(z), complex(v) * scale
+        if centre is not None:
+            c = complex(centre)
+            ax.plot([z.real, c.real], [z.imag, c.imag], ls=":", color=colour, lw=1.0, zorder=1)
+        ax.annotate("", xy=(z.real + v.real, z.imag + v.imag), xytext=(z.real, z.imag),
+                    arrowprops={"arrowstyle": "-|>", "color": colour, "lw": 1.8}, zorder=5)
+        if labels:
+            ax.text(z.real + 1.05 * v.real, z.imag + 1.05 * v.imag, labels[k], color=colour, fontsize=10)
+    if label:
+        ax.plot([], [], color=colour, lw=1.8, label=label)
+        ax.legend(loc="lower left", fontsize=8)
     return ax

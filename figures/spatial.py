@@ -5,7 +5,7 @@ functions that take data computed by ``mech`` and Matplotlib 3-D axes (new ones 
 
 import numpy as np
 
-__all__ = ["frame", "chain", "sphere", "axes3d", "equal_aspect"]
+__all__ = ["frame", "chain", "sphere", "axes3d", "equal_aspect", "frame_panels"]
 
 _AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")
 
@@ -95,3 +95,48 @@ def equal_aspect(ax, points, *, margin=0.1):
     ax.set_ylabel("y")
     ax.set_zlabel("z")
     return ax
+
+
+def frame_panels(panels, *, titles=None, length=0.6, points=None, view=(22, -55), figsize=None):
+    """Side-by-side 3-D panels, each drawing several frames (e.g. a frame before and after a
+    rotation, Figs. 2-117 to 2-119).
+
+    Parameters
+    ----------
+    panels : sequence of sequence of (array_like, str, bool)
+        Per panel, the frames to draw as ``(M, label, faint)``: ``M`` a 4x4 transform into
+        the drawing frame, ``label`` the axis subscript, ``faint`` draws it dashed and pale.
+    titles : sequence of str, optional
+        A title per panel.
+    points : sequence of sequence of (array_like, array_like, str), optional
+        Per panel, arrows ``(start, end, text)`` to add (a position vector, an origin shift).
+
+    Returns
+    -------
+    list of Axes3D
+    """
+    import matplotlib.pyplot as plt
+
+    n = len(panels)
+    fig = plt.figure(figsize=figsize or (4.2 * n, 4.2))
+    axes = []
+    for k, frames in enumerate(panels):
+        ax = fig.add_subplot(1, n, k + 1, projection="3d")
+        extent = [[0.0, 0.0, 0.0]]
+        for M, label, faint in frames:
+            frame(M, label, ax, length=length, alpha=0.35 if faint else 1.0, linestyle="--" if faint else "-")
+            M = np.asarray(M)
+            extent += [M[:3, 3], M[:3, 3] + length * M[:3, :3].sum(axis=1) * 1.15]
+            extent += [M[:3, 3] + 1.15 * length * M[:3, j] for j in range(3)]
+        for start, end, text in (points[k] if points else ()):
+            start, end = np.asarray(start, float), np.asarray(end, float)
+            ax.quiver(*start, *(end - start), color="0.2", arrow_length_ratio=0.08, lw=1.2)
+            ax.text(*(0.5 * (start + end) + 0.04), text, fontsize=10)
+            extent += [start, end]
+        equal_aspect(ax, extent, margin=0.05)
+        ax.view_init(elev=view[0], azim=view[1])
+        if titles:
+            ax.set_title(titles[k], fontsize=10)
+        axes.append(ax)
+    fig.tight_layout()
+    return axes

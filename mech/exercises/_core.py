@@ -275,6 +275,10 @@ class Exercise:
 
     def variant(self, rng=None, *, max_tries=1000):
         """Draw other valid givens (a dict) from ``rng`` (a Generator, a seed, or None)."""
+        return self._solved_variant(rng, max_tries=max_tries)[0]
+
+    def _solved_variant(self, rng=None, *, max_tries=1000):
+        """`variant`'s givens and their `Solution` (the solve that accepted them, kept)."""
         max_tries = integer("max_tries", max_tries, minimum=1)
         if isinstance(rng, (bool, np.bool_, float, complex, str, bytes)):
             raise InputTypeError(f"Expected `rng` to be a Generator, an integer seed or None, got {rng!r}")
@@ -286,9 +290,9 @@ class Exercise:
         for _ in range(max_tries):
             candidate = self.params(self.sampler(rng))
             try:
-                self.solver(candidate)
+                solution = self.solver(candidate)
             except ValueError:
                 continue
-            return candidate
+            return candidate, replace(solution, units={p.name: p.unit for p in self.parameters})
         raise ValueError(f"Expected a valid variant of exercise {self.number} within `max_tries` = "
                          f"{max_tries} draws, got none")

@@ -128,8 +128,8 @@ def solved_variant(exercise, seed, *, max_tries=1000):
     checked it by analysis: simulation, closure or the defining equations, as each exercise
     states), and every numeric answer is finite; otherwise ``ValueError``.
     """
-    params = exercise.variant(seed, max_tries=max_tries)
-    solution = exercise.solve(params)
+    # the solve that accepted the variant is the solution (no second solve of the same numbers)
+    params, solution = exercise._solved_variant(seed, max_tries=max_tries)
     bad = [r.name for r in solution.results()
            if isinstance(r.value, (float, np.floating)) and not math.isfinite(float(r.value))]
     if bad:

@@ -46,11 +46,13 @@ def _along(linkage, point, direction, theta):
     return np.real(sol.points[point] * e), np.real(sol.velocities[point] * e)
 
 
-def _reversals(position, samples=2048, iterations=64):
+def _reversals(position, samples=2048, sections=64, rounds=10):
     """Crank angles in [0, 2 pi) where an output reverses, with the output there.
 
     ``position(theta) -> (x, dx/dtheta)``. The rate is sampled over one turn and each sign
-    change is refined by bisection (all brackets at once) to rounding.
+    change is refined to rounding by multisection: every round splits all brackets at once
+    into ``sections`` parts and keeps the part where the sign changes (a round narrows a
+    bracket 64-fold, as six bisection steps would, for one call of ``position``).
     """
     theta = np.linspace(0.0, _TURN, samples, endpoint=False)
     _, v = position(theta)
@@ -58,10 +60,14 @@ def _reversals(position, samples=2048, iterations=64):
     idx = np.flatnonzero(up != np.roll(up, -1))
     lo, hi = theta[idx], theta[idx] + _TURN / samples
     up_lo = up[idx]
-    for _ in range(iterations):
-        mid = 0.5 * (lo + hi)
-        same = (position(mid)[1] > 0.0) == up_lo
-        lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+    frac = np.arange(1, sections) / sections
+    rows = np.arange(idx.size)
+    for _ in range(rounds):
+        t = np.concatenate([lo[:, None], lo[:, None] + (hi - lo)[:, None] * frac, hi[:, None]], axis=1)
+        same = (position(t[:, 1:-1].ravel())[1].reshape(idx.size, -1) > 0.0) == up_lo[:, None]
+        # the first interior point past the sign change (or hi when there is none)
+        j = np.argmax(np.concatenate([~same, np.ones((idx.size, 1), bool)], axis=1), axis=1)
+        lo, hi = t[rows, j], t[rows, j + 1]
     roots = np.mod(0.5 * (lo + hi), _TURN)
     return roots, position(roots)[0]
 
