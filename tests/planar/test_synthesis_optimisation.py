@@ -9,6 +9,7 @@ import mpmath
 import numpy as np
 import pytest
 
+from mech._generated.path_optimisation import path_angles, path_coupler_point
 from mech.planar.synthesis import (
     CouplerPathDesign,
     DesignModel,
@@ -19,6 +20,7 @@ from mech.planar.synthesis import (
     scipy_minimize,
     steering_trapezoid_model,
 )
+from mech.planar.synthesis._optimisation_examples import _coupler_model
 
 POINTS_2_24 = np.array([9.50 + 8.26j, 9 + 8.87j, 7.96 + 9.51j, 5.65 + 9.94j, 4.36 + 9.7j, 3.24 + 9j,
                         3.26 + 8.36j, 4.79 + 8.11j, 6.58 + 8j, 9.12 + 7.89j])
@@ -221,6 +223,110 @@ def test_example_2_24_scale_invariant(scale):
     got = path_synthesis_model(POINTS_2_24 * scale).f(xs) / scale
     assert abs(got - ref) < 1e-13 * ref
     assert abs(CouplerPathDesign(xs, POINTS_2_24 * scale).prove().objective / scale - ref) < 1e-12 * ref
+
+
+# ---------------------------------------------------------------- the model (2-58), generated code
+
+def _local_delta_mp(l1, l2, l3, l4, phi1):
+    """Angle of B->C from A->D at 50 digits, C by circle intersection left of B->D."""
+    with mpmath.workdps(50):
+        l1, l2, l3, l4, phi1 = (mpmath.mpf(float(v)) for v in (l1, l2, l3, l4, phi1))
+        B = l1 * mpmath.expj(phi1)
+        C = _circle_intersection(B, l2, mpmath.mpc(l4, 0), l3, +1)
+        return mpmath.arg(C - B)
+
+
+def _textbook_delta(l1, l2, l3, l4, phi1):
+    """delta of (2-58) as printed: law-of-cosines d, arccos and arcsin, in double precision."""
+    d = np.sqrt(l1 * l1 + l4 * l4 - 2.0 * l1 * l4 * np.cos(phi1))
+    with np.errstate(invalid="ignore"):
+        return np.arccos((l2 * l2 + d * d - l3 * l3) / (2.0 * l2 * d)) - np.arcsin(l1 * np.sin(phi1) / d)
+
+
+def _near_fold_designs(gap, count, seed):
+    """Crank-rockers on a 2^-10 grid with one Grashof gap = 2^-k (k = 30..44), exact in binary,
+    and the crank angle near the pose where that gap folds the triangle BCD (phi1 = 0 or pi)."""
+    rng = np.random.default_rng(seed)
+    grid = lambda lo, hi: np.round(rng.uniform(lo, hi) * 1024) / 1024
+    out = []
+    for _ in range(count):
+        eps = 2.0 ** -rng.integers(30, 45)
+        t = rng.choice([-1, 1]) * 10.0 ** rng.uniform(-12, -6)
+        l1, l4 = grid(0.5, 1.0), grid(3.0, 3.5)
+        if gap == "g4":      # l2 + l3 = l1 + l4 + eps: kappa near 0 at phi1 = pi (C between B and D)
+            l2 = grid(1.5, 2.5)
+            out.append((l1, l2, l1 + l4 - l2 + eps, l4, np.pi + t))
+        elif gap == "g3":    # l2 = l3 + (l4 - l1) - eps: kappa near 0 at phi1 = 0 (C beyond D)
+            l3 = grid(1.5, 2.5)
+            out.append((l1, l3 + l4 - l1 - eps, l3, l4, t))
+        else:                # l3 = l2 + (l4 - l1) - eps: kappa near pi at phi1 = 0 (B between C and D)
+            l2 = grid(1.5, 2.5)
+            out.append((l1, l2, l2 + l4 - l1 - eps, l4, t))
+    return np.array(out)
+
+
+def test_path_coupler_point_mpmath_random():
+    """The generated (2-58) against circle intersections at 50 digits on random crank-rockers,
+    and against the ten-argument placement of FourBar's coupler point."""
+    rng = np.random.default_rng(2058)
+    m = 300
+    x = np.column_stack([rng.uniform(0.2, 1.0, m), rng.uniform(2.0, 3.5, m), rng.uniform(2.0, 3.5, m),
+                         rng.uniform(3.0, 3.5, m), rng.uniform(0.0, 5.0, m), rng.uniform(-10, 10, (m, 2)),
+                         rng.uniform(-np.pi, np.pi, (m, 3))])
+    x = x[(x[:, 0] + x[:, 3] <= x[:, 1] + x[:, 2]) & (x[:, 0] + x[:, 1] <= x[:, 2] + x[:, 3])
+          & (x[:, 0] + x[:, 2] <= x[:, 1] + x[:, 3])]
+    xp, yp = path_coupler_point(*x.T)
+    want = _coupler_points_mp_at(x)
+    err = np.abs(xp + 1j * yp - want) / (np.abs(x[:, 5] + 1j * x[:, 6]) + x[:, 0] + x[:, 4])
+    assert x.shape[0] > 150 and np.max(err) < 4e-16
+    # the package's model is the same function, vectorised over designs and steps
+    model = _coupler_model(np.column_stack([x[:, :9], x[:, 9]])[:, None, :], 1)[:, 0, 0]
+    assert np.max(np.abs(model - want) / (np.abs(want) + x[:, 0] + x[:, 4])) < 1e-15
+
+
+def _coupler_points_mp_at(x):
+    out = []
+    for row in x:
+        out.append(_coupler_points_mp(list(row), 1)[0])
+    return np.array(out)
+
+
+@pytest.mark.parametrize("gap", ["g2", "g3", "g4"])
+def test_path_angles_near_folds_atan2_vs_arccos(gap):
+    """Near a flat triangle BCD (kappa near 0 or pi) the atan2 form of delta keeps rounding
+    accuracy; the printed arccos form has an absolute error of about eps over the distance
+    to the fold."""
+    designs = _near_fold_designs(gap, 40, seed={"g2": 2, "g3": 3, "g4": 4}[gap])
+    _, beta, delta = path_angles(*designs.T)
+    ref = np.array([float(_local_delta_mp(*row)) for row in designs])
+    scale = np.abs(ref) + np.abs(beta)
+    err_atan2 = np.abs(np.angle(np.exp(1j * (delta - ref)))) / scale
+    printed = _textbook_delta(*designs.T)
+    err_acos = np.abs(np.angle(np.exp(1j * (printed - ref)))) / scale
+    err_acos = np.where(np.isnan(printed), np.inf, err_acos)
+    assert np.max(err_atan2) < 4 * np.finfo(float).eps       # measured: at most 1.6 eps
+    # the printed form is off by far more than rounding on most of these designs
+    eps = np.finfo(float).eps
+    assert np.median(err_acos) > 1e3 * eps and np.max(err_acos) > 1e5 * eps
+
+
+def test_path_angles_beta_is_the_printed_arcsin_for_a_crank():
+    """beta by atan2 equals the text's arcsin(l1 sin(phi1) / d) when l1 < l4 (F52, F31)."""
+    rng = np.random.default_rng(31)
+    l1, l4, phi1 = rng.uniform(0.2, 1.0, 500), rng.uniform(1.1, 3.0, 500), rng.uniform(-np.pi, np.pi, 500)
+    d, beta, _ = path_angles(l1, 2.0, 2.0, l4, phi1)
+    assert np.allclose(beta, np.arcsin(l1 * np.sin(phi1) / d), rtol=0, atol=1e-14)
+    assert np.allclose(d, np.sqrt(l1**2 + l4**2 - 2 * l1 * l4 * np.cos(phi1)), rtol=1e-14)
+
+
+def test_path_coupler_point_broadcast_and_unassembled():
+    """Shapes broadcast like a ufunc; a design that cannot be assembled gives NaN, never a wrong point."""
+    phi1 = np.linspace(0, 2 * np.pi, 12).reshape(3, 4)
+    xp, yp = path_coupler_point(1.0, 3.0, 3.0, 3.2, 1.5, 0.0, 0.0, 0.3, 0.1, phi1)
+    assert xp.shape == yp.shape == (3, 4) and np.all(np.isfinite(xp))
+    with np.errstate(invalid="ignore"):
+        xp, _ = path_coupler_point(1.0, 1.0, 1.0, 3.5, 1.0, 0.0, 0.0, 0.0, 0.0, np.array([0.0, np.pi]))
+    assert np.all(np.isnan(xp))
 
 
 # ---------------------------------------------------------------- checkpoints and progress

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._generated.path_optimisation import path_coupler_point
 from mech._generated.steering_trapezoid import steering_beta, steering_ideal
 from mech._validate import _show, finite_array, nonnegative_int, planar_points, positive_length, real_number
 from mech.planar.kinematics._fourbar import FourBar
@@ -214,15 +215,12 @@ def _points(points):
 def _coupler_model(x, n):
     """Coupler points of (2-58) for designs x (..., 10) at n equal crank steps: shape (..., n)."""
     l1, l2, l3, l4, l5, xa, ya, alpha, phi4, theta0 = (x[..., i:i + 1] for i in range(10))
-    # angles from ratios to the longest link: no overflow or underflow in squares at any scale
+    # in units of the longest link: no overflow or underflow in the squares at any scale
     s = np.maximum(np.maximum(l1, l2), np.maximum(l3, l4))
-    l1, l2, l3, l4 = l1 / s, l2 / s, l3 / s, l4 / s
     phi1 = theta0 + 2.0 * np.pi * np.arange(n) / n
-    d = np.sqrt(l1 * l1 + l4 * l4 - 2.0 * l1 * l4 * np.cos(phi1))
-    # beta of the text, arcsin(l1 sin(phi1) / d), in atan2 form (the same for l1 < l4)
-    beta = np.arctan2(l1 * np.sin(phi1), l4 - l1 * np.cos(phi1))
-    delta = np.arccos((l2 * l2 + d * d - l3 * l3) / (2.0 * l2 * d)) - beta
-    return xa + 1j * ya + s * l1 * np.exp(1j * (phi4 + phi1)) + l5 * np.exp(1j * (alpha + delta + phi4))
+    # the point relative to A, by the generated model (derivation page deriv-path-optimisation)
+    xp, yp = path_coupler_point(l1 / s, l2 / s, l3 / s, l4 / s, l5 / s, 0.0, 0.0, alpha, phi4, phi1)
+    return xa + 1j * ya + s * (xp + 1j * yp)
 
 
 def path_synthesis_model(points, *, gamma_min=np.radians(30.0), bounds=None):
@@ -255,8 +253,9 @@ def path_synthesis_model(points, *, gamma_min=np.radians(30.0), bounds=None):
     The text leaves the crank's start angle unstated; here it is the variable theta0 (the
     printed optimum fits its ten points only with theta0 near 92 degrees). The coupler
     angle is phi4 + alpha + delta with delta = angle CBD - beta: the assembly with C to
-    the left of B->D, `FourBar` branch +1. A design that cannot be assembled at a step has
-    objective inf.
+    the left of B->D, `FourBar` branch +1. The model is generated from the derivation page
+    ``deriv-path-optimisation`` (eq. 2-58, in atan2 form: accurate also where the triangle
+    BCD is nearly flat). A design that cannot be assembled at a step has objective inf.
 
     Examples
     --------
