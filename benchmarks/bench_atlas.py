@@ -10,7 +10,8 @@
 - open arcs: targets that are half a cycle of an atlas curve (from a random start, so half a
   turn of the crank when it turns fully), with the same random similarity, reversal and
   1e-3 noise; the recovery rate of the first match (the row or a cognate), overall and for
-  full-turn inputs, on the 10^4 atlas;
+  full-turn inputs, on the 10^4 atlas, the misses whose first match fits within 1.5 times
+  the noise, and the memory of the cached sub-arc signatures;
 - refinement from several starts (`find_linkages`, 8 starts): the coupler curve of example
   2-1's linkage with a coupler point (20, 15), and curves of random linkages drawn with
   another seed (not in the atlas): the relative RMS error of the first match and after;
@@ -52,6 +53,8 @@ from mech.atlas._sampling import coupler_curves, coupler_points  # noqa: E402
 from mech.planar import FourBar, cognates  # noqa: E402
 
 GOAL_QUERY_S = 0.050
+#: An open-arc miss whose first match fits within this many times the noise counts as an equivalent fit.
+NOISE_FIT = 1.5
 OUTPUT = HERE / "results" / "atlas.json"
 
 
@@ -107,16 +110,22 @@ def _arc_target(atlas, i, rng, points=200):
 
 
 def _open_arcs(atlas, trials, rng):
-    """Recovery of half-cycle arcs taken from atlas rows (first match is the row or a cognate)."""
+    """Recovery of half-cycle arcs taken from atlas rows (first match is the row or a cognate).
+
+    A miss is listed with the first match's relative error and the row's own (if among the
+    first five); a miss whose first match fits the target within the noise (relative error
+    at most `NOISE_FIT` times the 1e-3 noise) is counted apart, as an equivalent fit.
+    """
     query(atlas, _arc_target(atlas, 0, rng), closed=False)            # the sub-arc signatures
-    hits, full_hits, full, times, kinds = 0, 0, 0, [], {}
+    memory = sum(x.nbytes for pair in atlas._arc_cache.values() for x in pair)
+    hits, full_hits, full, times, kinds, misses = 0, 0, 0, [], {}, []
     for _ in range(trials):
         i = int(rng.integers(len(atlas)))
         target = _arc_target(atlas, i, rng)
         t = time.perf_counter()
-        best = query(atlas, target, closed=False, k=1)[0]
+        matches = query(atlas, target, closed=False, k=5)
         times.append(time.perf_counter() - t)
-        ok = _found(atlas, i, best)
+        ok = _found(atlas, i, matches[0])
         hits += ok
         kind = str(atlas.linkages.kind[i])
         kinds.setdefault(kind, [0, 0])
@@ -125,11 +134,23 @@ def _open_arcs(atlas, trials, rng):
         if atlas.linkages.full_turn[i]:
             full += 1
             full_hits += ok
-    print(f"open arcs (half a cycle, 1e-3 noise), n = {len(atlas)}: recovered {hits}/{trials}, full-turn inputs "
-          f"{full_hits}/{full}, query median {1e3 * np.median(times):.0f} ms; by kind "
+        if not ok:
+            own = [m for m in matches if _found(atlas, i, m)]
+            misses.append({"row": i, "kind": kind, "first_relative_error": matches[0].relative_error,
+                           "first_kind": matches[0].kind,
+                           "row_relative_error": own[0].relative_error if own else None,
+                           "row_rank": own[0].rank if own else None})
+    within = sum(m["first_relative_error"] <= NOISE_FIT * 1e-3 for m in misses)
+    print(f"open arcs (half a cycle, 1e-3 noise), n = {len(atlas)}: recovered {hits}/{trials} "
+          f"(+{within} misses fitted within the noise), full-turn inputs {full_hits}/{full}, query median "
+          f"{1e3 * np.median(times):.0f} ms, sub-arc signatures {memory / 1e6:.0f} MB; by kind "
           + ", ".join(f"{k} {v[0]}/{v[1]}" for k, v in sorted(kinds.items())))
-    return {"n": len(atlas), "trials": trials, "recovered": hits, "full_turn_trials": full,
-            "full_turn_recovered": full_hits, "by_kind": kinds, "query_median_s": float(np.median(times))}
+    for miss in misses:
+        print(f"    miss: row {miss['row']} ({miss['kind']}) first match error {miss['first_relative_error']:.2e}, "
+              f"the row itself at rank {miss['row_rank']} with error {miss['row_relative_error']}")
+    return {"n": len(atlas), "trials": trials, "recovered": hits, "misses_within_noise": within,
+            "noise_fit": NOISE_FIT, "full_turn_trials": full, "full_turn_recovered": full_hits, "by_kind": kinds,
+            "query_median_s": float(np.median(times)), "sub_arc_memory_mb": memory / 1e6, "misses": misses}
 
 
 def _refinement(atlas, targets, rng):
@@ -241,7 +262,7 @@ def main(argv=None):
                   f"the row itself at rank {miss['row_rank']} with error {miss['row_relative_error']}")
     dask_report = _dask_build(sizes[-1], atlas)
     small = build_atlas(sizes[0], seed=0)
-    arcs = _open_arcs(small, 20 if args.quick else 100, rng)
+    arcs = _open_arcs(small, 20 if args.quick else 200, rng)
     refined = _refinement(small, 2 if args.quick else 10, rng)
     sphere = _sphere(10 if args.quick else 100, rng)
     worst = _invariance(200 if args.quick else 5000, rng)

@@ -52,7 +52,9 @@ def test_query_open_arc_exact(atlas):
 
 def test_query_open_arc_caches_sub_arc_signatures(atlas):
     query(atlas, [0, 1, 1 + 1j, 2 + 1j], closed=False, k=1)
-    assert (0.5, 32) in atlas._arc_cache
+    sigs, norms = atlas._arc_cache[(0.5, 64)]
+    assert sigs.dtype == np.float32 and sigs.shape == (len(atlas), 64, 4 * atlas.harmonics)
+    assert norms.dtype == np.float64
 
 
 def test_query_open_arc_recovery_quick(atlas):
@@ -82,3 +84,25 @@ def test_query_open_arc_options(atlas):
         query(atlas, [0], closed=False)
     with pytest.raises(ValueError, match="Expected `target` of shape"):
         query(atlas, [0, 1], closed=True)
+
+
+def test_align_arcs_rocking_input_from_offset_ends(atlas):
+    """Noise-free half cycles of rocking inputs, the search started a half sub-arc step off:
+    moving the ends in arc length reaches the true ends (the steps in u stalled where the
+    coupler point is slow at one end and fast at the other)."""
+    from mech.atlas._arcs import align_arcs
+    from mech.atlas._signature import _resample_rows
+
+    rng = np.random.default_rng(1)
+    rows = np.flatnonzero(atlas.linkages.kind == "triple-rocker")[:12]
+    errors = []
+    for i in rows:
+        u0 = rng.uniform(0, 2 * np.pi)
+        arc = coupler_points(atlas.linkages.take([i]).columns(), (u0 + np.pi * np.linspace(0, 1, 200))[None, :])[0]
+        t = _resample_rows(arc[None], atlas.samples // 2 + 1, False)[0]
+        radius = np.sqrt(np.mean(np.abs(t - t.mean()) ** 2))
+        e = align_arcs(t, atlas.linkages.take([i]), np.array([u0 + np.pi / 64]), np.array([u0 + np.pi * 65 / 64]),
+                       np.pi / 32)[0][0]
+        errors.append(e / radius)
+    assert np.median(errors) < 1e-4
+    assert np.sum(np.array(errors) < 2e-3) >= 11
