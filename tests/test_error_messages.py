@@ -24,28 +24,10 @@ VALUES = (1e300, -1e300, 1e-300, -1e-300, 1e154, 5e-324, 0.0)
 KNOWN = {
     # a length below 2**-1074 of the longest: the scaled length 0.0 is reported as `a` > 0
     ('exercises.Exercise.solve', 'AB'),
-    ('exercises.Exercise.solve#2-28', 'AD'),
-    ('exercises.Exercise.solve#2-28', 'psi1'),
-    ('exercises.Exercise.solve#2-28', 'psi2'),
-    ('exercises.Exercise.solve#2-28', 'xF1'),
     ('exercises.Exercise.solve#2-29', 'AD'),
     ('exercises.Exercise.solve#2-29', 'phi1'),
-    ('exercises.Exercise.solve#2-30', 'gamma_allowed'),
-    ('exercises.Exercise.solve#2-31', 'K'),
-    ('exercises.Exercise.solve#2-32', 'K'),
     ('exercises.Exercise.solve#dict', 'params'),
     ('exercises.chapter2_analysis.linkage_2_4#dict', 'params'),
-    ('exercises.chapter2_quick_return.designs_2_31#K', 'p'),
-    ('exercises.chapter2_quick_return.shaper_2_32#H', 'p'),
-    ('exercises.chapter2_quick_return.shaper_2_32#K', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#AB', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#AD', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#BC', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#CD', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#psi1', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#psi2', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#psi3', 'p'),
-    ('exercises.chapter2_synthesis.design_2_28#xF1', 'p'),
     ('exercises.chapter2_synthesis.design_2_29#phi1', 'p'),
     ('planar.kind_intervals', 'lengths'),
     ('planar.parallel_efficiency', 'etas'),
@@ -164,3 +146,21 @@ def test_quick_return_slider_crank_small_offset_alpha():
     q = quick_return_slider_crank(1.25, 100.0, offset=1e-13)
     # mpmath, 50 digits: acos(cos(theta) - 2 x sin(theta)) - theta, x = 1e-15, theta = pi/9
     assert q.alpha == pytest.approx(1.9999999999999945657926522e-15, rel=1e-14)
+
+
+@pytest.mark.parametrize("number, given, match", [
+    ("2-28", {"psi1": 5e-324}, r"`psi1` that the crank-rocker .* got psi1=5e-324"),
+    ("2-28", {"AB": 1e300}, r"Expected `AB` shorter than the other three links together .*AB=1e\+300"),
+    ("2-28", {"AD": 1e-300}, r"Expected `BC` shorter .*`AD`.*AD=1e-300"),
+    ("2-28", {"xF1": 1e300}, r"Expected `xF1`, `xF2`, `xF3` and `e` .*xF1=1e\+300"),
+    ("2-30", {"gamma_allowed": 1e300}, r"Expected `gamma_allowed` in \[0, 90\) degrees, got 1e\+300"),
+    ("2-31", {"K": -1e300}, r"Expected `K` >= 1, got -1e\+300"),
+    ("2-32", {"K": -1e300}, r"Expected `K` >= 1, got -1e\+300"),
+    ("2-32", {"H": 1e300}, r"Expected `l_DE` > half the sagitta .*`H` = 1e\+300"),
+])
+def test_exercise_inner_check_names_given(number, given, match):
+    import mech.exercises
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(ValueError, match=match):
+            mech.exercises.get(number).solve(**given)

@@ -409,15 +409,15 @@ class RockerSlider:
     gamma_min: float
 
 
-def _crank_candidates(a, b, c, d, psi):
+def _crank_candidates(a, b, c, d, psi, given):
     """For each rocker angle, the crank angles (two) that put the rocker there, with their branch."""
     C = d + c * np.exp(1j * psi)
     r = np.abs(C)
     k = (a * a + r * r - b * b) / (2.0 * a * r)
     if np.any(np.abs(k) > 1.0):
         j = int(np.argmax(np.abs(k)))
-        raise ValueError(f"Expected `psi{j + 1}` that the crank-rocker (AB, BC, CD, AD) = ({a!r}, {b!r}, {c!r}, "
-                         f"{d!r}) reaches, got psi{j + 1}={math.degrees(psi[j]):.6g} (degrees), out of its reach")
+        raise ValueError(f"Expected `psi{j + 1}` that the crank-rocker (`AB`, `BC`, `CD`, `AD`) = ({a!r}, {b!r}, {c!r}, "
+                         f"{d!r}) reaches, got psi{j + 1}={given[j]!r} (degrees), out of its reach")
     out = []
     for Cj, kj in zip(C, k):
         row = []
@@ -430,9 +430,9 @@ def _crank_candidates(a, b, c, d, psi):
     return out
 
 
-def _ordered_crank_angles(a, b, c, d, psi, samples=721):
+def _ordered_crank_angles(a, b, c, d, psi, given, samples=721):
     """Branch and crank angles meeting psi1, psi2, psi3 in order on one stroke (CCW crank)."""
-    rows = _crank_candidates(a, b, c, d, psi)
+    rows = _crank_candidates(a, b, c, d, psi, given)
     for choice in itertools.product(*rows):
         branch = choice[0][1]
         if any(s != branch for _, s in choice):
@@ -448,9 +448,9 @@ def _ordered_crank_angles(a, b, c, d, psi, samples=721):
         if (np.all(sweep.valid) and np.all(rising > 0.0)
                 and np.max(np.abs(np.angle(np.exp(1j * (at.psi - psi))))) < 1e-9):
             return fb, t[0] + np.concatenate([[0.0], np.cumsum(steps)])
-    p1, p2, p3 = (float(round(math.degrees(x), 9)) for x in psi)
+    p1, p2, p3 = given
     raise ValueError("Expected `psi1`, `psi2` and `psi3` that the crank, turning counter-clockwise, meets in this "
-                     f"order on one stroke, got psi1={p1!r}, psi2={p2!r}, psi3={p3!r} (degrees) for (AB, BC, CD, AD) "
+                     f"order on one stroke, got psi1={p1!r}, psi2={p2!r}, psi3={p3!r} (degrees) for (`AB`, `BC`, `CD`, `AD`) "
                      f"= ({a!r}, {b!r}, {c!r}, {d!r})")
 
 
@@ -483,12 +483,28 @@ def design_2_28(p):
     (61.74, 152.593, True)
     """
     a, b, c, d = (positive_length(k, p[k]) for k in ("AB", "BC", "CD", "AD"))
-    psi = np.array([real_number(k, p[k]) for k in ("psi1", "psi2", "psi3")]) * _DEG
+    given = tuple(real_number(k, p[k]) for k in ("psi1", "psi2", "psi3"))
+    psi = np.array(given) * _DEG
     e = real_number("e", p["e"])
+    links = {"AB": a, "BC": b, "CD": c, "AD": d}
+    for name, x in links.items():
+        rest = math.fsum(v for k, v in links.items() if k != name)
+        if not x < rest:      # before the crank angles, which would blame psi1
+            others = " + ".join(f"`{k}`" for k in links if k != name)
+            raise ValueError(f"Expected `{name}` shorter than the other three links together ({others} = "
+                             f"{rest!r}), got AB={a!r}, BC={b!r}, CD={c!r}, AD={d!r}")
     xF = np.array([real_number(k, p[k]) for k in ("xF1", "xF2", "xF3")])
     F = d + xF + 1j * e
-    fourbar, crank = _ordered_crank_angles(a, b, c, d, psi)
-    link = dyad_for_circle_point(-psi, np.exp(-1j * psi) * (F - d), 0.0)
+    fourbar, crank = _ordered_crank_angles(a, b, c, d, psi, given)
+    try:
+        link = dyad_for_circle_point(-psi, np.exp(-1j * psi) * (F - d), 0.0)
+    except ValueError as exc:     # its message names its own `circle_point`, not a given here
+        x1, x2, x3 = (p[k] for k in ("xF1", "xF2", "xF3"))
+        raise ValueError(
+            f"Expected `xF1`, `xF2`, `xF3` and `e` whose slider positions, seen from the rocker, fix a "
+            f"hinge E at a finite, non-zero distance (their circumcentre), got xF1={x1!r}, xF2={x2!r}, "
+            f"xF3={x3!r}, e={p['e']!r}"
+        ) from exc
     E_local, EF = complex(link.centre_point), float(link.length)
     E1 = d + np.exp(1j * psi[0]) * E_local
     slider_branch = 1 if (F[0] - E1).real >= 0.0 else -1
