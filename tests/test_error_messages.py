@@ -9,6 +9,7 @@ raise sites of the package: a message without a backtick must build its names el
 """
 
 import ast
+import re
 import pathlib
 import warnings
 
@@ -164,3 +165,20 @@ def test_exercise_inner_check_names_given(number, given, match):
         warnings.simplefilter("error")
         with pytest.raises(ValueError, match=match):
             mech.exercises.get(number).solve(**given)
+
+
+def test_exercise_2_28_tiny_crank_quiet():
+    """AB = 5e-324: the rocker cannot reach psi1, said without an overflow warning."""
+    import mech.exercises
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(ValueError, match=r"`psi1` that the crank-rocker \(`AB`.*5e-324"):
+            mech.exercises.get("2-28").solve(AB=5e-324)
+
+
+@pytest.mark.parametrize("phi2", [1e300, -1e300])
+def test_exercise_2_29_huge_input_names_phi(phi2):
+    import mech.exercises
+    from mech import AssemblyError
+    with pytest.raises(AssemblyError, match=r"Expected `phi1`, `phi2` and `phi3` .*phi2=" + re.escape(repr(phi2))):
+        mech.exercises.get("2-29").solve(phi2=phi2)

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._errors import AssemblyError
 from mech._validate import bool_flag, naming, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import FourBar, Guide, Linkage, grashof
@@ -84,7 +85,13 @@ def _solve_2_29(p):
     g = design_2_29(p)
     alt = design_2_29(p, interior=True)
     a, b, c, d = g.lengths
-    pose = g.fourbar.solve(g.input_angles, strict=True)
+    try:
+        pose = g.fourbar.solve(g.input_angles, strict=True)
+    except AssemblyError as exc:      # its message names the designed four-bar, not a given
+        raise AssemblyError(
+            f"Expected `phi1`, `phi2` and `phi3` at which the designed four-bar assembles, got "
+            f"phi1={p['phi1']!r}, phi2={p['phi2']!r}, phi3={p['phi3']!r} (degrees): {exc}"
+        ) from exc
     psi_given = np.array([p["psi1"], p["psi2"], p["psi3"]]) * _DEG
     err = float(np.max(np.abs(np.angle(np.exp(1j * (pose.psi - psi_given - np.pi * _flipped(g.psi0, psi_given[0])))))))
     gamma, at = g.min_transmission_angle
@@ -413,7 +420,8 @@ def _crank_candidates(a, b, c, d, psi, given):
     """For each rocker angle, the crank angles (two) that put the rocker there, with their branch."""
     C = d + c * np.exp(1j * psi)
     r = np.abs(C)
-    k = (a * a + r * r - b * b) / (2.0 * a * r)
+    with np.errstate(over="ignore", divide="ignore"):      # a crank of 5e-324: |k| = inf, out of reach
+        k = (a * a + r * r - b * b) / (2.0 * a * r)
     if np.any(np.abs(k) > 1.0):
         j = int(np.argmax(np.abs(k)))
         raise ValueError(f"Expected `psi{j + 1}` that the crank-rocker (`AB`, `BC`, `CD`, `AD`) = ({a!r}, {b!r}, {c!r}, "
