@@ -30,9 +30,6 @@ KNOWN = {
     ('exercises.Exercise.solve#dict', 'params'),
     ('exercises.chapter2_analysis.linkage_2_4#dict', 'params'),
     ('exercises.chapter2_synthesis.design_2_29#phi1', 'p'),
-    ('planar.kind_intervals', 'lengths'),
-    ('planar.parallel_efficiency', 'etas'),
-    ('planar.parallel_efficiency', 'powers'),
     ('planar.synthesis.FunctionMap', 'x_range'),
     ('planar.synthesis.FunctionMap.rotations', 'x'),
     ('planar.synthesis.SteeringTrapezoid', 'a'),
@@ -182,3 +179,26 @@ def test_exercise_2_29_huge_input_names_phi(phi2):
     from mech import AssemblyError
     with pytest.raises(AssemblyError, match=r"Expected `phi1`, `phi2` and `phi3` .*phi2=" + re.escape(repr(phi2))):
         mech.exercises.get("2-29").solve(phi2=phi2)
+
+
+def test_grashof_huge_link_shows_true_sum():
+    """The sum of the other three beside a 1e300 is 105.0, not 1e300 - 1e300 = 0.0."""
+    from mech.planar import grashof
+    with pytest.raises(ValueError, match=r"Expected `a` < 105\.0, the sum of the other three links, got 1e\+300"):
+        grashof(1e300, 40, 30, 35)
+
+
+@pytest.mark.parametrize("lengths, match", [
+    ((1e300, 30.0, 35.0), r"Expected `lengths` that leave an interval of `a` .*1e\+300"),
+    ((-1e300, 30.0, 35.0), r"Expected `lengths` with every fixed length finite and > 0: .*-1e\+300"),
+])
+def test_kind_intervals_named_as_lengths(lengths, match):
+    from mech.planar import kind_intervals
+    with pytest.raises(ValueError, match=match):
+        kind_intervals(lengths, "a")
+
+
+def test_parallel_efficiency_mismatch_shows_lengths():
+    from mech.planar import parallel_efficiency
+    with pytest.raises(ValueError, match=r"as many `powers` as `etas`, got lengths 1 and 2"):
+        parallel_efficiency([0.9, 0.8], [1.0])
