@@ -25,11 +25,7 @@ VALUES = (1e300, -1e300, 1e-300, -1e-300, 1e154, 5e-324, 0.0)
 KNOWN = {
     # a length below 2**-1074 of the longest: the scaled length 0.0 is reported as `a` > 0
     ('exercises.Exercise.solve', 'AB'),
-    ('exercises.Exercise.solve#2-29', 'AD'),
-    ('exercises.Exercise.solve#2-29', 'phi1'),
     ('exercises.Exercise.solve#dict', 'params'),
-    ('exercises.chapter2_analysis.linkage_2_4#dict', 'params'),
-    ('exercises.chapter2_synthesis.design_2_29#phi1', 'p'),
     ('planar.synthesis.FunctionMap', 'x_range'),
     ('planar.synthesis.FunctionMap.rotations', 'x'),
     ('planar.synthesis.SteeringTrapezoid', 'a'),
@@ -202,3 +198,14 @@ def test_parallel_efficiency_mismatch_shows_lengths():
     from mech.planar import parallel_efficiency
     with pytest.raises(ValueError, match=r"as many `powers` as `etas`, got lengths 1 and 2"):
         parallel_efficiency([0.9, 0.8], [1.0])
+
+
+@pytest.mark.parametrize("number, given, match", [
+    ("2-4", {"AB": 1e300}, r"Expected `AB` shorter than the other three links together .*AB=1e\+300"),
+    ("2-29", {"phi1": 1e300}, r"Expected `phi1`, `phi2`, .* `AD` that admit a four-bar .*phi1=1e\+300"),
+    ("2-29", {"AD": 5e-324}, r"Expected `phi1`, `phi2`, .* `AD` that admit a four-bar .*AD=5e-324"),
+])
+def test_exercise_derived_check_names_given(number, given, match):
+    import mech.exercises
+    with pytest.raises(ValueError, match=match):
+        mech.exercises.get(number).solve(**given)

@@ -73,7 +73,15 @@ def design_2_29(p, *, interior=False):
     if bool_flag("interior", interior):
         psi = np.pi - psi
     x, y = phi - phi[0], psi - psi[0]
-    design, = precision_pairs(x, y, theta0=phi[0], psi0=psi[0], d=d, x_range=(min(0.0, x.min()), max(0.0, x.max())))
+    try:
+        design, = precision_pairs(x, y, theta0=phi[0], psi0=psi[0], d=d,
+                                  x_range=(min(0.0, x.min()), max(0.0, x.max())))
+    except ValueError as exc:      # its message names its own `x`, `y`, `theta0`, ...
+        shown = ", ".join(f"{k}={p[k]!r}" for k in ("phi1", "phi2", "phi3", "psi1", "psi2", "psi3", "AD"))
+        raise ValueError(
+            f"Expected `phi1`, `phi2`, `phi3`, `psi1`, `psi2`, `psi3` and `AD` that admit a four-bar "
+            f"through the three precision pairs, got {shown} ({exc})"
+        ) from exc
     return design
 
 
