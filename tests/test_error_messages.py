@@ -24,8 +24,6 @@ VALUES = (1e300, -1e300, 1e-300, -1e-300, 1e154, 5e-324, 0.0)
 # names the inner argument; each reproduces with the slot at one of VALUES
 KNOWN = {
     # a length below 2**-1074 of the longest: the scaled length 0.0 is reported as `a` > 0
-    ('exercises.Exercise.solve', 'AB'),
-    ('exercises.Exercise.solve#dict', 'params'),
     ('planar.synthesis.FunctionMap', 'x_range'),
     ('planar.synthesis.FunctionMap.rotations', 'x'),
     ('planar.synthesis.SteeringTrapezoid', 'a'),
@@ -206,6 +204,17 @@ def test_parallel_efficiency_mismatch_shows_lengths():
     ("2-29", {"AD": 5e-324}, r"Expected `phi1`, `phi2`, .* `AD` that admit a four-bar .*AD=5e-324"),
 ])
 def test_exercise_derived_check_names_given(number, given, match):
+    import mech.exercises
+    with pytest.raises(ValueError, match=match):
+        mech.exercises.get(number).solve(**given)
+
+
+@pytest.mark.parametrize("number, given, match", [
+    ("2-3", {"AB": 1e300}, r"Expected `AB` shorter than the other three links together .*AB=1e\+300"),
+    ("2-3", {"AB": 5e-324}, r"Expected `AB` at least 2\*\*-1074 times the longest link .*got 5e-324"),
+    ("2-1", {"a": 1e300}, r"Expected `a` shorter than the other three links together .*a=1e\+300"),
+])
+def test_exercise_links_named(number, given, match):
     import mech.exercises
     with pytest.raises(ValueError, match=match):
         mech.exercises.get(number).solve(**given)
