@@ -26,13 +26,7 @@ KNOWN = {
     # a length below 2**-1074 of the longest: the scaled length 0.0 is reported as `a` > 0
     ('planar.synthesis.FunctionMap', 'x_range'),
     ('planar.synthesis.FunctionMap.rotations', 'x'),
-    ('planar.synthesis.SteeringTrapezoid', 'a'),
-    ('planar.synthesis.SteeringTrapezoid', 'l1'),
-    ('planar.synthesis.SteeringTrapezoid', 'phi0'),
     ('planar.synthesis.burmester', 'rank_tol'),
-    ('planar.synthesis.steering_trapezoid_model', 'a'),
-    ('planar.synthesis.steering_trapezoid_model', 'clearance'),
-    ('planar.synthesis.steering_trapezoid_model', 'h'),
     ('spherical.least_squares', 'psi0'),
 }
 
@@ -218,3 +212,23 @@ def test_exercise_links_named(number, given, match):
     import mech.exercises
     with pytest.raises(ValueError, match=match):
         mech.exercises.get(number).solve(**given)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"l1": 1e-300, "phi0": 1.2263}, r"Expected `l1`, `phi0` and `a` whose trapezoid .*l1=1e-300"),
+    ({"l1": 148.0, "phi0": 1e-300}, r"Expected `l1`, `phi0` and `a` whose trapezoid .*phi0=1e-300"),
+    ({"l1": 148.0, "phi0": 1.2263, "a": 1e300}, r"Expected `l1`, `phi0` and `a` whose trapezoid .*a=1e\+300"),
+])
+def test_steering_trapezoid_names_givens(kwargs, match):
+    from mech.planar.synthesis import SteeringTrapezoid
+    with pytest.raises(ValueError, match=match):
+        SteeringTrapezoid(**kwargs)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"h": 1e300}, r"h=1e\+300"), ({"clearance": 1e300}, r"clearance=1e\+300"), ({"a": 1e-300}, r"a=1e-300"),
+])
+def test_steering_trapezoid_model_names_givens(kwargs, match):
+    from mech.planar.synthesis import steering_trapezoid_model
+    with pytest.raises(ValueError, match=r"Expected `clearance`, `h` and `a` whose lower bound .*" + match):
+        steering_trapezoid_model(**kwargs)
