@@ -322,7 +322,9 @@ class QuickReturnCrankRocker:
 def _crank_rocker_unit(theta, swing, alpha, side):
     """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min, whether the crank revolves, and
     the points A, D, C1, C2 measured from the midpoint M of C1C2 (bounded as K -> 1)."""
-    R, H, a, b, d, ax, ay = qr_crank_rocker(theta, 1.0, swing, alpha, side)
+    # a swing below about 1e-308 divides 0 by 0 (sin(swing/2)**2 underflows): NaN, not a crank-rocker
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        R, H, a, b, d, ax, ay = qr_crank_rocker(theta, 1.0, swing, alpha, side)
     # a coupler b = 0 (a swing below the float range) gives NaN: not a crank-rocker
     with np.errstate(invalid="ignore", divide="ignore"):
         k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
