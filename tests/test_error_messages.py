@@ -20,15 +20,9 @@ from test_public_inputs import CASES
 
 VALUES = (1e300, -1e300, 1e-300, -1e-300, 1e154, 5e-324, 0.0)
 
-# left for later (issue 11 follow-up): an inner check on a derived quantity, whose message
-# names the inner argument; each reproduces with the slot at one of VALUES
-KNOWN = {
-    # a length below 2**-1074 of the longest: the scaled length 0.0 is reported as `a` > 0
-    ('planar.synthesis.FunctionMap', 'x_range'),
-    ('planar.synthesis.FunctionMap.rotations', 'x'),
-    ('planar.synthesis.burmester', 'rank_tol'),
-    ('spherical.least_squares', 'psi0'),
-}
+# (key, slot) pairs exempt from the check: none. The last 56 (an inner check on a derived
+# quantity naming the inner argument, issue 11) were fixed in their callers; keep it empty
+KNOWN = set()
 
 
 def _renderings(value):
@@ -232,3 +226,29 @@ def test_steering_trapezoid_model_names_givens(kwargs, match):
     from mech.planar.synthesis import steering_trapezoid_model
     with pytest.raises(ValueError, match=r"Expected `clearance`, `h` and `a` whose lower bound .*" + match):
         steering_trapezoid_model(**kwargs)
+
+
+def test_burmester_names_rank_tol():
+    from mech.planar.synthesis import burmester
+    theta = np.array([0.0, 0.154985, 0.385718, 1.111426, -0.05236])
+    d = np.array([0.0, 1 + 0.2j, 2 + 0.1j, 2.5 - 0.5j, 0.5 - 1j])
+    with pytest.raises(ValueError, match=r"`rank_tol` = 1e\+300"):
+        burmester(theta, d, rank_tol=1e300)
+
+
+def test_function_map_names_the_argument_where_f_is_not_finite():
+    from mech.planar.synthesis import FunctionMap
+    with pytest.raises(ValueError, match=r"Expected finite `f\(-1e\+300\)`, got nan, at `x_range` = -1e\+300"):
+        FunctionMap(np.log10, (-1e300, 10.0), 1.0, 1.0)
+    fmap = FunctionMap(np.log10, (1.0, 10.0), 1.0, 1.0)
+    with pytest.raises(ValueError, match=r"at `x` = -1e\+300"):
+        fmap.rotations([2.0, -1e300])
+
+
+def test_spherical_least_squares_names_givens():
+    import sys
+    sys.path.insert(0, str(pathlib.Path(__file__).parent))
+    from test_public_inputs import CASES
+    entry = CASES["spherical.least_squares"]
+    with pytest.raises(ValueError, match=r"Expected `x`, `y`, `theta0` and `psi0` .*psi0=1e-300"):
+        entry.call(psi0=1e-300)
