@@ -39,7 +39,7 @@ def _call(f, name, x, arg="x"):
         v = np.broadcast_to(np.asarray(value), np.shape(x)) if np.ndim(value) <= np.ndim(x) else None
         at = x if v is None or np.ndim(x) == 0 else np.asarray(x)[~np.isfinite(np.real(v))].ravel()[:1]
         at = float(np.ravel(at)[0]) if np.size(at) else at
-        raise ValueError(f"{exc}, at `{arg}` = {at!r}") from exc
+        raise type(exc)(f"{exc}, at `{arg}` = {at!r}") from exc      # InputTypeError stays one
 
 
 def _wrap(angle):
