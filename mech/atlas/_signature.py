@@ -166,7 +166,10 @@ def normal_form(z, harmonics):
     """Normalise rows of equally spaced samples `z` (rows, N); see the derivation page."""
     n = z.shape[1]
     C = np.fft.fft(z, axis=1) / n
-    scale = np.sqrt(np.sum(np.abs(C[:, 1:]) ** 2, axis=1))
+    # the norm of the harmonics, scaled by the largest so no square overflows (a curve of size 1e300)
+    A = np.abs(C[:, 1:])
+    top = np.max(A, axis=1)
+    scale = top * np.sqrt(np.sum((A / np.where(top > 0.0, top, 1.0)[:, None]) ** 2, axis=1))
     k = np.arange(1, harmonics + 1)
     pos, neg = C[:, k], C[:, -k]
     cands, alphas, directions = [], [], []

@@ -296,3 +296,21 @@ class Exercise:
             return candidate, replace(solution, units={p.name: p.unit for p in self.parameters})
         raise ValueError(f"Expected a valid variant of exercise {self.number} within `max_tries` = "
                          f"{max_tries} draws, got none")
+
+
+def check_links_close(*, resolved=False, **links):
+    """Raise ValueError naming, with the exercise's own names, a link not shorter than the
+    other three together (the library's checks call them `a`, `b`, `c`, `d`); with
+    ``resolved=True`` also one below 2**-1074 times the longest, which the limit positions
+    and transmission extremes cannot resolve."""
+    longest = max(links.values())
+    for name, x in links.items():
+        if resolved and math.ldexp(x, -math.frexp(longest)[1]) == 0.0:
+            raise ValueError(f"Expected `{name}` at least 2**-1074 times the longest link ({longest!r}) so "
+                             f"that the linkage can be solved, got {x!r}")
+        rest = math.fsum(v for k, v in links.items() if k != name)   # not total - x: 0.0 beside 1e300
+        if not x < rest:
+            others = " + ".join(f"`{k}`" for k in links if k != name)
+            shown = ", ".join(f"{k}={v!r}" for k, v in links.items())
+            raise ValueError(f"Expected `{name}` shorter than the other three links together ({others} = "
+                             f"{rest!r}), got {shown}")

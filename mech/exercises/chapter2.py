@@ -47,7 +47,7 @@ import math
 
 from mech._errors import InputTypeError
 from mech._validate import instance, positive_length
-from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
+from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution, check_links_close
 from mech.planar import FourBar, GuideBar, SliderCrank, grashof
 from mech.planar.structure import _grashof
 from mech.exercises.chapter2_analysis import EXERCISE_2_4, EXERCISE_2_5, EXERCISE_2_7, EXERCISE_2_10
@@ -275,6 +275,7 @@ def _solve_2_3(p):
     b = positive_length("BC", p["BC"])
     c = positive_length("CD", p["CD"])
     d = positive_length("AD", p["AD"])
+    check_links_close(AB=a, BC=b, CD=c, AD=d, resolved=True)
     g = grashof(a, b, c, d)
     if g.kind != "crank-rocker":
         raise ValueError(
@@ -468,8 +469,7 @@ def _solve_2_1(p):
     e = float(p["e"])
     if not math.isfinite(e):
         raise ValueError(f"Expected a finite offset `e`, got {e!r}")
-    if max(a, b, c, d) >= a + b + c + d - max(a, b, c, d):
-        raise ValueError(f"Expected each link of (a) shorter than the other three together, got {(a, b, c, d)!r}")
+    check_links_close(a=a, b=b, c=c, d=d)
     if r + abs(e) >= length:
         raise ValueError(f"Expected `r` + |`e`| < `l` = {length!r} so that the crank of (b) turns fully, got {r + abs(e)!r}")
     if g == h:

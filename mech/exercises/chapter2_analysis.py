@@ -150,6 +150,13 @@ def _check_2_4(p):
     h = float(p["h"])
     if not math.isfinite(h):
         raise ValueError(f"Expected a finite guide offset `h`, got {h!r}")
+    links = {"AB": a, "BC": b, "CD": c, "AD": d}
+    for name, x in links.items():      # here, under the exercise's names (grashof says `a`)
+        rest = math.fsum(v for k, v in links.items() if k != name)
+        if not x < rest:
+            others = " + ".join(f"`{k}`" for k in links if k != name)
+            raise ValueError(f"Expected `{name}` shorter than the other three links together ({others} = "
+                             f"{rest!r}), got AB={a!r}, BC={b!r}, CD={c!r}, AD={d!r}")
     kind = grashof(a, b, c, d).kind
     if kind != "crank-rocker":
         raise ValueError(f"Expected a crank-rocker ABCD with AD as the frame, got a {kind} "

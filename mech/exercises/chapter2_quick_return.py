@@ -60,6 +60,14 @@ def _agrees(measured, wanted):
     return abs(measured - wanted) <= _RTOL * abs(wanted)
 
 
+def _time_ratio(p):
+    """The exercise's `K`, checked under its own name (the library calls it `time_ratio`)."""
+    K = real_number("K", p["K"])
+    if not K >= 1.0:
+        raise ValueError(f"Expected `K` >= 1, got {K!r}")
+    return K
+
+
 # ----------------------------------------------------------------------------- 2-30
 def designs_2_30(p, given):
     """The crank-rockers of exercise 2-30 with the crank (``given="a"``) or coupler (``"b"``) given.
@@ -74,7 +82,7 @@ def designs_2_30(p, given):
     >>> [side for side, _, _ in designs_2_30(EXERCISE_2_30.defaults, "a")]
     [1, -1]
     """
-    K = real_number("K", p["K"])
+    K = _time_ratio(p)
     c = positive_length("l_CD", p["l_CD"])
     swing = positive_length("psi", p["psi"]) * _DEG
     # the given link is checked here, under its exercise name: a bad value must not read as
@@ -122,7 +130,10 @@ def _design_results(tag, side, q, check, gamma_allowed):
 
 
 def _solve_2_30(p):
-    gamma_allowed = real_number("gamma_allowed", p["gamma_allowed"]) * _DEG
+    gamma_allowed = real_number("gamma_allowed", p["gamma_allowed"])
+    if not 0.0 <= gamma_allowed < 90.0:
+        raise ValueError(f"Expected `gamma_allowed` in [0, 90) degrees, got {gamma_allowed!r}")
+    gamma_allowed *= _DEG
     parts = []
     for tag, given, title in (("(1)", "a", "Part 1: crank given"), ("(2)", "b", "Part 2: coupler given")):
         found = designs_2_30(p, given)
@@ -202,7 +213,7 @@ def designs_2_31(p):
     """
     c = positive_length("l_CD", p["l_CD"])
     d = positive_length("l_AD", p["l_AD"])
-    K = real_number("K", p["K"])
+    K = _time_ratio(p)
     theta = float(extreme_angle(K))
     psi_given = math.pi - positive_length("phi", p["phi"]) * _DEG
     C = d + c * np.exp(1j * psi_given)
@@ -371,14 +382,15 @@ def shaper_2_32(p):
     a = positive_length("l_AB", p["l_AB"])
     l_DE = positive_length("l_DE", p["l_DE"])
     H = positive_length("H", p["H"])
-    theta = float(extreme_angle(real_number("K", p["K"])))
+    theta = float(extreme_angle(_time_ratio(p)))
     if not 0.0 < theta < math.pi:     # K beyond about 1e16 rounds the extreme angle to pi
         raise ValueError(f"Expected `K` > 1 with an extreme angle pi (K - 1)/(K + 1) below pi, got {p['K']!r}")
     AC = a / math.sin(theta / 2)
     l_CD = H / (2 * math.sin(theta / 2))
     sagitta = l_CD * (1 - math.cos(theta / 2))
     if not sagitta / 2 < l_DE:
-        raise ValueError(f"Expected `l_DE` > half the sagitta {sagitta / 2!r}, got {l_DE!r}")
+        raise ValueError(f"Expected `l_DE` > half the sagitta of the arc of D ({sagitta / 2!r}, from `H` = {H!r} "
+                         f"and `K` = {p['K']!r}), got {l_DE!r}")
     if not l_CD > AC + a:
         raise ValueError(f"Expected `H`, `l_AB` and `K` that make the guide CD = {l_CD!r} longer than AC + AB = "
                          f"{AC + a!r}, got H={H!r}, l_AB={a!r}, K={p['K']!r}")

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._errors import AssemblyError
 from mech._validate import bool_flag, naming, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import FourBar, Guide, Linkage, grashof
@@ -72,7 +73,15 @@ def design_2_29(p, *, interior=False):
     if bool_flag("interior", interior):
         psi = np.pi - psi
     x, y = phi - phi[0], psi - psi[0]
-    design, = precision_pairs(x, y, theta0=phi[0], psi0=psi[0], d=d, x_range=(min(0.0, x.min()), max(0.0, x.max())))
+    try:
+        design, = precision_pairs(x, y, theta0=phi[0], psi0=psi[0], d=d,
+                                  x_range=(min(0.0, x.min()), max(0.0, x.max())))
+    except ValueError as exc:      # its message names its own `x`, `y`, `theta0`, ...
+        shown = ", ".join(f"{k}={p[k]!r}" for k in ("phi1", "phi2", "phi3", "psi1", "psi2", "psi3", "AD"))
+        raise ValueError(
+            f"Expected `phi1`, `phi2`, `phi3`, `psi1`, `psi2`, `psi3` and `AD` that admit a four-bar "
+            f"through the three precision pairs, got {shown} ({exc})"
+        ) from exc
     return design
 
 
@@ -84,7 +93,13 @@ def _solve_2_29(p):
     g = design_2_29(p)
     alt = design_2_29(p, interior=True)
     a, b, c, d = g.lengths
-    pose = g.fourbar.solve(g.input_angles, strict=True)
+    try:
+        pose = g.fourbar.solve(g.input_angles, strict=True)
+    except AssemblyError as exc:      # its message names the designed four-bar, not a given
+        raise AssemblyError(
+            f"Expected `phi1`, `phi2` and `phi3` at which the designed four-bar assembles, got "
+            f"phi1={p['phi1']!r}, phi2={p['phi2']!r}, phi3={p['phi3']!r} (degrees): {exc}"
+        ) from exc
     psi_given = np.array([p["psi1"], p["psi2"], p["psi3"]]) * _DEG
     err = float(np.max(np.abs(np.angle(np.exp(1j * (pose.psi - psi_given - np.pi * _flipped(g.psi0, psi_given[0])))))))
     gamma, at = g.min_transmission_angle
@@ -409,15 +424,16 @@ class RockerSlider:
     gamma_min: float
 
 
-def _crank_candidates(a, b, c, d, psi):
+def _crank_candidates(a, b, c, d, psi, given):
     """For each rocker angle, the crank angles (two) that put the rocker there, with their branch."""
     C = d + c * np.exp(1j * psi)
     r = np.abs(C)
-    k = (a * a + r * r - b * b) / (2.0 * a * r)
+    with np.errstate(over="ignore", divide="ignore"):      # a crank of 5e-324: |k| = inf, out of reach
+        k = (a * a + r * r - b * b) / (2.0 * a * r)
     if np.any(np.abs(k) > 1.0):
         j = int(np.argmax(np.abs(k)))
-        raise ValueError(f"Expected `psi{j + 1}` that the crank-rocker (AB, BC, CD, AD) = ({a!r}, {b!r}, {c!r}, "
-                         f"{d!r}) reaches, got psi{j + 1}={math.degrees(psi[j]):.6g} (degrees), out of its reach")
+        raise ValueError(f"Expected `psi{j + 1}` that the crank-rocker (`AB`, `BC`, `CD`, `AD`) = ({a!r}, {b!r}, {c!r}, "
+                         f"{d!r}) reaches, got psi{j + 1}={given[j]!r} (degrees), out of its reach")
     out = []
     for Cj, kj in zip(C, k):
         row = []
@@ -430,9 +446,9 @@ def _crank_candidates(a, b, c, d, psi):
     return out
 
 
-def _ordered_crank_angles(a, b, c, d, psi, samples=721):
+def _ordered_crank_angles(a, b, c, d, psi, given, samples=721):
     """Branch and crank angles meeting psi1, psi2, psi3 in order on one stroke (CCW crank)."""
-    rows = _crank_candidates(a, b, c, d, psi)
+    rows = _crank_candidates(a, b, c, d, psi, given)
     for choice in itertools.product(*rows):
         branch = choice[0][1]
         if any(s != branch for _, s in choice):
@@ -448,9 +464,9 @@ def _ordered_crank_angles(a, b, c, d, psi, samples=721):
         if (np.all(sweep.valid) and np.all(rising > 0.0)
                 and np.max(np.abs(np.angle(np.exp(1j * (at.psi - psi))))) < 1e-9):
             return fb, t[0] + np.concatenate([[0.0], np.cumsum(steps)])
-    p1, p2, p3 = (float(round(math.degrees(x), 9)) for x in psi)
+    p1, p2, p3 = given
     raise ValueError("Expected `psi1`, `psi2` and `psi3` that the crank, turning counter-clockwise, meets in this "
-                     f"order on one stroke, got psi1={p1!r}, psi2={p2!r}, psi3={p3!r} (degrees) for (AB, BC, CD, AD) "
+                     f"order on one stroke, got psi1={p1!r}, psi2={p2!r}, psi3={p3!r} (degrees) for (`AB`, `BC`, `CD`, `AD`) "
                      f"= ({a!r}, {b!r}, {c!r}, {d!r})")
 
 
@@ -483,12 +499,28 @@ def design_2_28(p):
     (61.74, 152.593, True)
     """
     a, b, c, d = (positive_length(k, p[k]) for k in ("AB", "BC", "CD", "AD"))
-    psi = np.array([real_number(k, p[k]) for k in ("psi1", "psi2", "psi3")]) * _DEG
+    given = tuple(real_number(k, p[k]) for k in ("psi1", "psi2", "psi3"))
+    psi = np.array(given) * _DEG
     e = real_number("e", p["e"])
+    links = {"AB": a, "BC": b, "CD": c, "AD": d}
+    for name, x in links.items():
+        rest = math.fsum(v for k, v in links.items() if k != name)
+        if not x < rest:      # before the crank angles, which would blame psi1
+            others = " + ".join(f"`{k}`" for k in links if k != name)
+            raise ValueError(f"Expected `{name}` shorter than the other three links together ({others} = "
+                             f"{rest!r}), got AB={a!r}, BC={b!r}, CD={c!r}, AD={d!r}")
     xF = np.array([real_number(k, p[k]) for k in ("xF1", "xF2", "xF3")])
     F = d + xF + 1j * e
-    fourbar, crank = _ordered_crank_angles(a, b, c, d, psi)
-    link = dyad_for_circle_point(-psi, np.exp(-1j * psi) * (F - d), 0.0)
+    fourbar, crank = _ordered_crank_angles(a, b, c, d, psi, given)
+    try:
+        link = dyad_for_circle_point(-psi, np.exp(-1j * psi) * (F - d), 0.0)
+    except ValueError as exc:     # its message names its own `circle_point`, not a given here
+        x1, x2, x3 = (p[k] for k in ("xF1", "xF2", "xF3"))
+        raise ValueError(
+            f"Expected `xF1`, `xF2`, `xF3` and `e` whose slider positions, seen from the rocker, fix a "
+            f"hinge E at a finite, non-zero distance (their circumcentre), got xF1={x1!r}, xF2={x2!r}, "
+            f"xF3={x3!r}, e={p['e']!r}"
+        ) from exc
     E_local, EF = complex(link.centre_point), float(link.length)
     E1 = d + np.exp(1j * psi[0]) * E_local
     slider_branch = 1 if (F[0] - E1).real >= 0.0 else -1

@@ -502,7 +502,14 @@ def least_squares(x, y, theta0, psi0, *, kind="structural", fit_start=False, sta
     if start is None:
         G, h = _rows(theta0 + x, psi0 + y)
         k = np.linalg.lstsq(G, h, rcond=None)[0]
-        arcs = arcs_from_coefficients(*k)
+        try:
+            arcs = arcs_from_coefficients(*k)
+        except ValueError as exc:      # its message names the coefficients `k1`.., derived here
+            raise ValueError(
+                f"Expected `x`, `y`, `theta0` and `psi0` whose least-squares fit of equation (3) is a real "
+                f"spherical four-bar (or a `start`), got theta0={theta0!r}, psi0={psi0!r} for x={x!r}, "
+                f"y={y!r} ({exc})"
+            ) from exc
         candidates = [FunctionGenerator(arcs, theta0, psi0, b, x, y) for b in (1, -1)]
         errors = [np.nan_to_num(np.abs(g.structural_error(x, y)), nan=np.pi).sum() for g in candidates]
         start = candidates[int(np.argmin(errors))]

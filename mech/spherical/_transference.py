@@ -11,7 +11,9 @@ import numpy as np
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
 from mech._scaling import length_scale
-from mech._validate import branch_sign, finite_array, finite_result, positive_length, real_number
+from mech._validate import (
+    branch_sign, finite_array, finite_result, nonnegative_number, positive_length, real_number,
+)
 from mech.spherical._dual import Dual
 
 __all__ = ["dual_fourbar_output", "dual_fourbar_joints", "rssr_from_transference"]
@@ -113,7 +115,7 @@ def _dot(u, v):
     return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
 
 
-def dual_fourbar_joints(a_hat, c_hat, d_hat, theta_hat, psi_hat):
+def dual_fourbar_joints(a_hat, c_hat, d_hat, theta_hat, psi_hat, *, rtol=2.0**-26):
     """Dual angles at the coupler joints B and C of a dual spherical four-bar ((5) there).
 
     Parameters
@@ -122,6 +124,9 @@ def dual_fourbar_joints(a_hat, c_hat, d_hat, theta_hat, psi_hat):
         Dual twists of AB, CD and DA.
     theta_hat, psi_hat : Dual or (array_like, array_like)
         Dual input and output angles in the spherical convention (a solved pose).
+    rtol : float, optional
+        Largest estimated rounding error of the dual parts, relative to the largest dual part
+        given (default 2**-26, half the digits).
 
     Returns
     -------
@@ -146,6 +151,7 @@ def dual_fourbar_joints(a_hat, c_hat, d_hat, theta_hat, psi_hat):
     """
     a, c, d = (_arc(n, v) for n, v in (("a_hat", a_hat), ("c_hat", c_hat), ("d_hat", d_hat)))
     theta, psi = _as_dual("theta_hat", theta_hat), _as_dual("psi_hat", psi_hat)
+    rtol = nonnegative_number("rtol", rtol)
     Bx, By, Bz, Cx, Cy, Cz = _gen.spherical_fourbar_vectors(a, c, d, theta, psi)
     zero = Dual(0.0)
     A, B, C = (zero, zero, Dual(1.0)), (Bx, By, Bz), (Cx, Cy, Cz)
@@ -159,6 +165,21 @@ def dual_fourbar_joints(a_hat, c_hat, d_hat, theta_hat, psi_hat):
     for value, what in ((phi23, "the dual angle phi23"), (phi34, "the dual angle phi34")):
         finite_result(np.stack(np.broadcast_arrays(value.real_part, value.dual_part)), what,
                       a_hat=_shown(a_hat), c_hat=_shown(c_hat), d_hat=_shown(d_hat))
+    # two nearly parallel axes (a twist near 0 or pi): the dual part of their scaled normal
+    # holds a component along its real part of about (offset / twist), which the angles
+    # cancel in exact arithmetic; in floating point it leaves an error of eps times it
+    # (a = 1e-300 gave 3.6e283 where the dual part is -0.333): refuse, naming the givens
+    size = max(float(np.max(np.abs(v.dual_part))) for v in (a, c, d, theta, psi))
+    for x, axes in ((x2, "A and B"), (x3, "B and C"), (x4, "C and D")):
+        with np.errstate(over="ignore", invalid="ignore"):
+            err = np.finfo(float).eps * max(float(np.max(np.abs(u.dual_part))) for u in x)
+        if not err <= rtol * size:
+            raise ValueError(
+                f"Expected `a_hat`, `c_hat`, `d_hat`, `theta_hat` and `psi_hat` whose axes {axes} are not so "
+                f"nearly parallel that rounding swamps the dual parts (error about {err:.3g} > `rtol` * "
+                f"{size:.3g}), got a_hat={_shown(a_hat)}, c_hat={_shown(c_hat)}, d_hat={_shown(d_hat)}, "
+                f"theta_hat={_shown(theta_hat)}, psi_hat={_shown(psi_hat)}"
+            )
     return phi23, phi34
 
 

@@ -197,3 +197,25 @@ def test_read_points_missing_and_not_a_path(tmp_path):
         read_points(tmp_path / "missing.csv")
     with pytest.raises(TypeError, match="Expected `path`"):
         read_points(3.0)
+
+
+def test_curve_signature_huge_curve_no_overflow():
+    """A curve of size 1e299 has the signature of its unit copy, without an overflow warning
+    (the norm of the harmonics is scaled by the largest; issue 11)."""
+    import warnings
+    t = np.linspace(0.0, 2.0 * np.pi, 200, endpoint=False)
+    z = np.cos(t) + 0.3j * np.sin(2 * t) + 0.5 + 0.1j * np.cos(3 * t)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        big = curve_signature(z * 1e299)
+    np.testing.assert_allclose(big, curve_signature(z), atol=1e-14)
+
+
+def test_build_atlas_huge_coupler_range_quiet():
+    """`coupler` spanning -1e300 builds without a RuntimeWarning (issue 11)."""
+    import warnings
+    from mech.atlas import build_atlas
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        atlas = build_atlas(20, seed=1, coupler=(-1e300, 2.0, -1.5, 1.5))
+    assert atlas is not None

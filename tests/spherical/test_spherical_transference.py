@@ -1,5 +1,7 @@
 """Dual numbers and the transference principle (deriv-spherical-transference)."""
 
+import re
+
 import mpmath
 import numpy as np
 import pytest
@@ -156,3 +158,23 @@ def test_rssr_from_transference_extreme_ratio_named_like_rssr(lengths):
         RSSR(*lengths, 1.0)
     with pytest.raises(ValueError, match="Expected `l1` \\* `l3` >= 2\\*\\*-500"):
         rssr_from_transference(*lengths, 1.0, [0.0, 1.0])
+
+
+@pytest.mark.parametrize("a", [1e-12, 1e-150, 1e-300])
+def test_dual_fourbar_joints_nearly_parallel_axes_named(a):
+    """Twist a -> 0 with offset 0.2: the dual part of phi23 tends to -0.3331155369 (mpmath,
+    120 digits, central differences of the real four-bar in each argument, a = 1e-4 ... 1e-50);
+    floating point returned 3.6e283 at a = 1e-300. Where rounding swamps it: a named error."""
+    args = (a, 0.2), (1.0, 0.1), (1.3, 0.4), (0.5, 0.3)
+    psi = dual_fourbar_output(args[0], (1.2, 0.5), *args[1:])
+    with pytest.raises(ValueError, match=r"Expected `a_hat`, .* axes A and B .*a_hat=\(" + re.escape(repr(a))):
+        dual_fourbar_joints(*args, psi)
+
+
+def test_dual_fourbar_joints_small_twist_matches_mpmath():
+    args = (1e-8, 0.2), (1.0, 0.1), (1.3, 0.4), (0.5, 0.3)
+    psi = dual_fourbar_output(args[0], (1.2, 0.5), *args[1:])
+    p23, p34 = dual_fourbar_joints(*args, psi)
+    # the mpmath reference of the test above, at a = 1e-8
+    assert float(p23.dual_part) == pytest.approx(-0.3331155416, abs=1e-8)
+    assert float(p34.dual_part) == pytest.approx(-0.06073532135, abs=1e-9)

@@ -205,7 +205,7 @@ def parallel_efficiency(etas, powers):
     e = _unit_interval("etas", etas)
     n = _nonnegative("powers", powers).ravel()
     if n.shape != e.shape:
-        raise ValueError(f"Expected as many `powers` as `etas`, got {n.size} and {e.size}")
+        raise ValueError(f"Expected as many `powers` as `etas`, got lengths {n.size} and {e.size}")
     if not np.any(n > 0):
         raise ValueError("Expected some `powers` > 0, got all zero")
     return float(np.dot(e, n) / n.sum())

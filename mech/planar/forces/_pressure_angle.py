@@ -19,6 +19,7 @@ from mech._validate import (
 )
 from mech.planar.structure._grashof import grashof
 from mech.planar.forces._transmission import _lengths as _fourbar_lengths, at_dead_points, check_assembled
+from mech.planar.kinematics._fourbar import fourbar_lengths_resolved
 from mech.planar.kinematics._linkage import LinkageSolution
 
 __all__ = [
@@ -279,7 +280,7 @@ def transmission_extremes(a, b, c, d):
     (0.0, 'min(delta_min, pi - delta_max)')
     """
     raw = (a, b, c, d)
-    a, b, c, d = _fourbar_lengths(a, b, c, d)
+    a, b, c, d = fourbar_lengths_resolved(a, b, c, d)[0]
     kind = grashof(a, b, c, d).kind
     if kind not in ("crank-rocker", "double-crank"):
         raise ValueError(f"Expected `a`, `b`, `c` and `d` of a crank that turns fully (crank-rocker or "

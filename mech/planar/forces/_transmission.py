@@ -8,7 +8,9 @@ from mech._generated.transmission_angle import (
 )
 from mech._errors import AssemblyError
 from mech._validate import bool_flag, finite_array
-from mech.planar.kinematics._fourbar import assembly_gaps, dead_points_near, fourbar_lengths
+from mech.planar.kinematics._fourbar import (
+    assembly_gaps, dead_points_near, fourbar_lengths, fourbar_lengths_resolved,
+)
 from mech.planar.structure._grashof import grashof
 
 __all__ = ["transmission_angle", "min_transmission_angle"]
@@ -149,7 +151,7 @@ def min_transmission_angle(a, b, c, d):
     >>> round(float(np.degrees(gamma_min)), 4), theta_at
     (38.6248, 0.0)
     """
-    a, b, c, d = _lengths(a, b, c, d)
+    a, b, c, d = fourbar_lengths_resolved(a, b, c, d)[0]
     kind = grashof(a, b, c, d).kind
     if kind in _CRANK_TURNS:
         _, (gamma_0, gamma_pi) = fourbar_transmission(a, b, c, d, np.array([0.0, np.pi]))

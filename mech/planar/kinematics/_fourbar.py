@@ -44,6 +44,25 @@ def fourbar_lengths(a, b, c, d):
     return tuple(scaled), exponent
 
 
+def fourbar_lengths_resolved(a, b, c, d):
+    """`fourbar_lengths`, and every scaled length above 0.0 (for Grashof's rule and limits).
+
+    A length below about 2**-1074 times the longest is valid for `FourBar` (a crank of
+    length 0.0 after scaling), but the helpers that classify the linkage need every scaled
+    length > 0: raise ValueError naming that length with the value given.
+    """
+    scaled, exponent = fourbar_lengths(a, b, c, d)
+    raw = (a, b, c, d)
+    for name, value, x in zip("abcd", raw, scaled):
+        if x == 0.0:
+            longest = max(float(v) for v in raw)
+            raise ValueError(
+                f"Expected `{name}` at least 2**-1074 times the longest link ({longest!r}) "
+                f"so that the linkage can be solved, got {value!r}"
+            )
+    return scaled, exponent
+
+
 def assembly_gaps(a, b, c, d, rtol):
     """The gaps g2, g3, g4 of unit lengths, each set to 0.0 within ``rtol (a + b + c + d)``."""
     total = a + b + c + d

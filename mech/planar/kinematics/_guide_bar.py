@@ -109,7 +109,11 @@ class GuideBar:
         swing = positive_length("swing", swing)
         if swing >= np.pi:
             raise ValueError(f"Expected `swing` < pi, got {swing!r}")
-        return cls(float(_gen.guide_bar_crank(d, swing)), d)
+        a = float(_gen.guide_bar_crank(d, swing))
+        if a == 0.0:
+            raise ValueError(f"Expected `d` and `swing` with a crank d sin(swing / 2) longer than 0.0, "
+                             f"got d={d!r}, swing={swing!r}")
+        return cls(a, d)
 
     @quiet_overflow
     def solve(self, theta, order=0, omega=1.0, alpha=0.0):

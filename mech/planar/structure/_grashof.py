@@ -5,6 +5,7 @@ condition of the chain reads the signs of three slacks, one per way of splitting
 lengths into two pairs; ``mech._generated.grashof.grashof_margins`` computes them.
 """
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -50,8 +51,8 @@ class KindInterval:
 def _lengths(a, b, c, d):
     values = [positive_length(name, x) for name, x in zip(_LINKS, (a, b, c, d))]
     total = sum(values)
-    for name, x in zip(_LINKS, values):
-        rest = total - x
+    for k, (name, x) in enumerate(zip(_LINKS, values)):
+        rest = math.fsum(values[:k] + values[k + 1:])     # not total - x: 0.0 beside a 1e300
         if x >= rest:
             raise ValueError(
                 f"Expected `{name}` < {rest!r}, the sum of the other three links, got {x!r}"
@@ -171,7 +172,13 @@ def _fixed_lengths(lengths, vary):
         values = real_array("lengths", lengths, finite=False)
         if values.shape != (3,):
             raise ValueError(f"Expected 3 fixed lengths in `lengths`, got shape {values.shape}: {lengths!r}")
-    return {name: positive_length(f"lengths[{name!r}]", x) for name, x in zip(others, values)}
+    out = {}
+    for name, x in zip(others, values):
+        try:
+            out[name] = positive_length(f"lengths[{name!r}]", x)
+        except ValueError as exc:      # named as the argument given, `lengths`
+            raise ValueError(f"Expected `lengths` with every fixed length finite and > 0: {exc}") from exc
+    return out
 
 
 def kind_intervals(lengths, vary, *, rtol=1e-12):
@@ -228,6 +235,11 @@ def kind_intervals(lengths, vary, *, rtol=1e-12):
     total_fixed = sum(fixed.values())
     low = max(0.0, 2.0 * max(fixed.values()) - total_fixed)
     high = total_fixed
+    if not low < high:      # one fixed length so long that the others vanish in its rounding
+        raise ValueError(
+            f"Expected `lengths` that leave an interval of `{vary}` for which the four-bar closes "
+            f"(from {low!r} to {high!r} in floating point), got lengths={lengths!r}"
+        )
 
     def margins_at(x):
         chain = dict(fixed, **{vary: x})

@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 from mech._generated.fourbar_limit_positions import fourbar_limit_positions
 from mech._validate import branch_sign
-from mech.planar.kinematics._fourbar import fourbar_lengths
+from mech.planar.kinematics._fourbar import fourbar_lengths_resolved
 from mech.planar.structure._grashof import grashof
 from mech.planar.structure._quick_return import time_ratio
 
@@ -100,7 +100,7 @@ def limit_positions(a, b, c, d, *, branch=1):
     True
     """
     raw = (a, b, c, d)
-    a, b, c, d = fourbar_lengths(a, b, c, d)[0]       # angles only: scale-free lengths
+    a, b, c, d = fourbar_lengths_resolved(a, b, c, d)[0]       # angles only: scale-free lengths
     sign = branch_sign(branch)
     kind = grashof(a, b, c, d).kind
     if kind != "crank-rocker":

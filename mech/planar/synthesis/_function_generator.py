@@ -24,15 +24,22 @@ def _interval(name, value):
     return float(arr[0]), float(arr[1])
 
 
-def _call(f, name, x):
+def _call(f, name, x, arg="x"):
     """f(x) as a finite float array; a user function's complex, NaN or infinite values are
-    reported under `name`, not warned about or carried into the design."""
+    reported under `name` and the argument `arg` that gave x, not warned about or carried
+    into the design."""
     try:
         with np.errstate(all="ignore"):
             value = f(x)
     except Exception as err:                       # a user function: report, do not mask as ours
         raise ValueError(f"Expected `f` to evaluate at {x!r}, got {type(err).__name__}: {err}") from err
-    return finite_array(name, value)
+    try:
+        return finite_array(name, value)
+    except ValueError as exc:                      # and where: the caller's argument, as given
+        v = np.broadcast_to(np.asarray(value), np.shape(x)) if np.ndim(value) <= np.ndim(x) else None
+        at = x if v is None or np.ndim(x) == 0 else np.asarray(x)[~np.isfinite(np.real(v))].ravel()[:1]
+        at = float(np.ravel(at)[0]) if np.size(at) else at
+        raise type(exc)(f"{exc}, at `{arg}` = {at!r}") from exc      # InputTypeError stays one
 
 
 def _wrap(angle):
@@ -183,7 +190,8 @@ class FunctionMap:
         for name in ("theta_range", "psi_range"):
             if getattr(self, name) == 0.0:
                 raise ValueError(f"Expected `{name}` != 0, got 0.0")
-        self.y_start, self.y_end = (real_number(f"f({v!r})", _call(f, f"f({v!r})", np.float64(v))) for v in (x0, x1))
+        self.y_start, self.y_end = (real_number(f"f({v!r})", _call(f, f"f({v!r})", np.float64(v), "x_range"))
+                                   for v in (x0, x1))
         if self.y_start == self.y_end:
             raise ValueError(f"Expected f(x_start) != f(x_end), got {self.y_start!r} for both")
 
@@ -222,7 +230,7 @@ class FunctionMap:
         return self.input_rotation(x), self.output_rotation(_call(self.f, "f(x)", x))
 
     def __call__(self, X):
-        return self.output_rotation(_call(self.f, "f(x)", self.input_value(X)))
+        return self.output_rotation(_call(self.f, "f(x)", self.input_value(X), "X"))
 
     def __repr__(self):
         return (f"FunctionMap({getattr(self.f, '__name__', self.f)!s}, x_range=({self.x_start!r}, "

@@ -386,7 +386,8 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
     if sv[3] <= rank_tol * sv[0]:
         raise ValueError(
             "Expected five poses whose design equations (2-40) are independent, got singular values "
-            f"{np.array2string(sv, precision=3)} for `theta` = {np.array2string(theta, precision=6)}"
+            f"{np.array2string(sv, precision=3)} for `theta` = {np.array2string(theta, precision=6)} "
+            f"(the fourth at most `rank_tol` = {rank_tol!r} times the first)"
         )
     X0 = np.linalg.lstsq(M, -rows[:, 6], rcond=None)[0]
     N = Vt[4:].T

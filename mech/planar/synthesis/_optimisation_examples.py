@@ -91,6 +91,11 @@ def steering_trapezoid_model(a=1480.0, h=2960.0, *, theta_max=np.radians(30.0), 
     if not clearance >= 0.0:
         raise ValueError(f"Expected `clearance` >= 0, got {clearance}")
     phi_lo = float(np.arctan2(2.0 * clearance * h, a))
+    if not phi_lo < np.pi / 2:      # 2 clearance h / a so large that the arctan rounds to pi/2
+        raise ValueError(
+            f"Expected `clearance`, `h` and `a` whose lower bound arctan(2 clearance h / a) of phi0 is "
+            f"below pi/2 in floating point, got clearance={clearance!r}, h={h!r}, a={a!r}"
+        )
     theta = np.linspace(0.0, theta_max, steps + 1)
     weight = _trapezoid_weights(steps) * (theta_max / steps)
     ideal = steering_ideal(theta, a / h)
@@ -169,10 +174,16 @@ class SteeringTrapezoid:
         if not self.l2 > 0.0:
             raise ValueError(f"Expected `l1` < a / (2 cos(phi0)) so that the tie rod is longer than 0, "
                              f"got l1 = {self.l1}, phi0 = {self.phi0}, a = {self.a}")
-        # C is to the left of B->D in the drawn trapezoid: branch +1 (see the derivation page)
-        self.fourbar = FourBar(self.l1, self.l2, self.l1, self.a, branch=1)
-        # solved in units of the track: FourBar's solve overflows near 1e300 on this branch
-        self._unit = FourBar(self.l1 / self.a, self.l2 / self.a, self.l1 / self.a, 1.0, branch=1)
+        try:
+            # C is to the left of B->D in the drawn trapezoid: branch +1 (see the derivation page)
+            self.fourbar = FourBar(self.l1, self.l2, self.l1, self.a, branch=1)
+            # solved in units of the track: FourBar's solve overflows near 1e300 on this branch
+            self._unit = FourBar(self.l1 / self.a, self.l2 / self.a, self.l1 / self.a, 1.0, branch=1)
+        except ValueError as exc:     # its message names the four-bar's `b` or `d`, derived here
+            raise ValueError(
+                f"Expected `l1`, `phi0` and `a` whose trapezoid (arms l1, tie rod a - 2 l1 cos(phi0) = "
+                f"{self.l2!r}, track a) closes in floating point, got l1={l1!r}, phi0={phi0!r}, a={a!r} ({exc})"
+            ) from exc
 
     def __repr__(self):
         return f"SteeringTrapezoid(l1={self.l1!r}, phi0={self.phi0!r}, a={self.a!r}, h={self.h!r})"

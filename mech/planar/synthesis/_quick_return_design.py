@@ -322,7 +322,9 @@ class QuickReturnCrankRocker:
 def _crank_rocker_unit(theta, swing, alpha, side):
     """(2-46) with c = 1 for arrays of alpha: lengths, gamma_min, whether the crank revolves, and
     the points A, D, C1, C2 measured from the midpoint M of C1C2 (bounded as K -> 1)."""
-    R, H, a, b, d, ax, ay = qr_crank_rocker(theta, 1.0, swing, alpha, side)
+    # a swing below about 1e-308 divides 0 by 0 (sin(swing/2)**2 underflows): NaN, not a crank-rocker
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        R, H, a, b, d, ax, ay = qr_crank_rocker(theta, 1.0, swing, alpha, side)
     # a coupler b = 0 (a swing below the float range) gives NaN: not a crank-rocker
     with np.errstate(invalid="ignore", divide="ignore"):
         k0, kpi = qr_crank_rocker_cos_gamma(a, b, 1.0, d)
@@ -341,6 +343,16 @@ def _crank_rocker_unit(theta, swing, alpha, side):
     revolves = revolves & (side1 * side2 > 0.0)
     gamma = np.where(revolves, np.minimum(_acute(k0), _acute(kpi)), -1.0)
     return R, H, a, b, d, gamma, revolves, (A, D, C1, C2)
+
+
+def _check_scaled(unit, scale, name):
+    """Raise naming `name` (the caller's length `scale`) if a link ``unit * scale`` underflows to 0.0."""
+    for x in unit:
+        if x != 0.0 and x * scale == 0.0:
+            raise ValueError(
+                f"Expected `{name}` at least 2**-1074 / {float(abs(x))!r} so that every link of the design "
+                f"(the shortest {float(abs(x))!r} times `{name}`) is longer than 0.0, got {scale!r}"
+            )
 
 
 def _build_crank_rocker(K, theta, c, swing, alpha, side):
@@ -375,6 +387,7 @@ def _build_crank_rocker_k1(c, swing, coupler, side):
 
 def _placed_crank_rocker(K, theta, c, swing, alpha, side, unit, A, D, C1, C2):
     a, b, d, gamma = unit
+    _check_scaled((a, b, d), c, "rocker")
     u = (D - A) / abs(D - A)
     C1s, C2s = (C1 - A) / u, (C2 - A) / u
     B2 = a * C2s / abs(C2s)
@@ -529,6 +542,7 @@ def _build_slider(K, theta, H, alpha):
             f"Expected `alpha` < pi - 2 theta = {math.pi - 2 * theta!r} so that both limit positions lie on "
             f"one branch, got {alpha!r}"
         )
+    _check_scaled((a, b, e), H, "stroke")
     sc = SliderCrank(a * H, b * H, e * H)
     return QuickReturnSliderCrank(
         slider_crank=sc, lengths=(a * H, b * H, e * H), time_ratio=K, extreme_angle=theta, stroke=H,
@@ -575,7 +589,17 @@ def quick_return_slider_crank(time_ratio, stroke, *, alpha=None, offset=None):
         top = 1.0 / math.tan(theta)
         if not e < top:
             raise ValueError(f"Expected `offset` < H / tan(theta) = {top * H!r}, got {value!r}")
-        al = float(qr_alpha_from_offset(theta, 1.0, e))
+        if e < 2.0**-30 * math.tan(theta):
+            # arccos(cos(theta) - 2 e sin(theta)) - theta cancels for a small offset: its series
+            # 2 e - 2 e**2 cot(theta) + O(e**3), the next term below 2**-60 relative
+            al = 2.0 * e - 2.0 * e * e / math.tan(theta)
+        else:
+            al = float(qr_alpha_from_offset(theta, 1.0, e))
+        if float(_slider_unit(theta, al)[-1]) < 0.0:
+            raise ValueError(
+                f"Expected `offset` large enough relative to `stroke` ({H!r}) that the angle alpha it "
+                f"gives ({al!r}) puts both limit positions on one branch in floating point, got {value!r}"
+            )
     return _build_slider(K, theta, H, al)
 
 
