@@ -9,13 +9,14 @@ renders itself as Markdown. Only NumPy is imported here.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field, replace
 from typing import Any, Callable
 
 import numpy as np
 
-from mech._errors import InputTypeError
+from mech._errors import AssemblyError, InputTypeError
 from mech._validate import integer, real_number
 
 __all__ = ["Parameter", "Interval", "Result", "Part", "Solution", "Exercise"]
@@ -314,3 +315,36 @@ def check_links_close(*, resolved=False, **links):
             shown = ", ".join(f"{k}={v!r}" for k, v in links.items())
             raise ValueError(f"Expected `{name}` shorter than the other three links together ({others} = "
                              f"{rest!r}), got {shown}")
+
+
+def names_givens(number):
+    """Decorate a solver or layout function of exercise ``number`` (its first argument the
+    givens, complete or partial) so that an error raised deeper down, which names the
+    library's own arguments or none (`a`, "a pose that does not close", a ZeroDivisionError),
+    is raised again as a ValueError that names every given of the exercise in backticks with
+    the values used. A message that already names a given in backticks passes unchanged, and
+    so does an `AssemblyError` (a pose that cannot be assembled, by input)."""
+    def decorate(func):
+        @functools.wraps(func)
+        def wrapper(params=None, *args, **kwargs):
+            try:
+                return func(params, *args, **kwargs)
+            except AssemblyError:
+                raise
+            except (ValueError, ZeroDivisionError, OverflowError, FloatingPointError) as exc:
+                if getattr(exc, "_names_givens", False):
+                    raise
+                from mech.exercises import get
+                given = get(number).params(params)
+                msg = str(exc)
+                if isinstance(exc, ValueError) and any(f"`{k}`" in msg for k in given):
+                    raise
+                listed = [f"`{k}`" for k in given]
+                names = ", ".join(listed[:-1]) + " and " + listed[-1] if len(listed) > 1 else listed[0]
+                shown = ", ".join(f"{k}={v!r}" for k, v in given.items())
+                err = ValueError(f"Expected {names} of an assumed layout of exercise {number} that closes "
+                                 f"and can be solved, got {shown} ({type(exc).__name__}: {msg})")
+                err._names_givens = True
+                raise err from exc
+        return wrapper
+    return decorate

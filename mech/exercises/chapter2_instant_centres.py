@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from mech._validate import positive_length, real_number
-from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
+from mech.exercises._core import Exercise, Parameter, Part, Result, Solution, check_links_close, names_givens
 from mech.exercises.chapter2_analysis import _around
 from mech.planar import FourBar, Guide, Linkage, grashof, instant_centres, omega_ratio, revolute
 
@@ -62,6 +62,7 @@ _STATEMENT_2_8 = (
 def _check_2_8(p):
     a, b, c, d = (positive_length(n, p[n]) for n in ("a", "b", "c", "d"))
     e, theta = real_number("e", p["e"]), real_number("theta", p["theta"]) * _DEG
+    check_links_close(a=a, b=b, c=c, d=d)          # the four-bar (a), under the exercise's names
     if a >= d:
         raise ValueError(f"Expected `a` < `d` = {d!r} so that the guide bar of (c) oscillates, got {a!r}")
     if a + abs(e) >= b:
@@ -69,6 +70,7 @@ def _check_2_8(p):
     return a, b, c, d, e, theta
 
 
+@names_givens("2-8")
 def mechanisms_2_8(params=None):
     """The three assumed mechanisms of exercise 2-8, as a dict of name to `Linkage`.
 
@@ -95,6 +97,7 @@ def mechanisms_2_8(params=None):
     }
 
 
+@names_givens("2-8")
 def _solve_2_8(p):
     a, b, c, d, e, theta = _check_2_8(p)
     parts = []
@@ -139,6 +142,7 @@ _STATEMENT_2_9 = (
 )
 
 
+@names_givens("2-9")
 def wheels_2_9(params=None):
     """Centres and contact points of exercise 2-9's assumed wheels, as a dict of complex points.
 
@@ -156,10 +160,12 @@ def wheels_2_9(params=None):
         raise ValueError(f"Expected 0 < `beta` < 180 degrees (A, B and C not in one line), got {beta!r}")
     u = complex(np.exp(1j * beta * _DEG))
     if abs((r1 + r2) - (r2 + r3) * u) <= r1 + r3:
-        raise ValueError(f"Expected wheels 1 and 3 not to touch (|AC| > r1 + r3), got `beta` = {beta!r}")
+        raise ValueError(f"Expected `r1`, `r2`, `r3` and `beta` that keep wheels 1 and 3 apart (|AC| > r1 + r3), "
+                         f"got r1={r1!r}, r2={r2!r}, r3={r3!r}, beta={beta!r}")
     return {"A": complex(r1 + r2), "B": 0j, "C": (r2 + r3) * u, "P12": complex(r2), "P23": r2 * u}
 
 
+@names_givens("2-9")
 def _solve_2_9(p):
     g = wheels_2_9(p)
     r1, r3 = p["r1"], p["r3"]
@@ -202,6 +208,7 @@ _STATEMENT_2_11 = (
 )
 
 
+@names_givens("2-11")
 def centres_2_11(params=None):
     """All instant centres of exercise 2-11's assumed four-bar, with links numbered 1 to 4.
 
@@ -215,6 +222,7 @@ def centres_2_11(params=None):
     p = EXERCISE_2_11.params(params)
     a, b, c, d = (positive_length(n, p[n]) for n in ("a", "b", "c", "d"))
     theta = real_number("theta", p["theta"]) * _DEG
+    check_links_close(a=a, b=b, c=c, d=d, resolved=True)
     pose = FourBar(a, b, c, d).solve(theta)
     if not bool(np.all(pose.valid)):
         raise ValueError(f"Expected the four-bar of exercise 2-11 to assemble at `theta` = {p['theta']!r}")
@@ -223,6 +231,7 @@ def centres_2_11(params=None):
     return instant_centres((1, 2, 3, 4), direct)
 
 
+@names_givens("2-11")
 def _solve_2_11(p):
     ic = centres_2_11(p)
     a, b, c, d = (p[n] for n in ("a", "b", "c", "d"))

@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from mech._validate import positive_length, real_number
-from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
+from mech.exercises._core import Exercise, Parameter, Part, Result, Solution, check_links_close, names_givens
 from mech.exercises.chapter2_analysis import _along, _around, _stroke
 from mech.planar import Guide, Linkage, grashof
 
@@ -65,6 +65,7 @@ def _check_2_13(p):
     return oa, ab, bc, bd, ce, xd, yd, ye, w
 
 
+@names_givens("2-13")
 def linkage_2_13(params=None):
     """The hay-press six-bar of exercise 2-13 on its assumed layout, as a `mech.planar.Linkage`.
 
@@ -87,6 +88,7 @@ def linkage_2_13(params=None):
                  joint="E", length=ce, branch=1))
 
 
+@names_givens("2-13")
 def _solve_2_13(p):
     oa, ab, bc, bd, ce, xd, yd, ye, w = _check_2_13(p)
     lk = linkage_2_13(p)
@@ -160,6 +162,7 @@ def _check_2_15(p):
     return ab, bc, bd, de, math.radians(phi), w
 
 
+@names_givens("2-15")
 def linkage_2_15(params=None):
     """The six-bar of exercise 2-15 on its assumed layout, as a `mech.planar.Linkage`.
 
@@ -183,6 +186,7 @@ def linkage_2_15(params=None):
                  joint="E", length=de, branch=1))
 
 
+@names_givens("2-15")
 def _solve_2_15(p):
     ab, bc, bd, de, phi, w = _check_2_15(p)
     sol = _pose(linkage_2_15(p), phi, w, "2-15")
@@ -230,6 +234,7 @@ def _check_2_16(p):
     return ab, bc, cd, xf, xd, yd, w, math.radians(phi)
 
 
+@names_givens("2-16")
 def linkage_2_16(params=None):
     """The six-bar of exercise 2-16 on its assumed layout, as a `mech.planar.Linkage`.
 
@@ -252,6 +257,7 @@ def linkage_2_16(params=None):
                  joint="F"))
 
 
+@names_givens("2-16")
 def _solve_2_16(p):
     ab, bc, cd, xf, xd, yd, w, phi = _check_2_16(p)
     # the book's φ1 is measured clockwise and the crank turns clockwise: input -φ1, rate -ω1
@@ -308,6 +314,7 @@ def _check_2_12(p):
     return a, b, h, theta * _DEG, w
 
 
+@names_givens("2-12")
 def linkage_2_12(params=None):
     """The pantograph of exercise 2-12 on its assumed layout, as a `mech.planar.Linkage`.
 
@@ -332,6 +339,7 @@ def linkage_2_12(params=None):
             .point("I", link="2", at=2.0 * b))
 
 
+@names_givens("2-12")
 def _solve_2_12(p):
     a, b, h, theta, w = _check_2_12(p)
     sol = _pose(linkage_2_12(p), theta, w, "2-12")
@@ -383,6 +391,7 @@ _STATEMENT_2_14 = (
 _NAMES_2_14 = ("AB", "BC", "CD", "AD", "BE", "EF")
 
 
+@names_givens("2-14")
 def linkage_2_14(params=None):
     """The six-bar of exercise 2-14 on its assumed layout, as a `mech.planar.Linkage`.
 
@@ -405,6 +414,7 @@ def linkage_2_14(params=None):
                  length=ef, branch=1))
 
 
+@names_givens("2-14")
 def _solve_2_14(p):
     theta, w = real_number("theta1", p["theta1"]) * _DEG, real_number("omega1", p["omega1"])
     sol = _pose(linkage_2_14(p), theta, w, "2-14")
