@@ -406,6 +406,7 @@ def linkage_2_14(params=None):
     p = EXERCISE_2_14.params(params)
     ab, bc, cd, ad, be, ef = (positive_length(n, p[n]) for n in _NAMES_2_14)
     beta, yf = real_number("beta", p["beta"]) * _DEG, real_number("yF", p["yF"])
+    check_links_close(AB=ab, BC=bc, CD=cd, AD=ad)     # the four-bar ABCD, under the exercise's names
     return (Linkage({"A": 0.0, "D": ad})
             .crank("crank", pivot="A", tip="B", length=ab)
             .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(bc, cd), branch=1)
