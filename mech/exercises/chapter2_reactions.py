@@ -287,7 +287,8 @@ def _solve_2_26(p):
         sf = static_forces(sol, couples={"crank": -Mr}, rho=rho, mu=mu)
         sf0 = static_forces(sol, couples={"crank": -Mr})
         if bool(np.any(sf.self_locking)):
-            raise ValueError(f"Expected the slider to drive the crank at θ = {deg:g}°, got self-locking")
+            raise ValueError(f"Expected `mu0`, `d` and `mu` that let the slider drive the crank at θ = {deg:g}°, "
+                             f"got self-locking at mu0={mu0!r}, d={d!r}, mu={mu!r}")
         F = float(sf.balancing)
         P = {k: complex(v) for k, v in sol.points.items()}
         res = [Result(f"θ = {deg:g}°: driving force F", F, "N", "`static_forces(..., rho=ρ, mu=μ).balancing`, "
@@ -386,7 +387,8 @@ def _solve_2_22(p):
     for label, r in (("without friction", 0.0), ("with friction", rho)):
         sf = static_forces(sol, {"F": q_unit}, rho=r)
         if bool(sf.self_locking):
-            raise ValueError(f"Expected the assumed linkage to move, got self-locking with rho = {rho!r}")
+            raise ValueError(f"Expected `mu0` and `d_pin` that let the assumed linkage move, got self-locking "
+                             f"with mu0={p['mu0']!r}, d_pin={d_pin!r} (rho = {rho!r})")
         Q[label] = moment_P / float(sf.balancing)
     eta = Q["with friction"] / Q["without friction"]
     assumptions = (
