@@ -433,7 +433,7 @@ def function_pairs(x, y, minimum):
     if x.ndim != 1 or y.shape != x.shape:
         raise ValueError(f"Expected `x` and `y` as 1-D arrays of one length, got shapes {x.shape} and {y.shape}")
     if x.size < minimum:
-        raise ValueError(f"Expected at least {minimum} pairs, got {x.size}")
+        raise ValueError(f"Expected at least {minimum} pairs in `x` and `y`, got {x.size}")
     if np.unique(x).size != x.size:
         raise ValueError(f"Expected distinct `x` values, got {x}")
     return x, y

@@ -279,7 +279,7 @@ def _solve_2_3(p):
     g = grashof(a, b, c, d)
     if g.kind != "crank-rocker":
         raise ValueError(
-            f"Expected a crank-rocker with AD as the frame, got a {g.kind} "
+            f"Expected a crank-rocker with AD as the frame from `AB`, `BC`, `CD` and `AD`, got a {g.kind} "
             f"(AB={a!r}, BC={b!r}, CD={c!r}, AD={d!r})"
         )
     linkage = FourBar(a, b, c, d)

@@ -159,7 +159,8 @@ def _check_2_4(p):
                              f"{rest!r}), got AB={a!r}, BC={b!r}, CD={c!r}, AD={d!r}")
     kind = grashof(a, b, c, d).kind
     if kind != "crank-rocker":
-        raise ValueError(f"Expected a crank-rocker ABCD with AD as the frame, got a {kind} "
+        raise ValueError(f"Expected a crank-rocker ABCD with AD as the frame from `AB`, `BC`, `CD` and `AD`, "
+                         f"got a {kind} "
                          f"(AB={a!r}, BC={b!r}, CD={c!r}, AD={d!r})")
     if de > c:
         raise ValueError(f"Expected `DE` <= `CD` = {c!r} (E lies on the rocker DC), got {de!r}")
@@ -587,7 +588,8 @@ def cam_2_10(params=None, *, side=-1):
     O = complex(oa * np.exp(1j * phi))
     dist = abs(O - C)
     if dist <= r:
-        raise ValueError(f"Expected the pivot C outside the disc, |OC| > r = {r!r}, got {dist!r}")
+        raise ValueError(f"Expected the pivot C outside the disc, |OC| > `r`, from `r`, `OA`, `AC` and `phi1`, "
+                         f"got |OC| = {dist!r} with r={r!r}, OA={oa!r}, AC={ac!r}, phi1={p['phi1']!r}")
     reach = math.sqrt((dist - r) * (dist + r))
     face = (O - C) / dist * complex(np.exp(1j * side * math.atan2(r, reach)))
     K = C + reach * face

@@ -49,7 +49,8 @@ def _solve_2_19(p):
     Q = positive_length("Q", p["Q"])
     theta, phi = _angle("theta", p["theta"]), _angle("phi", p["phi"], high=45.0)
     if theta + 2 * phi >= math.pi / 2:
-        raise ValueError(f"Expected θ + 2φ < 90° so that the wedge can move, got {math.degrees(theta + 2 * phi)!r}°")
+        raise ValueError(f"Expected θ + 2φ < 90° from `theta` and `phi` so that the wedge can move, got "
+                         f"theta={p['theta']!r}, phi={p['phi']!r} (θ + 2φ = {math.degrees(theta + 2 * phi)!r}°)")
     P = spreading_wedge_force(Q, theta, phi)
     P_faces = spreading_wedge_force(Q, theta, phi, base_friction=False)
     P0 = spreading_wedge_force(Q, theta, 0.0)

@@ -357,7 +357,8 @@ class Shaper:
         stops = [_optimize().brentq(lambda u: float(self._ram_below_link(np.array([u]), 1)[1][0]), t[i], t[i] + step,
                                     xtol=xtol) for i in idx]
         if len(stops) != 2:
-            raise ValueError(f"Expected a ram with two limit positions per turn, got {len(stops)}")
+            raise ValueError(f"Expected a ram with two limit positions per turn at `samples` = {samples} and "
+                             f"`xtol` = {xtol!r}, got {len(stops)}")
         y = self._ram_below_link(np.array(stops), 0)[0]
         forward = (stops[int(np.argmax(y))] - stops[int(np.argmin(y))]) % (2 * math.pi)
         K = max(forward, 2 * math.pi - forward) / min(forward, 2 * math.pi - forward)

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from mech._validate import positive_length, real_number
+from mech._validate import finite_result, naming, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.exercises.chapter2_analysis import _around
 from mech.planar import Guide, Linkage, friction_circle, static_forces
@@ -47,12 +47,29 @@ def _reaction_results(sf, pairs, unit="N"):
     return tuple(out)
 
 
-def _solved(lk, theta, what):
-    sol = lk.solve(theta, order=1, omega=1.0)
+def _solved(lk, angle, what, /, **given):
+    """Solve ``lk`` at ``theta``; if it does not close, name the givens of its layout."""
+    sol = lk.solve(angle, order=1, omega=1.0)
     if not bool(np.all(sol.valid)):
-        raise ValueError(f"Expected the assumed layout of exercise {what} to assemble at the pose analysed, "
-                         "got a pose that does not close")
+        listed, shown = naming(**given)
+        raise ValueError(f"Expected {listed} that let the assumed layout of exercise {what} assemble at the "
+                         f"pose analysed, got {shown}: a pose that does not close")
     return sol
+
+
+def _finite_forces(sf, what, /, **given):
+    """The sizes of ``sf``'s reactions and its balancing effort finite, or a ValueError naming
+    the givens (a layout far from the unit scale overflows the statics)."""
+    with np.errstate(all="ignore"):
+        sizes = np.abs(np.array([complex(v) for v in sf.reactions.values()] + [complex(sf.balancing)]))
+    finite_result(sizes, f"every reaction of exercise {what}", **given)
+
+
+def _tiny_link(what, name, value, factor, link):
+    """A derived length ``factor * value`` that rounds to 0: named as the given ``name``."""
+    if not factor * value > 0.0:
+        raise ValueError(f"Expected `{name}` large enough that {link} = {factor:g}·`{name}` > 0 in exercise "
+                         f"{what}, got {value!r}")
 
 
 # ----------------------------------------------------------------------------- 2-17
@@ -77,13 +94,14 @@ def linkage_2_17(params=None):
     """
     p = EXERCISE_2_17.params(params)
     ab = positive_length("AB", p["AB"])
+    _tiny_link("2-17", "AB", ab, 0.5, "SK")
     theta = real_number("theta", p["theta"]) * _DEG
     four = (Linkage({"A": 0.0, "D": 2.0 * ab})
             .crank("crank1", pivot="A", tip="B", length=ab)
             .rrr(("link2", "rocker3"), pins=("B", "D"), joint="C", lengths=(2.0 * ab, 2.0 * ab), branch=1)
             .point("S", link="rocker3", at=1.5 * ab)
             .point("E", link="crank1", at=0.5 * ab))
-    S = complex(_solved(four, theta, "2-17").points["S"])
+    S = complex(_solved(four, theta, "2-17", AB=ab, theta=p["theta"]).points["S"])
     guide = Guide("ground", through=1j * (S.imag - 0.5 * ab * math.sin(30.0 * _DEG)), angle=0.0)
     return four.rrp(("rod4", "slider5"), pin="S", guide=guide, joint="K", length=0.5 * ab, branch=1), theta
 
@@ -91,13 +109,17 @@ def linkage_2_17(params=None):
 def _solve_2_17(p):
     P5 = positive_length("P5", p["P5"])
     ab = positive_length("AB", p["AB"])
-    lk, theta = linkage_2_17(p)
-    sol = _solved(lk, theta, "2-17")
-    vK = float(sol.velocities["K"].real)
-    load = -P5 * math.copysign(1.0, vK)                  # P5 resists the slider's motion
-    sf = static_forces(sol, {("K", "slider5"): load})
-    Mb = float(sf.balancing)
-    P1 = Mb / (0.5 * ab)
+    k = math.frexp(ab)[1]             # solve at AB in [0.5, 1): forces keep, lengths scale by 2**k
+    lk, theta = linkage_2_17(dict(p, AB=math.ldexp(ab, -k)))
+    sol = _solved(lk, theta, "2-17", AB=ab, theta=p["theta"])
+    vK_unit = float(sol.velocities["K"].real)
+    vK = math.ldexp(vK_unit, k)
+    load = -P5 * math.copysign(1.0, vK_unit)             # P5 resists the slider's motion
+    with np.errstate(all="ignore"):
+        sf = static_forces(sol, {("K", "slider5"): load})
+    _finite_forces(sf, "2-17", P5=P5, AB=ab, theta=p["theta"])
+    P1 = float(sf.balancing) / (0.5 * math.ldexp(ab, -k))
+    Mb = math.ldexp(float(sf.balancing), k)
     assumptions = (
         f"A = (0, 0) and D = ({2 * ab:g}, 0) mm are the fixed pivots (AD = 2AB, a crank-rocker); member 1 "
         f"is the crank AB at {math.degrees(theta):g}° from AD, turning counter-clockwise.",
@@ -150,6 +172,7 @@ def linkage_2_18(params=None):
     """
     p = EXERCISE_2_18.params(params)
     ab = positive_length("AB", p["AB"])
+    _tiny_link("2-18", "AB", ab, 0.5, "the guide's offset")
     theta = real_number("theta", p["theta"]) * _DEG
     lk = (Linkage({"A": 0.0, "E": complex(2.5 * ab, ab)})
           .crank("crank1", pivot="A", tip="B", length=ab)
@@ -163,13 +186,18 @@ def linkage_2_18(params=None):
 def _solve_2_18(p):
     P5 = positive_length("P5", p["P5"])
     ab = positive_length("AB", p["AB"])
-    lk, theta = linkage_2_18(p)
-    sol = _solved(lk, theta, "2-18")
+    k = math.frexp(ab)[1]             # solve at AB in [0.5, 1): forces keep, lengths scale by 2**k
+    lk, theta = linkage_2_18(dict(p, AB=math.ldexp(ab, -k)))
+    sol = _solved(lk, theta, "2-18", AB=ab, theta=p["theta"])
     vF = float(sol.velocities["F"].real)
-    if abs(vF) < 1e-9 * ab:
-        raise ValueError("Expected the slider to move in the pose analysed, got a dead-centre pose")
-    sf = static_forces(sol, {("F", "slider5"): -P5 * math.copysign(1.0, vF)})
-    Mb = float(sf.balancing)
+    if abs(vF) < 1e-9 * math.ldexp(ab, -k):
+        raise ValueError(f"Expected `theta` away from a dead centre, where the slider moves, got theta="
+                         f"{p['theta']!r} (AB={ab!r}): a dead-centre pose")
+    with np.errstate(all="ignore"):
+        sf = static_forces(sol, {("F", "slider5"): -P5 * math.copysign(1.0, vF)})
+    _finite_forces(sf, "2-18", P5=P5, AB=ab, theta=p["theta"])
+    Mb = math.ldexp(float(sf.balancing), k)
+    vF = math.ldexp(vF, k)
     assumptions = (
         "CE = ED = DF is read as: C, E, D lie on one lever CD (CD = 2AB as printed) pivoted on the "
         "frame at its midpoint E, so CE = ED = DF = AB; DF is the rod to the slider.",
@@ -232,7 +260,7 @@ def linkage_2_26(params=None, *, theta=45.0):
     s, c = math.sin(t), math.cos(t)
     if abs(s) < 1e-9:
         raise ValueError(f"Expected `theta` away from the dead centres 0° and 180°, got {theta!r}")
-    root = math.sqrt(length * length - (r * s) ** 2)
+    root = length * math.sqrt((1.0 - r * s / length) * (1.0 + r * s / length))   # no overflow of l**2
     x = r * c + root
     dx = -r * s - r * r * s * c / root
     lk = (Linkage({"A": 0.0})
@@ -245,9 +273,13 @@ def _solve_2_26(p):
     r, length, d = (positive_length(n, p[n]) for n in ("r", "l", "d"))
     Mr = positive_length("Mr", p["Mr"]) * 1000.0
     mu0, mu = real_number("mu0", p["mu0"]), real_number("mu", p["mu"])
-    rho = float(friction_circle(mu0, d / 2.0))
-    if 2 * rho >= length or 2 * rho >= r:
-        raise ValueError(f"Expected friction circles (ρ = {rho!r} mm) that fit between the pins")
+    if r >= length:
+        raise ValueError(f"Expected `r` < `l` = {length!r} so that the crank turns fully, got {r!r}")
+    rho = 0.5 * float(friction_circle(mu0, d))           # mu0 (d/2), with d/2 of 5e-324 not 0
+    if not (2 * rho < length and 2 * rho < r):
+        raise ValueError(f"Expected `mu0` and `d` whose friction circles (ρ = `mu0`·`d`/2 = {rho!r} mm) fit "
+                         f"between the pins, 2ρ < `r` and 2ρ < `l`, got mu0={mu0!r}, d={d!r}, r={r!r}, "
+                         f"l={length!r}")
     parts = []
     for deg in THETAS_2_26:
         lk, x, dx = linkage_2_26(p, theta=deg)
@@ -255,7 +287,8 @@ def _solve_2_26(p):
         sf = static_forces(sol, couples={"crank": -Mr}, rho=rho, mu=mu)
         sf0 = static_forces(sol, couples={"crank": -Mr})
         if bool(np.any(sf.self_locking)):
-            raise ValueError(f"Expected the slider to drive the crank at θ = {deg:g}°, got self-locking")
+            raise ValueError(f"Expected `mu0`, `d` and `mu` that let the slider drive the crank at θ = {deg:g}°, "
+                             f"got self-locking at mu0={mu0!r}, d={d!r}, mu={mu!r}")
         F = float(sf.balancing)
         P = {k: complex(v) for k, v in sol.points.items()}
         res = [Result(f"θ = {deg:g}°: driving force F", F, "N", "`static_forces(..., rho=ρ, mu=μ).balancing`, "
@@ -354,7 +387,8 @@ def _solve_2_22(p):
     for label, r in (("without friction", 0.0), ("with friction", rho)):
         sf = static_forces(sol, {"F": q_unit}, rho=r)
         if bool(sf.self_locking):
-            raise ValueError(f"Expected the assumed linkage to move, got self-locking with rho = {rho!r}")
+            raise ValueError(f"Expected `mu0` and `d_pin` that let the assumed linkage move, got self-locking "
+                             f"with mu0={p['mu0']!r}, d_pin={d_pin!r} (rho = {rho!r})")
         Q[label] = moment_P / float(sf.balancing)
     eta = Q["with friction"] / Q["without friction"]
     assumptions = (
@@ -441,7 +475,8 @@ def _solve_2_25(p):
     if not 0.0 <= mu < 1.0:
         raise ValueError(f"Expected 0 <= `mu` < 1, got {mu!r}")
     lk, theta = linkage_2_25(p)
-    sol = _solved(lk, theta, "2-25")
+    layout = {k: p[k] for k in ("R", "e", "theta", "AD", "L", "DH")}
+    sol = _solved(lk, theta, "2-25", **layout)
     phi = math.atan(mu)
     rho_shaft = float(friction_circle(mu, rs))
     # the contact's friction: a friction circle of radius R sin(phi) about the disc's centre O makes the
@@ -449,12 +484,18 @@ def _solve_2_25(p):
     rho = {"A": rho_shaft, "D": rho_shaft, "O": R * math.sin(phi), "K": 0.0}
     w2 = float(sol.omegas["follower"])
     if not float(sol.velocities["H"].imag) > 0.0:
-        raise ValueError(f"Expected a pose of the rise (the follower lifted against G), got the return at "
-                         f"`theta` = {p['theta']!r}°: there G drives and the cam only holds the follower back")
-    load = {"H": -1j * G}                                # G presses the follower down onto the cam
-    sf = static_forces(sol, load, rho=rho)
+        listed, shown = naming(**layout)
+        raise ValueError(f"Expected {listed} that make a pose of the rise (the follower lifted against G), got "
+                         f"the return at {shown}: there G drives and the cam only holds the follower back")
+    # the reactions are proportional to G (friction circles included): solved for G = 1 N, then scaled
+    load = {"H": -1j}                                    # G presses the follower down onto the cam
+    with np.errstate(all="ignore"):
+        sf = static_forces(sol, load, rho=rho)
     if bool(np.any(sf.self_locking)):
-        raise ValueError("Expected the cam to drive the follower in the pose analysed, got self-locking")
+        listed, shown = naming(mu=mu, rs=rs, **layout)
+        raise ValueError(f"Expected {listed} that let the cam drive the follower in the pose analysed, got "
+                         f"self-locking at {shown}")
+    _finite_forces(sf, "2-25", mu=mu, rs=rs, **layout)
     P = {k: complex(v) for k, v in sol.points.items()}
     normal = (P["K"] - P["O"]) / R
     out = []
@@ -462,7 +503,8 @@ def _solve_2_25(p):
                             ("R31", ("ground", "cam"), "A")):
         F = complex(sf.reactions[key])
         line = complex(sf.lines[key])
-        out.append(Result(f"{label} size", abs(F), "N", "`static_forces` on the equivalent linkage"))
+        size = float(finite_result(abs(F) * G, f"the size of {label}", G=G, **layout))
+        out.append(Result(f"{label} size", size, "N", "`static_forces` on the equivalent linkage"))
         out.append(Result(f"{label} direction", math.atan2(F.imag, F.real), "rad", "from +x, counter-clockwise"))
         arm = float(np.imag(np.conj(line - P[pin]) * F)) / abs(F)
         out.append(Result(f"{label} moment arm about {pin}", arm, "mm", "+: the force turns counter-clockwise "
@@ -470,8 +512,8 @@ def _solve_2_25(p):
     F12 = complex(sf.reactions[("contact", "follower")])
     tilt = math.atan2(np.imag(np.conj(normal) * F12), np.real(np.conj(normal) * F12))
     out += [Result("R12 angle from the common normal", tilt, "rad", "± the friction angle φ = atan μ"),
-            Result("driving moment M1", float(sf.balancing) / 1000.0, "N·m", "`static_forces(...).balancing`"),
-            Result("driving moment without friction", float(sf.frictionless["cam"]) / 1000.0, "N·m",
+            Result("driving moment M1", float(sf.balancing) * G / 1000.0, "N·m", "`static_forces(...).balancing`"),
+            Result("driving moment without friction", float(sf.frictionless["cam"]) * G / 1000.0, "N·m",
                    "`static_forces(...).frictionless`"),
             Result("efficiency η", float(sf.efficiency), "", "M1 without friction / M1 (eq. 2-24)")]
     assumptions = (

@@ -401,7 +401,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=None, keep_defective=Fals
     keep_defective = bool_flag("keep_defective", keep_defective)
     unknown_starts = (theta0 is None) + (psi0 is None)
     if n > 6:
-        raise ValueError(f"Expected at most 6 precision pairs (use least_squares for more), got {n}")
+        raise ValueError(f"Expected at most 6 precision pairs (use least_squares for more) in `x` and `y`, got {n}")
     if (n == 3) != (d is not None):
         raise ValueError(f"Expected the ground arc `d` exactly for 3 pairs, got {n} pairs and d = {d!r}")
     needed = {3: 0, 4: 0, 5: 1, 6: 2}[n]

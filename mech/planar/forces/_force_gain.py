@@ -118,7 +118,8 @@ def mechanical_advantage(solution, input, output, *, method="velocities"):
     instance("solution", solution, LinkageSolution)
     option("method", method, ("velocities", "centres"))
     if method == "velocities" and solution.order < 1:
-        raise ValueError(f"Expected a solution with velocities (order >= 1), got order {solution.order}")
+        raise ValueError(f"Expected `solution` with velocities (order >= 1) for `method` = 'velocities', got order "
+                         f"{solution.order}")
     s_in, s_out = _spec(solution, input, "input"), _spec(solution, output, "output")
     if method == "velocities":
         r_in, r_out = _rate_velocities(solution, s_in), _rate_velocities(solution, s_out)

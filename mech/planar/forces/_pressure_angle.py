@@ -125,7 +125,7 @@ def pressure_angle(solution, joint, force, *, follower=None):
     """
     instance("solution", solution, LinkageSolution)
     if solution.order < 1:
-        raise ValueError(f"Expected a solution with velocities (order >= 1), got order {solution.order}")
+        raise ValueError(f"Expected `solution` with velocities (order >= 1), got order {solution.order}")
     known_name("joint", joint, tuple(solution.points))
     u = _force_direction(solution, joint, force)
     if follower is None:

@@ -329,7 +329,7 @@ def _load_table(sol, forces, couples):
         _fits(f"couples[{link!r}]", m, sol.valid.shape)
         out_c.append((link, m))
     if any(link == GROUND for link, _, _ in out_f) or any(link == GROUND for link, _ in out_c):
-        raise ValueError("Expected loads on moving links, got a load on 'ground'")
+        raise ValueError("Expected `forces` and `couples` on moving links, got a load on 'ground'")
     return out_f, out_c
 
 
@@ -460,7 +460,8 @@ def static_forces(solution, forces=None, couples=None, *, rho=0.0, mu=0.0, tol=1
                              {link for link, _, _ in f_list} | {link for link, _ in c_list})
     rough = [k for k, c in enumerate(coeff) if c > 0]
     if rough and sol.order < 1:
-        raise ValueError("Expected a solution with order >= 1 (velocities give the senses of friction), got order 0")
+        raise ValueError("Expected `solution` with order >= 1 (velocities give the senses of friction) for "
+                         f"`rho` = {rho!r} and `mu` = {mu!r}, got order 0")
 
     def loads(s=None):
         L = _Loads(shape)

@@ -231,7 +231,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=1.0, target=None, x_range
     psi0 = None if psi0 is None else real_number("psi0", psi0)
     given = (theta0 is not None) + (psi0 is not None)
     if n > 5:
-        raise ValueError(f"Expected at most 5 precision pairs (use least_squares for more), got {n}")
+        raise ValueError(f"Expected at most 5 precision pairs (use least_squares for more) in `x` and `y`, got {n}")
     if given != {3: 2, 4: 1, 5: 0}[n]:
         raise ValueError(f"Expected {({3: 2, 4: 1, 5: 0}[n])} of `theta0`, `psi0` given for {n} pairs, got {given}")
     d = positive_length("d", d)
@@ -342,7 +342,7 @@ def least_squares(x, y, *, theta0, psi0, d=1.0, kind="structural", fit_start=Fal
     if not (isinstance(kind, str) and kind in ("structural", "equation")):
         raise ValueError(f"Expected `kind` 'structural' or 'equation', got {kind!r}")
     if fit_start and x.size < 5:
-        raise ValueError(f"Expected at least 5 pairs to fit the start angles too, got {x.size}")
+        raise ValueError(f"Expected at least 5 pairs in `x` and `y` for `fit_start` = True, got {x.size}")
     if start is not None and not isinstance(start, FunctionGenerator):
         raise ValueError(f"Expected `start` to be a FunctionGenerator or None, got {start!r}")
     x_range = _common(target, x_range, samples, tol)
