@@ -223,7 +223,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         if not 0 <= f < n:
             raise ValueError(f"Expected `marks` frames in [0, {n - 1}], got {f}")
     data = {
-        "kind": "2d", "n": n, "fps": float(fps), "label": input_label, "inputs": _inputs(inputs, n),
+        "kind": "2d", "grid": step, "n": n, "fps": float(fps), "label": input_label, "inputs": _inputs(inputs, n),
         "names": names, "P": [enc(P[k]) for k in names], "links": link_idx,
         "trace": idx(list(trace), "trace"), "ground": idx(list(ground), "ground"),
         "blocks": idx(list(blocks), "blocks"), "lines": [[ _ints([c.real, -c.imag], step) for c in l] for l in lines],
@@ -235,7 +235,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
     data["unit"] = round(0.018 * max(w, h), 1)
     font = round(0.034 * max(w, h), 1)
     svg = (f'<svg viewBox="{x0} {y0} {w} {h}" style="max-width:{int(width)}px;font-size:{font}px" role="img" '
-           f'aria-label="{html.escape(caption)}" xmlns="http://www.w3.org/2000/svg"></svg>')
+           f'aria-label="{html.escape(caption)}"></svg>')
     return _display(_wrap("mech-anim", 'data-frame="0"', svg, _controls(n, input_label, marks), data))
 
 
@@ -314,7 +314,7 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
     Examples
     --------
     >>> out = view3d(still=[(great_circle([0, 0, 1]), "grid")], sphere=True)
-    >>> 'class="mech-fig mech-view3d"' in out.data and "mech-play" not in out.data
+    >>> 'class="mech-fig mech-view3d"' in out.data and 'class="mech-play"' not in out.data
     True
     """
     P = {} if points is None else {str(k): np.asarray(v, dtype=float) for k, v in points.items()}
@@ -354,7 +354,7 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
         "still": [{"p": enc(c), "c": f"mf-{s}"} for c, s in still],
     }
     svg = (f'<svg viewBox="-1040 -1040 2080 2080" style="max-width:{int(width)}px;font-size:62px" '
-           f'role="img" aria-label="{html.escape(caption)}" xmlns="http://www.w3.org/2000/svg"></svg>')
+           f'role="img" aria-label="{html.escape(caption)}"></svg>')
     moving = n > 1
     attrs = f'data-yaw="{float(yaw):.1f}" data-pitch="{float(pitch):.1f}"' + (' data-frame="0"' if moving else "")
     return _display(_wrap("mech-view3d mech-anim" if moving else "mech-view3d", attrs, svg,
