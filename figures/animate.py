@@ -33,7 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["animate", "animate_linkage", "view3d", "great_circle"]
+__all__ = ["animate", "animate_linkage", "view3d", "great_circle", "insert_frames"]
 
 _JS = Path(__file__).with_name("mech_anim.js")
 
@@ -150,8 +150,12 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         plate, drawn filled).
     trace : sequence of str
         Points whose path is drawn (faint, whole) and traced up to the current frame.
-    ground, blocks : sequence of str
-        Points drawn as fixed pivots (a triangle) or as sliding blocks (a box).
+    ground : sequence of str
+        Points drawn as fixed pivots (a triangle).
+    blocks : sequence of str or (str, str)
+        Points drawn as sliding blocks: a level box, or with a second point name a box
+        along the line to it. Points whose name starts with ``_`` are helpers (such a
+        direction) and are not drawn.
     lines : sequence of sequences of complex
         Still polylines (guides), drawn dashed.
     branches : dict of str -> complex array_like, optional
@@ -203,7 +207,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         if _n_frames(G, "branches") not in (1, n):
             raise ValueError(f"Expected `branches` with {n} poses, got {_n_frames(G, 'branches')}")
     lines = [np.asarray(l, dtype=complex).ravel() for l in lines]
-    everything = [np.ravel(v) for v in P.values()] + lines + ([np.ravel(v) for v in G.values()] if G else [])
+    everything = [np.ravel(v) for k, v in P.items() if not k.startswith("_")] + lines + ([np.ravel(v) for v in G.values()] if G else [])
     z = np.concatenate([np.asarray(v, dtype=complex) for v in everything])
     z = z[np.isfinite(z)]
     if z.size == 0:
@@ -226,7 +230,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         "kind": "2d", "grid": step, "n": n, "fps": float(fps), "label": input_label, "inputs": _inputs(inputs, n),
         "names": names, "P": [enc(P[k]) for k in names], "links": link_idx,
         "trace": idx(list(trace), "trace"), "ground": idx(list(ground), "ground"),
-        "blocks": idx(list(blocks), "blocks"), "lines": [[ _ints([c.real, -c.imag], step) for c in l] for l in lines],
+        "blocks": [idx([b], "blocks") + [-1] if isinstance(b, str) else idx(list(b), "blocks") for b in blocks], "lines": [[ _ints([c.real, -c.imag], step) for c in l] for l in lines],
         "ghost": [enc(G[k]) if k in G else enc(P[k]) if P[k].size == 1 else [None, None] for k in names] if G else None,
         "marks": [list(m) for m in marks], "labels": bool(labels),
     }
@@ -258,6 +262,13 @@ def animate_linkage(linkage, solution, *, trace=(), inputs=None, **options):
     pts = {k: np.asarray(v) for k, v in solution.points.items()}
     for name in sk["ground"]:
         pts[name] = complex(np.ravel(pts[name])[0])
+    allz = np.concatenate([np.ravel(v) for v in pts.values()])
+    allz = allz[np.isfinite(allz)]
+    reach = max(np.ptp(allz.real), np.ptp(allz.imag), 1e-300) / 10
+    blocks = []
+    for name, link in sk["blocks"]:  # a helper point along the block's link sets its direction
+        pts["_" + name] = pts[name] + reach * np.asarray(solution.direction(link))
+        blocks.append((name, "_" + name))
     guides = []
     for name, _ in sk["guides"]:  # a block on the frame: a dashed line along its path
         path = np.asarray(pts[name]).ravel()
@@ -265,7 +276,29 @@ def animate_linkage(linkage, solution, *, trace=(), inputs=None, **options):
         ends = path[[np.argmin(path.real + path.imag), np.argmax(path.real + path.imag)]]
         guides.append(ends + np.array([-0.15, 0.15]) * (ends[1] - ends[0]))
     return animate(pts, list(sk["links"].values()), trace=trace, ground=sk["ground"],
-                   blocks=[b for b, _ in sk["blocks"]], lines=guides, inputs=inputs, **options)
+                   blocks=blocks, lines=guides, inputs=inputs, **options)
+
+
+def insert_frames(values, extra):
+    """Sort the `extra` input values (e.g. limit positions) into `values`.
+
+    Returns the new sorted input array and the frame index of each extra value, so that
+    a marked pose is drawn exactly, not at the nearest grid step.
+
+    Examples
+    --------
+    >>> t, at = insert_frames([0.0, 1.0, 2.0], [1.5, 0.5])
+    >>> t.tolist(), at
+    ([0.0, 0.5, 1.0, 1.5, 2.0], [3, 1])
+    """
+    values = np.asarray(values, dtype=float).ravel()
+    extra = np.asarray(extra, dtype=float).ravel()
+    if not (np.isfinite(values).all() and np.isfinite(extra).all()):
+        raise ValueError(f"Expected finite `values` and `extra`, got {values!r} and {extra!r}")
+    order = np.argsort(np.r_[values, extra], kind="stable")
+    where = np.empty_like(order)
+    where[order] = np.arange(order.size)
+    return np.r_[values, extra][order], [int(i) for i in where[values.size:]]
 
 
 def great_circle(pole, n=97):

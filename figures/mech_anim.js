@@ -77,7 +77,10 @@
     });
     d.marks.forEach(function (m) {
       var p = body(layer.mark, d.P, m[0], "mf-marked"), q = p[m[2]];
-      if (q) el(layer.mark, "text", {x: q[0] + u, y: q[1] - u, class: "mf-marktext"}).textContent = m[1];
+      // Labels right of the middle are written leftwards, so they stay inside the figure.
+      var box = svg.viewBox.baseVal, left = q && q[0] > box.x + box.width / 2;
+      if (q) el(layer.mark, "text", {x: q[0] + (left ? -u : u), y: q[1] - u, class: "mf-marktext",
+                                     "text-anchor": left ? "end" : "start"}).textContent = m[1];
     });
     var trace = d.trace.map(function () { return el(layer.path, "path", {class: "mf-path"}); });
     function draw(f) {
@@ -88,12 +91,20 @@
         var done = []; for (var g = 0; g <= f; g++) done.push(at(d.P[i], g, 2));
         trace[k].setAttribute("d", pathD(done));
       });
+      // A block is a box along the line to its second point (or level without one).
+      d.blocks.forEach(function (b) {
+        var q = p[b[0]], r = b[1] < 0 ? null : p[b[1]];
+        if (!q || (b[1] >= 0 && !r)) return;
+        var deg = r ? Math.atan2(r[1] - q[1], r[0] - q[0]) * 180 / Math.PI : 0;
+        el(layer.top, "rect", {x: q[0] - 1.3 * u, y: q[1] - 0.8 * u, width: 2.6 * u, height: 1.6 * u, class: "mf-block",
+                               transform: "rotate(" + deg.toFixed(1) + " " + q[0] + " " + q[1] + ")"});
+      });
       p.forEach(function (q, i) {
         if (!q) return;
+        // Names starting with "_" are helper points (a block's direction): not drawn.
+        if (d.names[i].charAt(0) === "_") return;
         if (d.ground.indexOf(i) >= 0) {
           el(layer.top, "path", {d: pathD([q, [q[0] - u, q[1] + 1.7 * u], [q[0] + u, q[1] + 1.7 * u]], true), class: "mf-ground"});
-        } else if (d.blocks.indexOf(i) >= 0) {
-          el(layer.top, "rect", {x: q[0] - 1.2 * u, y: q[1] - 0.8 * u, width: 2.4 * u, height: 1.6 * u, class: "mf-block"});
         }
         el(layer.top, "circle", {cx: q[0], cy: q[1], r: 0.45 * u, class: "mf-joint"});
         if (d.labels) el(layer.top, "text", {x: q[0] + 0.7 * u, y: q[1] - 0.7 * u, class: "mf-label"}).textContent = d.names[i];
