@@ -160,9 +160,10 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         Still polylines (guides), drawn dashed.
     branches : dict of str -> complex array_like, optional
         The same points on the other assembly branch, drawn red dashed, moving together.
-    marks : sequence of (int, str, str)
+    marks : sequence of (int, str, str) or (int, str)
         ``(frame, text, point)``: that pose is drawn still (dotted) and labelled at
-        `point` (dead or limit positions), with a button that jumps to it.
+        `point` (dead or limit positions; no label without `point`), with a button
+        that jumps to it.
     inputs : array_like, shape (n,), optional
         The input value shown for each frame (e.g. the crank angle in degrees).
     input_label : str
@@ -222,7 +223,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
             return _ints([v[0].real, -v[0].imag], step)
         return _ints(np.c_[v.real, -v.imag], step)
 
-    marks = [(int(m[0]), str(m[1]), index[m[2]] if len(m) > 2 else 0) for m in marks]
+    marks = [(int(m[0]), str(m[1]), idx([m[2]], "marks")[0] if len(m) > 2 else None) for m in marks]
     for f, _, _ in marks:
         if not 0 <= f < n:
             raise ValueError(f"Expected `marks` frames in [0, {n - 1}], got {f}")
