@@ -162,8 +162,8 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         The same points on the other assembly branch, drawn red dashed, moving together.
     marks : sequence of (int, str, str) or (int, str)
         ``(frame, text, point)``: that pose is drawn still (dotted) and labelled at
-        `point` (dead or limit positions; no label without `point`), with a button
-        that jumps to it.
+        `point` (dead or limit positions), with a button that jumps to it;
+        ``(frame, text)``: the button only.
     inputs : array_like, shape (n,), optional
         The input value shown for each frame (e.g. the crank angle in degrees).
     input_label : str

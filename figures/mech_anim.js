@@ -76,7 +76,9 @@
       el(layer.path, "path", {d: pathD(all), class: "mf-path-all"});
     });
     d.marks.forEach(function (m) {
-      var p = body(layer.mark, d.P, m[0], "mf-marked"), q = m[2] === null ? null : p[m[2]];
+      // A mark without a point is only a button (many dotted poses would hide the figure).
+      if (m[2] === null) return;
+      var p = body(layer.mark, d.P, m[0], "mf-marked"), q = p[m[2]];
       // Labels right of the middle are written leftwards, so they stay inside the figure.
       var box = svg.viewBox.baseVal, left = q && q[0] > box.x + box.width / 2;
       if (q) el(layer.mark, "text", {x: q[0] + (left ? -u : u), y: q[1] - u, class: "mf-marktext",
