@@ -47,6 +47,7 @@ _CSS = """<style>
 .mech-bar button{font:inherit;padding:.1em .6em}
 .mf-link{fill:none;stroke:#222;stroke-width:2.2;stroke-linejoin:round;stroke-linecap:round}
 .mf-plate{fill:#ddd;fill-opacity:.8}
+.mf-ghost.mf-plate,.mf-marked.mf-plate{fill:none}
 .mf-ghost{fill:none;stroke:#c0392b;stroke-width:1.6;stroke-dasharray:6 3}
 .mf-marked{fill:none;stroke:#8e44ad;stroke-width:1.1;stroke-dasharray:2 3}
 .mf-marktext{fill:#8e44ad}
