@@ -34,10 +34,6 @@ NOT_COVERED = {
     ("fig", "2-33"): "feeders with constant orientation; " + _ART,
     ("fig", "2-34"): "an engine hood and a feeder; " + _ART,
     ("fig", "2-35"): "straight-line guidance of a mixer motor; " + _ART,
-    ("fig", "2-42"): "instant centres of lower pairs; " + _DRAWABLE,
-    ("fig", "2-43"): "the instant centre of a higher pair; " + _DRAWABLE,
-    ("fig", "2-48"): "the cam of example 2-7 (its profile is not given); the instant-centre "
-                     "page computes the example without the cam drawing",
     ("fig", "2-63"): "journals as machine parts; " + _ART,
     ("fig", "2-67"): "the weight-and-pulley machine of the efficiency definition; " + _SCHEMATIC,
     ("fig", "2-68"): "the wedge press free bodies and force polygons; " + _DRAWABLE,
