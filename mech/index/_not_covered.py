@@ -36,7 +36,6 @@ NOT_COVERED = {
     ("fig", "2-35"): "straight-line guidance of a mixer motor; " + _ART,
     ("fig", "2-63"): "journals as machine parts; " + _ART,
     ("fig", "2-67"): "the weight-and-pulley machine of the efficiency definition; " + _SCHEMATIC,
-    ("fig", "2-68"): "the wedge press free bodies and force polygons; " + _DRAWABLE,
     ("fig", "2-71"): "hand-lever shears; " + _ART,
     ("fig", "2-73"): "the guide-bar with a constant transmission angle; " + _DRAWABLE,
     ("fig", "2-83"): "the slotting-machine guide-bar; " + _DRAWABLE,
