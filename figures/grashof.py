@@ -6,7 +6,8 @@ import. Used by ``book/structure/index.md``.
 
 import numpy as np
 
-__all__ = ["KIND_COLORS", "plot_reachable_region", "plot_kind_map", "plot_snapshots"]
+__all__ = ["KIND_COLORS", "joint_sweeps", "plot_joint_types", "plot_reachable_region", "plot_kind_map",
+           "plot_snapshots"]
 
 #: One colour per four-bar kind, shared by every figure of the chapter.
 KIND_COLORS = {
@@ -107,4 +108,68 @@ def plot_snapshots(ax, linkage, thetas, *, kind=None, title=None):
     ax.grid(alpha=0.2)
     if title:
         ax.set_title(title, fontsize=10)
+    return ax
+
+
+def joint_sweeps(a, b, c, d, n=7201):
+    """The poses of one circuit of the chain and the relative angle swept at each joint,
+    in degrees: 360 minus the largest gap in the angles it takes (Fig. 2-6).
+
+    A Grashof chain keeps to one assembly branch of `FourBar` over a crank turn (the other
+    branch is the mirror circuit, reached only by taking the chain apart); a non-Grashof
+    chain runs through both branches, meeting at its limit poses, in one circuit. Returns
+    ``(poses, swept)``, poses a list of (theta, B, C) arrays, one per branch used.
+    """
+    from mech.planar import FourBar, grashof
+
+    theta = np.linspace(0.0, 2.0 * np.pi, n)
+    poses, rel = [], {j: [] for j in "ABCD"}
+    for branch in ((1,) if grashof(a, b, c, d).grashof else (1, -1)):
+        pose = FourBar(a, b, c, d, branch=branch).solve(theta)
+        ok = pose.valid
+        A, D = 0j, complex(d)
+        B, C = pose.B[ok], pose.C[ok]
+        poses.append((theta[ok], B, C))
+        rel["A"].append(np.angle((B - A) / (D - A)))
+        rel["B"].append(np.angle((C - B) / (A - B)))
+        rel["C"].append(np.angle((D - C) / (B - C)))
+        rel["D"].append(np.angle((A - D) / (C - D)))
+    swept = {}
+    for j, parts in rel.items():
+        t = np.sort(np.mod(np.degrees(np.concatenate(parts)), 360.0))
+        gaps = np.diff(np.concatenate([t, [t[0] + 360.0]]))
+        swept[j] = 360.0 - gaps.max()
+    return poses, swept
+
+
+def plot_joint_types(ax, a, b, c, d, *, every=12, title=None):
+    """Draw a chain at poses spread over its whole motion, marking each joint filled when
+    `grashof` counts it fully rotatable and open when it rocks, with the angle the joint
+    sweeps in a simulation (Fig. 2-6)."""
+    from mech.planar import grashof
+
+    r = grashof(a, b, c, d)
+    colour = KIND_COLORS[r.kind]
+    poses, swept = joint_sweeps(a, b, c, d)
+    theta, B, C = poses[0]
+    picks = np.linspace(0, len(theta) - 1, every).astype(int)
+    for k in picks:
+        z = np.array([0j, B[k], C[k], complex(d)])
+        ax.plot(z.real, z.imag, "-", color=colour, alpha=0.35, lw=1.2)
+    for _, Bb, Cb in poses:
+        ax.plot(Bb.real, Bb.imag, ":", color="0.4", lw=0.8)
+        ax.plot(Cb.real, Cb.imag, ":", color="0.4", lw=0.8)
+    k = picks[len(picks) // 3]
+    last = {"A": 0j, "B": complex(B[k]), "C": complex(C[k]), "D": complex(d)}
+    z = np.array(list(last.values()))
+    ax.plot(z.real, z.imag, "-", color=colour, lw=2.4)
+    for name, p in last.items():
+        full = name in r.revolving
+        ax.plot([p.real], [p.imag], "o", ms=9, mec="black", mfc="black" if full else "white", zorder=4)
+        ax.annotate(f"{name}: {swept[name]:.0f}°", (p.real, p.imag), textcoords="offset points",
+                    xytext=(6, 6), fontsize=9)
+    ax.plot([0.0, d], [0.0, 0.0], color="black", lw=2.5)
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.2)
+    ax.set_title(title or f"{r.kind} ({a:g}, {b:g}, {c:g}, {d:g})", fontsize=10)
     return ax

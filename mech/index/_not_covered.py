@@ -20,7 +20,6 @@ NOT_COVERED = {
     ("chapter", "4"): "rigid-body guidance by spherical six-bars: not yet derived",
     ("fig", "2-2"): "drawing symbols of the basic mechanisms; " + _SCHEMATIC,
     ("fig", "2-3"): "the wedge mechanism; " + _SCHEMATIC,
-    ("fig", "2-6"): "link lengths against type; " + _DRAWABLE,
     ("fig", "2-9"): "forces after swapping slider and guide; " + _SCHEMATIC,
     ("fig", "2-12"): "the R-P-P-P and four-prismatic chains; " + _SCHEMATIC,
     ("fig", "2-13"): "a motion-adding mechanism; " + _ART,
