@@ -27,8 +27,6 @@ NOT_COVERED = {
                      "universal-joint page draws the kinematics instead (Figs. 2-122, 2-123)",
     ("fig", "2-24"): "rotation to intermittent motion; " + _DRAWABLE,
     ("fig", "2-25"): "steering linkage and treadle drives; " + _ART,
-    ("fig", "2-27"): "two function generators for y = lg x, link ratios only in the drawing; "
-                     + _DRAWABLE,
     ("fig", "2-28"): "a mixer and a rail transfer; " + _ART,
     ("fig", "2-33"): "feeders with constant orientation; " + _ART,
     ("fig", "2-34"): "an engine hood and a feeder; " + _ART,
