@@ -25,7 +25,6 @@ NOT_COVERED = {
     ("fig", "2-13"): "a motion-adding mechanism; " + _ART,
     ("fig", "2-21"): "the single and double universal joint as machine parts; the "
                      "universal-joint page draws the kinematics instead (Figs. 2-122, 2-123)",
-    ("fig", "2-24"): "rotation to intermittent motion; " + _DRAWABLE,
     ("fig", "2-25"): "steering linkage and treadle drives; " + _ART,
     ("fig", "2-28"): "a mixer and a rail transfer; " + _ART,
     ("fig", "2-33"): "feeders with constant orientation; " + _ART,
