@@ -6,8 +6,8 @@ import. Used by ``book/structure/index.md``.
 
 import numpy as np
 
-__all__ = ["KIND_COLORS", "joint_sweeps", "plot_joint_types", "plot_reachable_region", "plot_kind_map",
-           "plot_snapshots"]
+__all__ = ["KIND_COLORS", "joint_sweeps", "plot_joint_types", "plot_prismatic_chain", "plot_reachable_region",
+           "plot_kind_map", "plot_snapshots"]
 
 #: One colour per four-bar kind, shared by every figure of the chapter.
 KIND_COLORS = {
@@ -172,4 +172,38 @@ def plot_joint_types(ax, a, b, c, d, *, every=12, title=None):
     ax.set_aspect("equal")
     ax.grid(alpha=0.2)
     ax.set_title(title or f"{r.kind} ({a:g}, {b:g}, {c:g}, {d:g})", fontsize=10)
+    return ax
+
+
+def plot_prismatic_chain(ax, solution, indices, *, title=None):
+    """The R-P-P-P chain (Fig. 2-12a) at several poses of a `LinkageSolution`, faint to solid.
+
+    The frame carries the sliding lines of DA (through D) and of BC (through C), dashed;
+    AB is drawn from A to B, DA from D's line point to A, BC from C to B. The angle DAB at
+    the revolute A, from the solved points, is written at A.
+    """
+    P = {k: np.asarray(v) for k, v in solution.points.items()}
+    D, C = complex(P["D"].flat[0]), complex(P["C"].flat[0])
+    u_da = complex(np.asarray(solution.direction("DA")).flat[0])
+    u_bc = complex(np.asarray(solution.direction("BC")).flat[0])
+    far = max(abs(P["A"]).max(), abs(P["B"] - C).max()) * 1.15
+    for base, u in ((D, u_da), (C, u_bc)):
+        ax.plot([base.real, (base + far * u).real], [base.imag, (base + far * u).imag], "--", color="0.55", lw=1.0)
+    ax.plot([D.real, C.real], [D.imag, C.imag], color="black", lw=2.5)
+    for k, i in enumerate(indices):
+        alpha = 0.3 + 0.7 * (k + 1) / len(indices)
+        A, B = complex(P["A"][i]), complex(P["B"][i])
+        for z0, z1, colour in ((D + 0.35 * (A - D), A, "tab:blue"), (A, B, "tab:green"), (C + 0.35 * (B - C), B, "tab:purple")):
+            ax.plot([z0.real, z1.real], [z0.imag, z1.imag], color=colour, lw=2.4, alpha=alpha,
+                    solid_capstyle="round")
+        ax.plot([A.real], [A.imag], "o", ms=6, mfc="white", mec="black", alpha=alpha, zorder=4)
+        at_a = abs(np.degrees(np.angle((B - A) / (D - A))))
+        ax.annotate(f"∠DAB = {at_a:.4f}°", (A.real, A.imag), textcoords="offset points", xytext=(8, -6),
+                    fontsize=8, alpha=alpha)
+    for name, z in (("D", D), ("C", C)):
+        ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(-4, -14))
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.2)
+    if title:
+        ax.set_title(title, fontsize=10)
     return ax

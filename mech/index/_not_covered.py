@@ -21,7 +21,6 @@ NOT_COVERED = {
     ("fig", "2-2"): "drawing symbols of the basic mechanisms; " + _SCHEMATIC,
     ("fig", "2-3"): "the wedge mechanism; " + _SCHEMATIC,
     ("fig", "2-9"): "forces after swapping slider and guide; " + _SCHEMATIC,
-    ("fig", "2-12"): "the R-P-P-P and four-prismatic chains; " + _SCHEMATIC,
     ("fig", "2-13"): "a motion-adding mechanism; " + _ART,
     ("fig", "2-21"): "the single and double universal joint as machine parts; the "
                      "universal-joint page draws the kinematics instead (Figs. 2-122, 2-123)",

@@ -460,3 +460,23 @@ def test_fig_2_24c_dwell_press_punch_rests_while_m_follows_the_arc():
     assert np.ptp(y_rel[dwell]) == pytest.approx(0.110, abs=0.002)
     assert np.ptp(y_rel) == pytest.approx(31.898, abs=0.002)
     assert np.abs(np.abs(M[dwell] - O) - R).max() < 0.051
+
+
+def test_fig_2_12a_rppp_chain_revolute_never_turns():
+    """Fig. 2-12a: in the R-P-P-P chain (frame CD; DA slides at 60 deg through D, BC at
+    120 deg through C, AB in a guide of BC at 100 deg to it) no link turns, so the
+    revolute A keeps its angle, and B moves along its line by the sine rule of the
+    triangle of the three sliding directions: sin(20 deg) / sin(80 deg) times A's move."""
+    rppp = (Linkage({"D": 0j, "C": 100 + 0j})
+            .slider("DA", guide=Guide("ground", through="D", angle=np.radians(60.0)), point="A")
+            .rpp(("AB", "BC"), pin="A", guide=Guide("ground", through="C", angle=np.radians(120.0)),
+                 angle=np.radians(100.0), point="B"))
+    s = np.linspace(20.0, 60.0, 41)
+    sol = rppp.solve(s)
+    A, B = sol.points["A"], sol.points["B"]
+    assert np.allclose(A, s * np.exp(1j * np.radians(60.0)), atol=1e-12)
+    angle_a = np.angle((B - A) / (0 - A))
+    assert np.ptp(angle_a) < 1e-12
+    assert abs(np.degrees(angle_a[0])) == pytest.approx(160.0, abs=1e-10)
+    moved = np.abs(B - B[0])
+    assert np.allclose(moved, (s - s[0]) * np.sin(np.radians(20.0)) / np.sin(np.radians(80.0)), atol=1e-10)
