@@ -7,7 +7,8 @@ Nothing is computed or drawn at import.
 
 import numpy as np
 
-__all__ = ["angle_at_joint", "angle_curves", "gain_curves", "ram_line_choice"]
+__all__ = ["angle_at_joint", "angle_curves", "gain_curves", "guide_bar_block", "ram_line_choice",
+           "slider_on_guide"]
 
 
 def _axes(ax, size=(5.0, 4.0)):
@@ -134,4 +135,80 @@ def ram_line_choice(ax, linkage, solution, indices, pin, lines):
         ax.plot([x0, x1], [y, y], ls="--", color=colour, lw=1.2, label=label)
     ax.set_aspect("equal")
     ax.legend(loc="lower left", fontsize=8)
+    return ax
+
+
+def guide_bar_block(ax, linkage, solution, index, *, pin, pivot, bar, scale):
+    """A guide-bar pose with the block's push on the bar and the bar's own velocity there
+    (Fig. 2-73).
+
+    The push acts along the bar's normal (no friction); the bar's point under the pin moves
+    with ``1j * omega_bar * (pin - pivot)``, from the solution's angular velocity of
+    ``bar``. Both arrows are ``scale`` long; the angle between them is the pressure angle.
+    """
+    from figures.linkages import draw_linkage
+
+    ax = _axes(ax, (4.5, 4.5))
+    draw_linkage(ax, linkage, solution, index, labels=True)
+    J = complex(np.asarray(solution.points[pin])[index])
+    D = complex(np.asarray(solution.points[pivot])[index])
+    w = float(np.asarray(solution.omegas[bar])[index])
+    v = 1j * w * (J - D)                                    # the bar's point at J
+    n = 1j * complex(np.asarray(solution.direction(bar))[index])
+    push = n * np.sign((v * np.conj(n)).real)               # the block drives the bar
+    for d, colour in ((push, "tab:red"), (v / abs(v), "tab:blue")):
+        tip = J + scale * d
+        ax.annotate("", xy=(tip.real, tip.imag), xytext=(J.real, J.imag),
+                    arrowprops=dict(arrowstyle="-|>", color=colour, lw=2.0 if colour == "tab:red" else 1.2))
+    alpha = np.degrees(abs(np.angle(v / push)))
+    ax.plot([], [], color="tab:red", label="push of the block on the bar")
+    ax.plot([], [], color="tab:blue", label=f"velocity of the bar at {pin}")
+    ax.plot([], [], ls="none", label=f"α = {alpha:.1e}°, γ = {90 - alpha:.4f}°")
+    ax.legend(loc="lower left", fontsize=7)
+    ax.set_aspect("equal")
+    return ax
+
+
+def slider_on_guide(ax, pin, offset, half_length, forces, line, ends, *, scale, title=None):
+    """A block in a horizontal slot with its pin ``offset`` above the lower face (Fig. 2-85).
+
+    ``forces`` maps a label to (point, force) for the applied forces (the rod's push at the
+    pin, the working resistance at the face); ``line`` is the point where the guide's
+    single normal force acts (``StaticForces.lines``); ``ends`` are the vertical reactions
+    (signed, up positive) at the block's two ends, an upward one drawn on the lower face
+    and a downward one on the upper face. Arrows are ``scale`` per unit of force.
+    """
+    ax = _axes(ax, (5.0, 3.0))
+    pin = complex(pin)
+    x0, y_low, h = pin.real, pin.imag - offset, 2.0 * offset
+    box = np.array([x0 - half_length, x0 + half_length, x0 + half_length + 1j * h,
+                    x0 - half_length + 1j * h, x0 - half_length]) + 1j * y_low
+    ax.fill(box.real, box.imag, color="#fdd0a2", ec="tab:orange", lw=1.4, zorder=1)
+    for y in (y_low, y_low + h):
+        ax.plot([x0 - 2.6 * half_length, x0 + 2.6 * half_length], [y, y], color="0.3", lw=2.0)
+    ax.plot([pin.real], [pin.imag], "o", color="black", ms=6, zorder=4)
+    ax.annotate("C", (pin.real, pin.imag), textcoords="offset points", xytext=(4, 4))
+    for (label, (at, f)), colour in zip(forces.items(), ("tab:green", "tab:red", "tab:purple")):
+        at, f = complex(at), scale * complex(f)
+        ax.annotate("", xy=((at + f).real, (at + f).imag), xytext=(at.real, at.imag),
+                    arrowprops=dict(arrowstyle="-|>", color=colour, lw=1.8), zorder=5)
+        ax.text((at + f).real, (at + f).imag + 0.15 * offset, label, color=colour, fontsize=9)
+    for k, (x, n) in enumerate(zip((x0 - half_length, x0 + half_length), ends)):
+        face = y_low if n > 0 else y_low + h
+        tail = x + 1j * (face - scale * n)
+        ax.annotate("", xy=(x, face), xytext=(tail.real, tail.imag),
+                    arrowprops=dict(arrowstyle="-|>", color="tab:blue", lw=1.8), zorder=5)
+        ax.text(x, tail.imag, f"$N_{k + 1}$ = {abs(n):.0f}", color="tab:blue", fontsize=9, ha="center",
+                va="top" if n > 0 else "bottom")
+    line = complex(line)
+    ax.axvline(line.real, color="tab:blue", ls=":", lw=1.0)
+    ax.text(line.real, y_low + 1.1 * h, "normal force's line", color="tab:blue", fontsize=8, ha="right")
+    reach = scale * max(abs(n) for n in ends) + 0.6 * offset
+    ax.set_ylim(y_low - reach, y_low + h + reach)
+    ax.set_xlim(min(x0 - 2.7 * half_length, line.real - 0.2 * half_length),
+                max(x0 + 2.7 * half_length, line.real + 0.2 * half_length))
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.2)
+    if title:
+        ax.set_title(title, fontsize=10)
     return ax

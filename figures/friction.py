@@ -7,7 +7,7 @@ Plain plotting functions: they take numbers computed by ``mech`` and a Matplotli
 import numpy as np
 
 __all__ = ["journal_friction_circle", "two_force_member", "efficiency_curves", "thrust_pressure",
-           "friction_cone", "vgroove"]
+           "friction_cone", "vgroove", "wedge_press_free_bodies"]
 
 
 def _axes(ax, size=(5.0, 4.0)):
@@ -201,4 +201,49 @@ def vgroove(half_angle, load, flank_force, ax=None, *, title=None):
     ax.axis("off")
     if title:
         ax.set_title(title, fontsize=10)
+    return ax
+
+
+def wedge_press_free_bodies(lam, forces, ax=None, *, scale=0.03, length=100.0, gap=18.0):
+    """The two wedges of the wedge press drawn apart, each with its forces (Fig. 2-68a).
+
+    ``forces`` is a `WedgePressForces` (from ``mech.planar.wedge_press_forces``); each arrow
+    is ``scale`` mm per N. The shapes follow the model of that function: wedge 2 on the
+    base y = 0, its upper face falling towards +x at ``lam``; wedge 3 above it, bearing on
+    the vertical guide on its +x side. Wedge 3 is lifted by ``gap`` to separate the bodies.
+    """
+    ax = _axes(ax, (5.5, 5.0))
+    slope = np.tan(lam)
+    h0 = 18.0 + length * slope                   # wedge 2's height at its thick end
+    top = lambda x: h0 - x * slope               # noqa: E731  (wedge 2's upper face)
+    x3, w3 = 0.8 * length, 0.3 * length          # the guide's line and wedge 3's width
+    wedge2 = np.array([0, length, length + 1j * top(length), 1j * h0, 0])
+    foot = [x3 - w3 + 1j * top(x3 - w3), x3 + 1j * top(x3)]
+    wedge3 = np.array([foot[0], foot[1], x3 + 1j * (h0 + 60), x3 - w3 + 1j * (h0 + 60), foot[0]]) + 1j * gap
+    ax.fill(wedge2.real, wedge2.imag, color="#c6dbef", ec="tab:blue", lw=1.4)
+    ax.fill(wedge3.real, wedge3.imag, color="#fdd0a2", ec="tab:orange", lw=1.4)
+    ax.plot([-0.2 * length, 1.2 * length], [0, 0], color="0.3", lw=1.0)
+    ax.plot([x3, x3], [top(x3) + gap, h0 + 60 + gap], color="0.3", lw=3.0, alpha=0.4)
+    mid = (foot[0] + foot[1]) / 2
+    s = scale
+    # every force drawn with its head on the body: at the face it acts on, or the load's point
+    arrows = [
+        (1j * h0 / 2, forces.P, "P", "tab:red"),
+        (0.5 * x3, forces.R12, r"$R_{12}$", "tab:green"),
+        (mid, forces.R32, r"$R_{32}$", "tab:purple"),
+        (mid + 1j * gap, forces.R23, r"$R_{23}$", "tab:purple"),
+        (x3 + 1j * (h0 + 30 + gap), forces.R13, r"$R_{13}$", "tab:brown"),
+        (x3 - w3 / 2 + 1j * (h0 + 60 + gap), forces.Q, "Q", "tab:red"),
+    ]
+    for head, f, text, colour in arrows:
+        tail = head - s * complex(f)
+        _arrow(ax, tail, head, colour, text, offset=-1.1 * s * complex(f) + 0j)
+    for name, z in (("2", 0.25 * length + 0.3j * h0), ("3", x3 - w3 / 2 + 1j * (h0 + 45 + gap))):
+        ax.text(z.real, z.imag, name, fontsize=12, ha="center", va="center")
+    ax.set_aspect("equal")
+    ax.set_xlim(-0.35 * length, 1.35 * length)
+    ax.set_ylim(-s * abs(complex(forces.R12)) - 8, h0 + 60 + gap + s * abs(complex(forces.Q)) + 10)
+    ax.grid(alpha=0.2)
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
     return ax

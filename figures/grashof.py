@@ -6,7 +6,8 @@ import. Used by ``book/structure/index.md``.
 
 import numpy as np
 
-__all__ = ["KIND_COLORS", "plot_reachable_region", "plot_kind_map", "plot_snapshots"]
+__all__ = ["KIND_COLORS", "joint_sweeps", "plot_joint_types", "plot_prismatic_chain", "plot_reachable_region",
+           "plot_kind_map", "plot_snapshots"]
 
 #: One colour per four-bar kind, shared by every figure of the chapter.
 KIND_COLORS = {
@@ -103,6 +104,104 @@ def plot_snapshots(ax, linkage, thetas, *, kind=None, title=None):
     path = linkage.solve(np.linspace(thetas.min(), thetas.max(), 721)).C
     ax.plot(path.real, path.imag, ":", color="0.4", lw=1.0)
     ax.plot([0.0, linkage.d], [0.0, 0.0], color="black", lw=2.5)
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.2)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax
+
+
+def joint_sweeps(a, b, c, d, n=7201):
+    """The poses of one circuit of the chain and the relative angle swept at each joint,
+    in degrees: 360 minus the largest gap in the angles it takes (Fig. 2-6).
+
+    A Grashof chain keeps to one assembly branch of `FourBar` over a crank turn (the other
+    branch is the mirror circuit, reached only by taking the chain apart); a non-Grashof
+    chain runs through both branches, meeting at its limit poses, in one circuit. Returns
+    ``(poses, swept)``, poses a list of (theta, B, C) arrays, one per branch used.
+    """
+    from mech.planar import FourBar, grashof
+
+    theta = np.linspace(0.0, 2.0 * np.pi, n)
+    poses, rel = [], {j: [] for j in "ABCD"}
+    for branch in ((1,) if grashof(a, b, c, d).grashof else (1, -1)):
+        pose = FourBar(a, b, c, d, branch=branch).solve(theta)
+        ok = pose.valid
+        A, D = 0j, complex(d)
+        B, C = pose.B[ok], pose.C[ok]
+        poses.append((theta[ok], B, C))
+        rel["A"].append(np.angle((B - A) / (D - A)))
+        rel["B"].append(np.angle((C - B) / (A - B)))
+        rel["C"].append(np.angle((D - C) / (B - C)))
+        rel["D"].append(np.angle((A - D) / (C - D)))
+    swept = {}
+    for j, parts in rel.items():
+        t = np.sort(np.mod(np.degrees(np.concatenate(parts)), 360.0))
+        gaps = np.diff(np.concatenate([t, [t[0] + 360.0]]))
+        swept[j] = 360.0 - gaps.max()
+    return poses, swept
+
+
+def plot_joint_types(ax, a, b, c, d, *, every=12, title=None):
+    """Draw a chain at poses spread over its whole motion, marking each joint filled when
+    `grashof` counts it fully rotatable and open when it rocks, with the angle the joint
+    sweeps in a simulation (Fig. 2-6)."""
+    from mech.planar import grashof
+
+    r = grashof(a, b, c, d)
+    colour = KIND_COLORS[r.kind]
+    poses, swept = joint_sweeps(a, b, c, d)
+    theta, B, C = poses[0]
+    picks = np.linspace(0, len(theta) - 1, every).astype(int)
+    for k in picks:
+        z = np.array([0j, B[k], C[k], complex(d)])
+        ax.plot(z.real, z.imag, "-", color=colour, alpha=0.35, lw=1.2)
+    for _, Bb, Cb in poses:
+        ax.plot(Bb.real, Bb.imag, ":", color="0.4", lw=0.8)
+        ax.plot(Cb.real, Cb.imag, ":", color="0.4", lw=0.8)
+    k = picks[len(picks) // 3]
+    last = {"A": 0j, "B": complex(B[k]), "C": complex(C[k]), "D": complex(d)}
+    z = np.array(list(last.values()))
+    ax.plot(z.real, z.imag, "-", color=colour, lw=2.4)
+    for name, p in last.items():
+        full = name in r.revolving
+        ax.plot([p.real], [p.imag], "o", ms=9, mec="black", mfc="black" if full else "white", zorder=4)
+        ax.annotate(f"{name}: {swept[name]:.0f}°", (p.real, p.imag), textcoords="offset points",
+                    xytext=(6, 6), fontsize=9)
+    ax.plot([0.0, d], [0.0, 0.0], color="black", lw=2.5)
+    ax.set_aspect("equal")
+    ax.grid(alpha=0.2)
+    ax.set_title(title or f"{r.kind} ({a:g}, {b:g}, {c:g}, {d:g})", fontsize=10)
+    return ax
+
+
+def plot_prismatic_chain(ax, solution, indices, *, title=None):
+    """The R-P-P-P chain (Fig. 2-12a) at several poses of a `LinkageSolution`, faint to solid.
+
+    The frame carries the sliding lines of DA (through D) and of BC (through C), dashed;
+    AB is drawn from A to B, DA from D's line point to A, BC from C to B. The angle DAB at
+    the revolute A, from the solved points, is written at A.
+    """
+    P = {k: np.asarray(v) for k, v in solution.points.items()}
+    D, C = complex(P["D"].flat[0]), complex(P["C"].flat[0])
+    u_da = complex(np.asarray(solution.direction("DA")).flat[0])
+    u_bc = complex(np.asarray(solution.direction("BC")).flat[0])
+    far = max(abs(P["A"]).max(), abs(P["B"] - C).max()) * 1.15
+    for base, u in ((D, u_da), (C, u_bc)):
+        ax.plot([base.real, (base + far * u).real], [base.imag, (base + far * u).imag], "--", color="0.55", lw=1.0)
+    ax.plot([D.real, C.real], [D.imag, C.imag], color="black", lw=2.5)
+    for k, i in enumerate(indices):
+        alpha = 0.3 + 0.7 * (k + 1) / len(indices)
+        A, B = complex(P["A"][i]), complex(P["B"][i])
+        for z0, z1, colour in ((D + 0.35 * (A - D), A, "tab:blue"), (A, B, "tab:green"), (C + 0.35 * (B - C), B, "tab:purple")):
+            ax.plot([z0.real, z1.real], [z0.imag, z1.imag], color=colour, lw=2.4, alpha=alpha,
+                    solid_capstyle="round")
+        ax.plot([A.real], [A.imag], "o", ms=6, mfc="white", mec="black", alpha=alpha, zorder=4)
+        at_a = abs(np.degrees(np.angle((B - A) / (D - A))))
+        ax.annotate(f"∠DAB = {at_a:.4f}°", (A.real, A.imag), textcoords="offset points", xytext=(8, -6),
+                    fontsize=8, alpha=alpha)
+    for name, z in (("D", D), ("C", C)):
+        ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(-4, -14))
     ax.set_aspect("equal")
     ax.grid(alpha=0.2)
     if title:

@@ -7,7 +7,8 @@ at import.
 
 import numpy as np
 
-__all__ = ["centre_diagram", "centrode_diagram", "velocity_arrows"]
+__all__ = ["centre_diagram", "centrode_diagram", "circle", "contact_normal", "velocity_arrows",
+           "velocity_normals"]
 
 
 def _axes(ax, size=(7.0, 5.6)):
@@ -190,4 +191,30 @@ def velocity_arrows(ax, points, velocities, *, scale=1.0, colour="tab:orange", l
     if label:
         ax.plot([], [], color=colour, lw=1.8, label=label)
         ax.legend(loc="lower left", fontsize=8)
+    return ax
+
+
+def velocity_normals(ax, points, velocities, *, length, colour="0.4", label=None):
+    """Lines through `points` at right angles to `velocities`, ``length`` long each way
+    (Fig. 2-42): they meet at the instant centre, or are parallel when it is at infinity."""
+    for z, v in zip(points, velocities):
+        z, v = complex(z), complex(v)
+        n = 1j * v / abs(v)
+        ends = z + np.array([-length, length]) * n
+        ax.plot(ends.real, ends.imag, ls="-.", color=colour, lw=0.9, zorder=1, label=label)
+        label = None
+    return ax
+
+
+def circle(centre, radius, n=181):
+    """Points of a circle as a closed polyline of complex numbers (a disc cam's profile)."""
+    return complex(centre) + radius * np.exp(1j * np.linspace(0.0, 2.0 * np.pi, n))
+
+
+def contact_normal(ax, contact, normal, *, length, colour="tab:red", label="common normal"):
+    """The common normal of a higher pair through its contact point (Figs. 2-43, 2-48)."""
+    contact, normal = complex(contact), complex(normal)
+    ends = contact + np.array([-length, length]) * normal / abs(normal)
+    ax.plot(ends.real, ends.imag, color=colour, lw=1.0, ls=(0, (6, 2)), zorder=1, label=label)
+    ax.plot([contact.real], [contact.imag], "s", color=colour, ms=4, zorder=5)
     return ax

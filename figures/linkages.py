@@ -7,7 +7,7 @@ Nothing is computed or drawn at import.
 
 import numpy as np
 
-__all__ = ["draw_linkage", "draw_paths", "gallery", "assembly_modes", "stroke_plot"]
+__all__ = ["draw_linkage", "draw_paths", "gallery", "assembly_modes", "stroke_plot", "dwell_press"]
 
 LINK = dict(color="black", lw=2.0, solid_capstyle="round", zorder=2)
 
@@ -155,3 +155,28 @@ def stroke_plot(ax, theta, curves, *, ylabel="ram velocity"):
     ax.set_xlim(0, 360)
     ax.legend(fontsize=7)
     return ax
+
+
+def dwell_press(axes, linkage, solution, theta, index, *, pin, slider, centre, radius, window):
+    """A press whose punch dwells (Fig. 2-24c): left, the linkage at pose ``index`` with the
+    path of the coupler point ``pin``, the circle of radius ``radius`` about ``centre`` that
+    a stretch of it follows (dashed), and the punch ``slider``; right, the punch's position
+    along its guide against the crank angle, with the crank angles ``window`` (degrees)
+    shaded."""
+    left, right = axes
+    draw_paths(left, solution, [pin])
+    t = np.linspace(0.0, 2.0 * np.pi, 181)
+    ring = complex(centre) + radius * np.exp(1j * t)
+    left.plot(ring.real, ring.imag, ls="--", color="0.5", lw=0.9, label=f"circle of radius {radius:g} about O")
+    draw_linkage(left, linkage, solution, index)
+    left.legend(fontsize=7, loc="lower right")
+    y = np.asarray(solution.points[slider]).imag
+    deg = np.degrees(theta)
+    right.plot(deg, y - y.min(), color="tab:red")
+    right.axvspan(window[0], window[1], color="tab:green", alpha=0.15, label="dwell")
+    right.set_xlabel("crank angle θ (deg)")
+    right.set_ylabel(f"height of {slider} above its lowest (mm)")
+    right.set_xticks(np.arange(0, 361, 60))
+    right.grid(alpha=0.3)
+    right.legend(fontsize=8)
+    return axes

@@ -163,6 +163,16 @@ def test_exercise_2_29_huge_input_names_phi(phi2):
         mech.exercises.get("2-29").solve(phi2=phi2)
 
 
+@pytest.mark.parametrize("l", [3e15, 1e154, 1e300])
+def test_exercise_2_26_huge_rod_names_l(l):
+    """A rod so much longer than the crank that the pose no longer closes in floating point
+    is reported by the exercise's own names, not as an unnamed pose."""
+    import mech.exercises
+    from mech import AssemblyError
+    with pytest.raises(AssemblyError, match=r"Expected `l` .*`r`.*l=" + re.escape(repr(l)) + ", r=100.0"):
+        mech.exercises.get("2-26").solve(l=l)
+
+
 def test_grashof_huge_link_shows_true_sum():
     """The sum of the other three beside a 1e300 is 105.0, not 1e300 - 1e300 = 0.0."""
     from mech.planar import grashof

@@ -219,8 +219,8 @@ def test_front_matter_declares_a_number(tmp_path):
     clone = _copy(tmp_path)
     page = clone / "derivations" / "planar" / "steering_trapezoid.md"
     text = page.read_text(encoding="utf-8")
-    page.write_text(text.replace("---\n", "---\ntextbook:\n  - fig 2-6\n", 1), encoding="utf-8")
-    entry = build_index(clone)[("fig", "2-6")]
+    page.write_text(text.replace("---\n", "---\ntextbook:\n  - fig 2-13\n", 1), encoding="utf-8")
+    entry = build_index(clone)[("fig", "2-13")]
     assert entry.covered and entry.stale
     assert entry.role("derivation")[0].how == "front matter"
 

@@ -542,6 +542,9 @@ CASES = {
     "planar.watt_transmission_angles": E(lambda: pl.watt_transmission_angles,
                                          solution=pl.watt_six_bar().solve(0.0)),
     "planar.wedge_press": E(lambda: pl.wedge_press, {"lam": "real", "phi": "real"}, lam=0.17, phi=0.1),
+    "planar.wedge_press_forces": E(lambda: pl.wedge_press_forces,
+                                   {"Q": "real", "lam": "real", "phi": "real", "release": "bool"},
+                                   Q=1000.0, lam=0.17, phi=0.1, release=False),
     "planar.static_forces#couples": E(lambda: pl.static_forces, {"couples": ("real", lambda v: {"rocker": v})},
                                       solution=_fourbar_solution(), forces={"C": -10}, couples={"rocker": 1.0}),
     "planar.pressure_angle#direction": E(lambda: pl.pressure_angle, {"force": "point"},
@@ -814,7 +817,7 @@ RECORDS = {
         "LinkageSolution", "OldhamPose", "Polygon", "RelativeMotion", "RotatingGuideBarPose",
         "ScotchYokePose", "ScrewResult", "Slide", "SliderCrankLimits", "SliderCrankPose",
         "SliderCrankSeries", "StaticForces", "Stroke", "TangentPose", "TenBarPose", "Term", "TrammelPose",
-        "TransmissionExtremes", "TriadPose", "WedgePress")},
+        "TransmissionExtremes", "TriadPose", "WedgePress", "WedgePressForces")},
     **{f"spatial.{n}": "result record built by the package" for n in (
         "AssemblyRange", "ChainPose", "DoubleJointPose", "RCCCPose", "RSSRPose")},
     **{f"spherical.{n}": "result record built by the package" for n in (

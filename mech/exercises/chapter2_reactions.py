@@ -26,6 +26,7 @@ import math
 
 import numpy as np
 
+from mech._errors import AssemblyError
 from mech._validate import finite_result, naming, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.exercises.chapter2_analysis import _around
@@ -284,6 +285,11 @@ def _solve_2_26(p):
     for deg in THETAS_2_26:
         lk, x, dx = linkage_2_26(p, theta=deg)
         sol = lk.solve(x, order=1, omega=dx)            # the crank turns counter-clockwise at 1 rad/s
+        if not bool(np.all(sol.valid)):
+            # with l many orders longer than r the crank is lost in the rounding of l: the pose
+            # computed from the closed form no longer closes in floating point
+            raise AssemblyError(f"Expected `l` short enough beside `r` that the pose at θ = {deg:g}° closes "
+                                f"in floating point (`l`/`r` below about 1e13), got l={length!r}, r={r!r}")
         sf = static_forces(sol, couples={"crank": -Mr}, rho=rho, mu=mu)
         sf0 = static_forces(sol, couples={"crank": -Mr})
         if bool(np.any(sf.self_locking)):

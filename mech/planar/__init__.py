@@ -83,6 +83,7 @@ from mech.planar.forces import (
     StaticForces,
     TransmissionExtremes,
     WedgePress,
+    WedgePressForces,
     as_linkage,
     collar_friction_radius,
     curved_contact_mu,
@@ -130,6 +131,7 @@ from mech.planar.forces import (
     vgroove_mu,
     watt_transmission_angles,
     wedge_press,
+    wedge_press_forces,
 )
 from mech.planar.special import (
     EllipticTrammel,
@@ -213,6 +215,7 @@ __all__ = [
     "TriadPose",
     "TriadSixBar",
     "WedgePress",
+    "WedgePressForces",
     "acceleration_image",
     "acceleration_polygon",
     "as_linkage",
@@ -291,4 +294,5 @@ __all__ = [
     "watt_six_bar",
     "watt_transmission_angles",
     "wedge_press",
+    "wedge_press_forces",
 ]

@@ -20,6 +20,7 @@ from mech.planar.forces._efficiency import (
     series_efficiency,
     spreading_wedge_force,
     wedge_press,
+    wedge_press_forces,
 )
 
 RNG = np.random.default_rng(6003)
@@ -218,3 +219,36 @@ def test_eccentric_clamp_friction_angle_below_right_angle(phi):
     """A friction angle atan(mu) is below pi/2; phi = 1e300 returned NaN without a word."""
     with pytest.raises(ValueError, match=r"Expected `phi` in \[0, pi/2\)"):
         eccentric_clamp_max_angle(10.0, 40.0, 1.0, phi)
+
+
+def test_fig_2_68_wedge_press_force_polygons_close():
+    """Fig. 2-68b: the forces on each wedge close a polygon, the push matches the four
+    free-body equations solved above and (2-25), and |R23| = Q cos(phi) / cos(lam + 2 phi)
+    as the text's polygon gives (pressing; phi -> -phi on the release)."""
+    for _ in range(50):
+        lam, mu, Q = RNG.uniform(0.05, 0.9), RNG.uniform(0.0, 0.25), RNG.uniform(10.0, 5000.0)
+        phi = math.atan(mu)
+        for release, sense in ((False, 1), (True, -1)):
+            if (not release and lam + 2 * phi >= 1.5) or (release and lam <= phi):
+                continue
+            f = wedge_press_forces(Q, lam, phi, release=release)
+            assert abs(f.P + f.R12 + f.R32) < 1e-12 * Q
+            assert abs(f.Q + f.R23 + f.R13) < 1e-12 * Q
+            assert f.R23 == -f.R32 and f.Q == -1j * Q and f.P.imag == 0
+            assert f.P.real == pytest.approx(Q * _press_free_bodies(lam, mu, sense), rel=1e-10, abs=1e-12 * Q)
+            assert abs(f.R23) == pytest.approx(Q * math.cos(phi) / math.cos(lam + 2 * sense * phi), rel=1e-12)
+            # each total reaction leans by phi from its face's normal
+            normal = math.sin(lam) + 1j * math.cos(lam)
+            assert abs(np.angle(f.R23 / normal)) == pytest.approx(phi, abs=1e-12)
+            assert abs(np.angle(f.R12 / 1j)) == pytest.approx(phi, abs=1e-12)
+            assert abs(np.angle(f.R13 / -1)) == pytest.approx(phi, abs=1e-12)
+    w = wedge_press(math.radians(10), math.atan(0.1))
+    f = wedge_press_forces(1000.0, math.radians(10), math.atan(0.1))
+    assert f.P.real == pytest.approx(1000.0 * w.forward_ratio, rel=1e-13)
+
+
+def test_wedge_press_forces_refuses_a_press_that_cannot_move():
+    with pytest.raises(ValueError, match="Expected `lam` \\+ 2 `phi` < pi/2"):
+        wedge_press_forces(1.0, math.radians(80), math.radians(6))
+    with pytest.raises(ValueError, match="Expected `lam` > `phi` on the release"):
+        wedge_press_forces(1.0, math.radians(5), math.radians(6), release=True)

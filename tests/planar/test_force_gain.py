@@ -174,3 +174,34 @@ def test_mechanical_advantage_bad_inputs():
         fourbar_dead_points(30, 70, -60, 80)
     with pytest.raises(ValueError, match="Expected `lever` > 0, got -1.0"):
         hand_press(lever=-1)
+
+
+def test_fig_2_83_slotter_lever_gain_by_ram_position_derivative():
+    """Fig. 2-83: the slotter (`shaper_watt` with E between the bar's pivot and the crank).
+    Its ram force per crank moment equals 1 / (dx_F / dtheta), with x_F from an independent
+    construction differentiated by mpmath at 50 digits; the gain is about DB / DE times the
+    shaper layout's."""
+    import mpmath
+
+    from mech.planar import mechanical_advantage, shaper_watt
+
+    mpmath.mp.dps = 50
+
+    def ram_x(t, r, crank=60, frame=200, rod=100):
+        B = mpmath.mpc(crank * mpmath.cos(t), crank * mpmath.sin(t))
+        u = (B + frame * 1j) / abs(B + frame * 1j)
+        E = -frame * 1j + r * u
+        h = r - frame                                   # the ram's line through E's top
+        return E.real + mpmath.sqrt(rod**2 - (h - E.imag) ** 2)
+
+    theta = np.linspace(0.1, 6.2, 13)
+    gains = {}
+    for r in (80.0, 320.0):
+        sol = shaper_watt(crank=60.0, frame=200.0, bar=r, rod=100.0).solve(theta, order=1)
+        ma = mechanical_advantage(sol, "crank", ("F", 1.0))
+        for t, m in zip(theta, ma):
+            x_rate = mpmath.diff(lambda s: ram_x(s, r), t)
+            assert float(m) == pytest.approx(float(1 / x_rate), rel=1e-9)
+        gains[r] = np.abs(ma)
+    ratio = gains[80.0] / gains[320.0]
+    assert ratio.min() > 3.8 and ratio.max() < 4.2

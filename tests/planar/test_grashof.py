@@ -360,3 +360,19 @@ def test_kind_intervals_scale_invariant(scale):
         assert (s.closed_low, s.closed_high) == (r.closed_low, r.closed_high)
         assert s.low == pytest.approx(r.low * scale, rel=1e-12)
         assert s.high == pytest.approx(r.high * scale, rel=1e-12)
+
+
+def test_fig_2_6_revolving_joints_by_the_diagonal_ranges():
+    """Fig. 2-6: the joints `grashof` counts fully rotatable, for the figure's three chains,
+    against the reachable-region test done directly: the joint between links x and y turns
+    fully when the diagonal across it, which ranges over [|x - y|, x + y] as the joint
+    turns, always fits the other two links u, v: |u - v| <= |x - y| and x + y <= u + v."""
+    from mech.planar import grashof
+
+    expected = {(10, 40, 30, 35): {"A", "B"}, (20, 40, 20, 40): {"A", "B", "C", "D"},
+                (30, 45, 35, 25): set()}
+    for (a, b, c, d), text in expected.items():
+        sides = {"A": ((a, d), (b, c)), "B": ((a, b), (c, d)), "C": ((b, c), (a, d)), "D": ((c, d), (a, b))}
+        direct = {j for j, ((x, y), (u, v)) in sides.items() if abs(u - v) <= abs(x - y) and x + y <= u + v}
+        assert direct == text
+        assert set(grashof(a, b, c, d).revolving) == text

@@ -141,3 +141,23 @@ def test_from_swing_bad_input():
         GuideBar.from_swing(1.0, np.pi)
     with pytest.raises(ValueError, match="Expected `swing` > 0"):
         GuideBar.from_swing(1.0, -0.1)
+
+
+def test_fig_2_73_guide_bar_transmission_angle_constant_in_a_sweep():
+    """Fig. 2-73: on the quick-return guide-bar the bar's point under the block moves along
+    the bar's normal at every crank angle (alpha = 0, gamma = 90 deg). The bar's angular
+    velocity is checked against an mpmath derivative of the angle of B - D at 50 digits."""
+    from mech.planar import quick_return_guide_bar
+
+    theta = np.linspace(0.0, 2 * np.pi, 73)
+    sol = quick_return_guide_bar().solve(theta, order=1)
+    B, D = sol.points["B"], sol.points["D"]
+    v_bar = 1j * sol.omegas["bar"] * (B - D)
+    normal = 1j * sol.direction("bar")
+    alpha = np.abs(np.angle(v_bar / normal))
+    alpha = np.minimum(alpha, np.pi - alpha)
+    assert alpha.max() < 1e-12
+    mpmath.mp.dps = 50
+    for t, w in zip(theta[::6], sol.omegas["bar"][::6]):
+        exact = mpmath.diff(lambda x: mpmath.atan2(124 * mpmath.sin(x) + 400, 124 * mpmath.cos(x)), t)
+        assert w == pytest.approx(float(exact), rel=1e-12, abs=1e-15)

@@ -309,3 +309,71 @@ def test_instant_centres_degenerate_pose_raises():
         instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): 1.0})
     with pytest.raises(ValueError, match="Expected `undefined` to be 'raise' or 'nan', got 'x'"):
         instant_centres(4, direct, undefined="x")
+
+
+def test_fig_2_42_lower_pair_centres_from_relative_velocities():
+    """Fig. 2-42: the normals of the relative velocities meet at the pin (revolute) and are
+    parallel, perpendicular to the guide (prismatic). Velocities from the analytic loop
+    derivatives of `FourBar` and `SliderCrank`, not from the centres."""
+    linkage = FourBar(10, 40, 30, 35)
+    direct, fields, pose = _fourbar_fields(linkage, 2.8, -3.0)
+    C = complex(pose.C)
+    z1, z2 = (C + 35) / 2 + 5j, 30 - 12j                     # two points of the rocker's plane
+    v1, v2 = (complex(fields[3](z) - fields[2](z)) for z in (z1, z2))
+    # the normals z1 + s i v1 and z2 + t i v2 meet where
+    s, t = np.linalg.solve([[(-1j * v1).real, (1j * v2).real], [(-1j * v1).imag, (1j * v2).imag]],
+                           [(z1 - z2).real, (z1 - z2).imag])
+    meet = z1 + s * 1j * v1
+    centres = instant_centres(4, direct)
+    assert meet == pytest.approx(complex(centres[2, 3].point), abs=1e-9)
+    assert abs(complex(fields[3](C) - fields[2](C))) < 1e-12
+
+    slider = SliderCrank(30, 80)
+    sp = slider.solve(0.8, order=1, omega=2.0)
+    # the block translates: every point moves with the pin's velocity sp.v along the guide
+    centres = instant_centres(4, {(1, 4): 0j, (1, 2): sp.B, (2, 3): sp.C, (3, 4): prismatic(1.0)})
+    assert centres[3, 4].at_infinity
+    assert abs(complex(centres[3, 4].direction).real) < 1e-15      # perpendicular to x
+    v_block = centre_velocities(centres, frame=4, driver=1, omega=2.0).point_velocity(3, sp.C + 7 - 3j)
+    assert complex(v_block) == pytest.approx(complex(sp.v), rel=1e-12)
+
+
+def test_fig_2_43_cam_rocker_centre_on_common_normal_and_frame_line():
+    """Fig. 2-43: a disc cam (about A) and a knife-edge rocker (about D). The centre P12 from
+    the common normal and Kennedy's line AD equals the point of AD where both links have
+    the same velocity, omega1 (P - A) = omega2 (P - D), with omega2 taken by a central
+    difference of the rocker angle from an independent circle intersection."""
+    e, R, L, d, omega1 = 12.0, 30.0, 50.0, 60.0, 2.5
+
+    def tip(theta):
+        K = e * np.exp(1j * theta)
+        # circle |T - K| = R meets circle |T - d| = L; the tip above the line K D
+        u = (d - K) / abs(d - K)
+        m = abs(d - K)
+        x = (R**2 - L**2 + m**2) / (2 * m)
+        return K, K + u * (x + 1j * np.sqrt(R**2 - x**2))
+
+    for theta in np.radians([10.0, 40.0, 100.0, 200.0, 300.0]):
+        K, T = tip(theta)
+        h = 1e-6
+        psi = [np.angle(tip(theta + s * h)[1] - d) for s in (1, -1)]
+        omega2 = omega1 * (psi[0] - psi[1]) / (2 * h)
+        expected = omega2 * d / (omega2 - omega1)
+        centres = instant_centres(3, {(1, 3): 0j, (2, 3): d, (1, 2): higher_pair(T, T - K)})
+        P12 = complex(centres[1, 2].point)
+        assert P12 == pytest.approx(expected, rel=1e-7, abs=1e-7)
+        # and it lies on the common normal K T
+        assert abs(((P12 - K) * np.conj(T - K)).imag) < 1e-9 * abs(T - K) * max(1, abs(P12 - K))
+
+
+def test_fig_2_48_example_2_7_centre_where_normal_meets_ax():
+    """Fig. 2-48: P12 is where the normal through the contact and the disc's centre meets the
+    line through A perpendicular to the follower's path (here the x axis)."""
+    e, R, theta = 12.0, 30.0, np.radians(40.0)
+    K = e * np.exp(1j * theta)
+    T = 1j * (K.imag + np.sqrt(R**2 - K.real**2))
+    centres = instant_centres(3, {(1, 3): 0j, (2, 3): prismatic(1j), (1, 2): higher_pair(T, T - K)})
+    # the line T + s (K - T) crosses y = 0 at s = T.imag / (T - K).imag
+    crossing = T + T.imag / (T - K).imag * (K - T)
+    assert complex(centres[1, 2].point) == pytest.approx(crossing, abs=1e-12)
+    assert crossing.real == pytest.approx(11.675510, abs=1e-6)

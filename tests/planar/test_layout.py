@@ -16,7 +16,8 @@ import mech.planar
 
 SUBJECTS = ("structure", "kinematics", "coupler", "forces", "special")
 
-# sorted(mech.planar.__all__) before the modules were grouped (issue 12, item 8).
+# sorted(mech.planar.__all__) before the modules were grouped (issue 12, item 8), plus the
+# names added since: WedgePressForces and wedge_press_forces (issue 18, Fig. 2-68).
 PLANAR_ALL = [
     "AssemblyError", "AssemblyInterval", "Centre", "CentrodeSegment", "Cognate", "CognatePose",
     "Cognates", "CouplerCentrodes", "CouplerDashes", "DeadPoints", "EllipticTrammel", "Equation",
@@ -27,7 +28,7 @@ PLANAR_ALL = [
     "RotatingGuideBarPose", "ScotchYoke", "ScotchYokePose", "ScrewJack", "ScrewResult", "Slide",
     "SliderCrank", "SliderCrankLimits", "SliderCrankPose", "SliderCrankSeries", "StaticForces",
     "Stroke", "SwingingBlock", "TangentMechanism", "TangentPose", "TenBarPose", "Term",
-    "TrammelPose", "TransmissionExtremes", "TriadPose", "TriadSixBar", "WedgePress",
+    "TrammelPose", "TransmissionExtremes", "TriadPose", "TriadSixBar", "WedgePress", "WedgePressForces",
     "acceleration_image", "acceleration_polygon", "as_linkage", "centre_count",
     "centre_velocities", "cognates", "coincident_motion", "collar_friction_radius",
     "coupler_centrodes", "coupler_dashes", "curved_contact_mu", "design_check",
@@ -47,7 +48,7 @@ PLANAR_ALL = [
     "step_ratio", "stephenson_six_bar", "thread_friction_angle", "thrust_friction_moment",
     "time_ratio", "total_reaction", "transmission_angle", "transmission_extremes",
     "two_force_tilt_angle", "velocity_image", "velocity_polygon", "vgroove_mu", "watt_six_bar",
-    "watt_transmission_angles", "wedge_press",
+    "watt_transmission_angles", "wedge_press", "wedge_press_forces",
 ]
 
 PLANAR_DIR = pathlib.Path(mech.planar.__file__).parent
@@ -68,9 +69,9 @@ def test_planar_all_unchanged():
 
 
 def test_pinned_list_is_sorted_and_complete():
-    """The pin itself: sorted, no duplicates, 133 names (so a lost name cannot hide in it)."""
+    """The pin itself: sorted, no duplicates, 135 names (so a lost name cannot hide in it)."""
     assert PLANAR_ALL == sorted(set(PLANAR_ALL))
-    assert len(PLANAR_ALL) == 133
+    assert len(PLANAR_ALL) == 135
 
 
 @pytest.mark.parametrize("name", [n for n in PLANAR_ALL if n != "AssemblyError"])

@@ -428,3 +428,55 @@ def _dwell_F():
     g = 1.15
     along = (2.51**2 - 1.47**2 + g * g) / (2 * g)
     return complex(along, -math.sqrt(2.51**2 - along**2))
+
+
+def test_fig_2_24c_dwell_press_punch_rests_while_m_follows_the_arc():
+    """Fig. 2-24c (dimensions chosen on the linkages page): the punch N of the dwell press,
+    from `Linkage`, against an independent construction (circle intersections for C, the
+    coupler point M, and N on the vertical through O at MN from M); N moves about 0.11 mm
+    over the 90 deg of crank turn where M follows the arc, out of a 31.9 mm stroke."""
+    from mech.planar import Guide
+
+    O, R, D = -19.43 + 1.97j, 30.34, 70.98j
+    press = (Linkage({"A": 0, "D": D, "O": O}).crank("crank", pivot="A", tip="B", length=20)
+             .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C", lengths=(76.09, 85.77), branch=1)
+             .point("M", link="coupler", at=20.47 + 19.68j)
+             .rrp(("rod", "punch"), pin="M", guide=Guide("ground", through="O", angle=np.pi / 2),
+                  joint="N", length=R, branch=1))
+    theta = np.linspace(0.0, 2 * np.pi, 1441)
+    N = press.solve(theta).points["N"]
+    B = 20 * np.exp(1j * theta)
+    m = np.abs(D - B)
+    u = (D - B) / m
+    along = (76.09**2 - 85.77**2 + m**2) / (2 * m)
+    C = B + u * (along + 1j * np.sqrt(76.09**2 - along**2))     # left of B -> D
+    M = B + (20.47 + 19.68j) * (C - B) / np.abs(C - B)
+    x = M.real - O.real
+    y_rel = M.imag - O.imag + np.sqrt(R**2 - x**2)
+    assert np.allclose(N.real, O.real, atol=1e-12)
+    assert np.allclose(N.imag - O.imag, y_rel, atol=1e-9)
+    deg = np.degrees(theta)
+    dwell = (deg >= 210) & (deg <= 300)
+    assert np.ptp(y_rel[dwell]) == pytest.approx(0.110, abs=0.002)
+    assert np.ptp(y_rel) == pytest.approx(31.898, abs=0.002)
+    assert np.abs(np.abs(M[dwell] - O) - R).max() < 0.051
+
+
+def test_fig_2_12a_rppp_chain_revolute_never_turns():
+    """Fig. 2-12a: in the R-P-P-P chain (frame CD; DA slides at 60 deg through D, BC at
+    120 deg through C, AB in a guide of BC at 100 deg to it) no link turns, so the
+    revolute A keeps its angle, and B moves along its line by the sine rule of the
+    triangle of the three sliding directions: sin(20 deg) / sin(80 deg) times A's move."""
+    rppp = (Linkage({"D": 0j, "C": 100 + 0j})
+            .slider("DA", guide=Guide("ground", through="D", angle=np.radians(60.0)), point="A")
+            .rpp(("AB", "BC"), pin="A", guide=Guide("ground", through="C", angle=np.radians(120.0)),
+                 angle=np.radians(100.0), point="B"))
+    s = np.linspace(20.0, 60.0, 41)
+    sol = rppp.solve(s)
+    A, B = sol.points["A"], sol.points["B"]
+    assert np.allclose(A, s * np.exp(1j * np.radians(60.0)), atol=1e-12)
+    angle_a = np.angle((B - A) / (0 - A))
+    assert np.ptp(angle_a) < 1e-12
+    assert abs(np.degrees(angle_a[0])) == pytest.approx(160.0, abs=1e-10)
+    moved = np.abs(B - B[0])
+    assert np.allclose(moved, (s - s[0]) * np.sin(np.radians(20.0)) / np.sin(np.radians(80.0)), atol=1e-10)

@@ -380,3 +380,41 @@ def test_example_2_13_chosen_data_by_hand_free_bodies():
     assert float(M_d) == pytest.approx(-49754.3, abs=0.05)
     assert float(M_d0) == pytest.approx(-43930.3, abs=0.05)
     assert float(M_d0 / M_d) == pytest.approx(0.8829, abs=5e-5)
+
+
+def test_fig_2_85_pin_off_the_guide_moves_the_normal_force():
+    """Fig. 2-85: a slider whose pin C is e above the face that carries the resistance W.
+    The block's own equilibrium (forces and moments about C, worked here from the rod's
+    push, W and the guide's force) puts the guide's normal force at W e / N from the pin,
+    which is where `static_forces` says it acts; for e = 0 it passes through the pin."""
+    from mech.planar import Guide, Linkage, static_forces
+
+    theta = np.radians(np.arange(10.0, 360.0, 20.0))
+    for e in (0.0, 15.0):
+        lk = (Linkage({"A": 0, "O": 0j}).crank("crank", pivot="A", tip="B", length=30)
+              .rrp(("rod", "slider"), pin="B", guide=Guide("ground", through="O", angle=0.0), joint="C",
+                   length=100, branch=1)
+              .point("G", link="slider", at=-1j * e))
+        sol = lk.solve(theta, order=1)
+        W = -100.0 * np.sign(sol.velocities["C"].real) + 0j
+        sf = static_forces(sol, {("G", "slider"): W})
+        rod = sf.reactions["rod", "slider"]
+        N = sf.reactions["ground", "slider"]
+        C = sol.points["C"]
+        assert np.abs(rod + W + N).max() < 1e-9
+        assert np.abs(N.real).max() < 1e-9                      # no friction: normal to the guide
+        # moments about C: W at C - e j, N at the reported point; the rod's push passes through C
+        shift = -(np.imag(np.conj(-1j * e) * W)) / N.imag
+        line = sf.lines["ground", "slider"]
+        assert np.allclose((line - C).real, shift, rtol=1e-9, atol=1e-9)
+        assert np.allclose(line.imag, 0.0, atol=1e-12)
+        if e == 0:
+            assert np.abs(line - C).max() < 1e-9
+        else:
+            # end forces of a 40-long base by the lever rule: the sum is 2 W e / 40 once the
+            # line lies outside the base
+            n = N.imag
+            ends = np.abs(n / 2 - n * shift / 40), np.abs(n / 2 + n * shift / 40)
+            outside = np.abs(shift) > 20
+            assert outside.all()
+            assert np.allclose(ends[0] + ends[1], 2 * 100 * e / 40, rtol=1e-12)

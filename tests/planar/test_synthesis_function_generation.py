@@ -458,3 +458,35 @@ def test_function_generator_read_only():
         g.lengths = (1, 2, 3, 4)
     with pytest.raises(ValueError, match="Expected `y`"):
         g.structural_error([0.1])
+
+
+def test_fig_2_27_second_lg_generator_closes_its_loop_at_the_pairs():
+    """Fig. 2-27: the second four-bar for y = lg x (input 90 deg from 60 deg, output 60 deg
+    clockwise from 260 deg, Chebyshev points). At each precision pair the pins placed by the
+    prescribed angles are exactly a coupler length apart (loop closure, worked here), and
+    an independent circle intersection over the range keeps the error in y under 0.051."""
+    from mech.planar.synthesis import FunctionMap, chebyshev_spacing, precision_pairs
+
+    nodes = chebyshev_spacing(1.0, 10.0, 3)
+    task = FunctionMap(np.log10, (1.0, 10.0), np.radians(90.0), -np.radians(60.0))
+    X, Y = task.rotations(nodes)
+    g, = precision_pairs(X, Y, theta0=np.radians(60.0), psi0=np.radians(260.0), d=100.0, target=task)
+    a, b, c, d = g.lengths
+    B = a * np.exp(1j * (np.radians(60.0) + X))
+    C = d + c * np.exp(1j * (np.radians(260.0) + Y))
+    assert np.abs(np.abs(C - B) - b).max() < 1e-10 * d
+    assert g.covers_range
+    # independent analysis: C where the circles about B (radius b) and D (radius c) meet,
+    # on the side of the line B D that holds the first precision position
+    x = np.linspace(1.0, 10.0, 2001)
+    Bx = a * np.exp(1j * (np.radians(60.0) + task.input_rotation(x)))
+    m = np.abs(d - Bx)
+    u = (d - Bx) / m
+    along = (b**2 - c**2 + m**2) / (2 * m)
+    side = np.sign(np.imag(np.conj(d - B[0]) * (C[0] - B[0])))
+    Cx = Bx + u * (along + 1j * side * np.sqrt(b**2 - along**2))
+    turned = np.unwrap(np.angle((Cx - d) * np.exp(-1j * np.radians(260.0))))  # from the start angle
+    y = turned / task.output_scale                                             # y = 0 at the start
+    err = np.abs(y - np.log10(x))
+    assert 0.045 < err.max() < 0.051
+    assert np.allclose(np.asarray(g.lengths) / d, [0.6913, 1.2300, 0.5213, 1.0], atol=5e-5)

@@ -23,7 +23,7 @@ from mech.planar.synthesis import (
     simulate_quick_return,
     slider_crank_family,
 )
-from mech.planar.synthesis._quick_return_tables import (
+from mech.planar.synthesis._quick_return_search import (
     PRINTED_TABLE_2_3,
     PRINTED_TABLE_2_4,
     PRINTED_TABLE_2_5,

@@ -8,6 +8,7 @@ static force analysis of a solved linkage with and without friction (F60 onwards
 
 from mech.planar.forces._efficiency import (
     WedgePress,
+    WedgePressForces,
     eccentric_clamp_locks,
     eccentric_clamp_max_angle,
     efficiency,
@@ -19,6 +20,7 @@ from mech.planar.forces._efficiency import (
     series_efficiency,
     spreading_wedge_force,
     wedge_press,
+    wedge_press_forces,
 )
 from mech.planar.forces._force_gain import (
     DeadPoints,
@@ -78,6 +80,7 @@ __all__ = [
     "StaticForces",
     "TransmissionExtremes",
     "WedgePress",
+    "WedgePressForces",
     "as_linkage",
     "collar_friction_radius",
     "curved_contact_mu",
@@ -125,4 +128,5 @@ __all__ = [
     "vgroove_mu",
     "watt_transmission_angles",
     "wedge_press",
+    "wedge_press_forces",
 ]

@@ -16,10 +16,11 @@ from mech._generated.efficiency import push_rod as _push_rod
 from mech._generated.efficiency import spreading_wedge, wedge_press as _wedge_press
 from mech._generated.friction import eccentric_clamp
 from mech._validate import bool_flag, common_shape, finite_array, finite_result
-from mech.planar.forces._friction import _nonnegative, _out, _positive
+from mech.planar.forces._friction import _nonnegative, _out, _positive, total_reaction
 
 __all__ = [
     "WedgePress",
+    "WedgePressForces",
     "efficiency",
     "efficiency_from_drive",
     "efficiency_from_resistance",
@@ -27,6 +28,7 @@ __all__ = [
     "parallel_efficiency",
     "is_self_locking",
     "wedge_press",
+    "wedge_press_forces",
     "spreading_wedge_force",
     "push_rod",
     "eccentric_clamp_max_angle",
@@ -311,6 +313,114 @@ def wedge_press(lam, phi):
     eta = np.where(moves, eta, 0.0)
     return WedgePress(_out(fwd), _out(rev), _out(eta), _out(eta_rev), _out(moves),
                       _out(lam <= 2 * phi), _out(2 * phi + 0 * lam))
+
+
+@dataclass(frozen=True)
+class WedgePressForces:
+    """Forces on the two wedges of example 2-11 (Fig. 2-68), complex ``x + 1j*y``, in N.
+
+    Wedge 2 slides on the horizontal base 1 under the push ``P``; wedge 3 slides in the
+    vertical guide of the frame 1 (the guide on its +x side) and carries the load ``Q``
+    (downwards). ``R12``: base on wedge 2; ``R32``: wedge 3 on wedge 2; ``R23 = -R32``;
+    ``R13``: guide on wedge 3. Each wedge's forces add up to zero (the closed polygons of
+    Fig. 2-68b): ``P + R12 + R32 = 0`` and ``Q + R23 + R13 = 0``.
+    """
+
+    P: object
+    Q: object
+    R12: object
+    R32: object
+    R23: object
+    R13: object
+
+
+def _cross(u, w):
+    return np.imag(np.conj(u) * w)
+
+
+def wedge_press_forces(Q, lam, phi, *, release=False):
+    """Forces on the wedges of the wedge press (example 2-11, Fig. 2-68) under a load Q.
+
+    Each total reaction is turned from its face's normal by the friction angle against the
+    relative sliding (`total_reaction`); then the two equilibria, of wedge 3 (Q known) and
+    of wedge 2, are solved for the magnitudes. The push comes out as ``P = Q tan(lam +
+    2 phi)`` pressing and ``Q tan(lam - 2 phi)`` on the release (2-25), as `wedge_press`.
+
+    Parameters
+    ----------
+    Q : array_like
+        Load on the vertical wedge 3, N, > 0.
+    lam : array_like
+        Wedge angle of the horizontal wedge 2, radians, in (0, pi/2).
+    phi : array_like
+        Friction angle of the three sliding faces, radians, in [0, pi/4).
+    release : bool, optional
+        False (default): pressing, wedge 2 moves towards +x and lifts wedge 3. True: the
+        load drives back, every friction force reverses, and ``P`` is the force that holds
+        wedge 2 (negative: a pull is needed, the press locks).
+
+    Returns
+    -------
+    WedgePressForces
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range, if pressing with ``lam + 2 phi >= pi/2`` (no
+        push can move the press, 2-27), or on the release with ``lam <= phi`` (wedge 3 then
+        leans on the far face of its guide, outside this model and outside (2-25)).
+
+    Notes
+    -----
+    The face between the wedges falls towards +x at ``lam`` below the horizontal, so its
+    normal into wedge 3 is ``sin(lam) + 1j*cos(lam)``; pressing moves wedge 2 at 1 and
+    wedge 3 at ``1j*tan(lam)``. Derivation of the ratios: :ref:`deriv-efficiency`.
+
+    Examples
+    --------
+    >>> from mech.planar.forces._efficiency import wedge_press_forces
+    >>> f = wedge_press_forces(1000.0, np.radians(10), np.arctan(0.1))
+    >>> round(f.P.real, 3), abs(f.P + f.R12 + f.R32) < 1e-9
+    (392.322, True)
+    """
+    Q = _positive("Q", Q)
+    lam, phi = _positive("lam", lam), _nonnegative("phi", phi)
+    release = bool_flag("release", release)
+    if np.any(lam >= np.pi / 2):
+        raise ValueError(f"Expected `lam` < pi/2, got {float(lam.max())!r}")
+    if np.any(phi >= np.pi / 4):
+        raise ValueError(f"Expected `phi` < pi/4, got {float(phi.max())!r}")
+    if not release and np.any(lam + 2 * phi >= np.pi / 2):
+        bad = (lam + 2 * phi >= np.pi / 2)
+        raise ValueError("Expected `lam` + 2 `phi` < pi/2 for pressing (2-27), got `lam` = "
+                         f"{float(np.broadcast_to(lam, bad.shape)[bad].ravel()[0])!r}, `phi` = "
+                         f"{float(np.broadcast_to(phi, bad.shape)[bad].ravel()[0])!r}")
+    if release and np.any(lam <= phi):
+        bad = lam <= phi
+        raise ValueError("Expected `lam` > `phi` on the release (else wedge 3 bears on the other "
+                         "face of its guide), got `lam` = "
+                         f"{float(np.broadcast_to(lam, bad.shape)[bad].ravel()[0])!r}, `phi` = "
+                         f"{float(np.broadcast_to(phi, bad.shape)[bad].ravel()[0])!r}")
+    Q, lam, phi = np.broadcast_arrays(Q, lam, phi)
+    mu = np.tan(phi)
+    sense = -1.0 if release else 1.0
+    v2 = sense * np.ones_like(lam)                           # wedge 2 along x
+    v3 = sense * 1j * np.tan(lam)                            # wedge 3 along y
+    n23 = np.sin(lam) + 1j * np.cos(lam)                     # normal of the face, into 3
+    u12 = total_reaction(1j + 0 * lam, v2, mu)               # base on wedge 2
+    u23 = total_reaction(n23, v3 - v2, mu)                   # wedge 2 on wedge 3
+    u13 = total_reaction(-1 + 0 * lam, v3, mu)               # guide on wedge 3
+    # per unit load: wedge 3, a u23 + b u13 = 1j; wedge 2, p + c u12 = a u23 (R32 = -a u23)
+    a = _cross(1j, u13) / _cross(u23, u13)
+    b = _cross(u23, 1j) / _cross(u23, u13)
+    R23, R13 = a * u23, b * u13
+    R12 = np.imag(R23) / np.imag(u12) * u12
+    P = np.real(R23 - R12) + 0j
+    with np.errstate(over="ignore", invalid="ignore"):
+        forces = [Q * f for f in (P, -1j + 0 * P, R12, -R23, R23, R13)]
+    for f in forces:
+        finite_result(f, "every force", Q=Q, lam=lam, phi=phi)
+    return WedgePressForces(*(_out(f) for f in forces))
 
 
 def spreading_wedge_force(Q, theta, phi, base_friction=True):

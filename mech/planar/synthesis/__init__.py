@@ -49,15 +49,17 @@ from mech.planar.synthesis._path import (
     path_untimed,
 )
 from mech.planar.synthesis._quick_return_design import (
-    QuickReturnCheck,
     QuickReturnCrankRocker,
-    QuickReturnFamily,
     QuickReturnGuideBar,
     QuickReturnSliderCrank,
-    crank_rocker_family,
     quick_return_crank_rocker,
     quick_return_guide_bar,
     quick_return_slider_crank,
+)
+from mech.planar.synthesis._quick_return_search import (
+    QuickReturnCheck,
+    QuickReturnFamily,
+    crank_rocker_family,
     simulate_quick_return,
     slider_crank_family,
 )

@@ -5,20 +5,20 @@ rocker c and swing phi, or an offset slider-crank with stroke H, then has one fr
 parameter, the angle alpha = angle AOC1 on the circle that sees the output's two limit
 positions C1, C2 under theta (page ``deriv-quick-return-design``). This module builds
 the design for a given alpha (or for a given crank, coupler or offset, which fix alpha),
-searches alpha for the largest minimum transmission angle or for every design that keeps
-it above a permitted value, and designs the oscillating guide-bar from K and its frame.
+and designs the oscillating guide-bar from K and its frame. The searches over alpha (the
+largest minimum transmission angle, or every design that keeps it above a permitted
+value) are in ``_quick_return_search``.
 
 Every design is returned as the analysis class that moves it (`FourBar`, `SliderCrank`,
 `GuideBar`); its ``check()`` simulates one full crank turn with that class and MEASURES
 the time ratio, the swing or stroke and the minimum transmission angle, independently of
-the formulas that built it.
+the formulas that built it (`simulate_quick_return`, in ``_quick_return_search``).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from typing import Callable
 
 import numpy as np
 
@@ -30,25 +30,19 @@ from mech._generated.quick_return_design import (
     qr_crank_rocker_k1,
     qr_slider_crank,
 )
-from mech._scaling import length_scale
-from mech._validate import InputTypeError, branch_sign, nonnegative_int, positive_length, real_number
+from mech._validate import branch_sign, positive_length, real_number
 from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.kinematics._guide_bar import GuideBar
 from mech.planar.structure._quick_return import extreme_angle as _extreme_angle
 from mech.planar.kinematics._slider_crank import SliderCrank
 
 __all__ = [
-    "QuickReturnCheck",
     "QuickReturnCrankRocker",
     "QuickReturnSliderCrank",
     "QuickReturnGuideBar",
-    "QuickReturnFamily",
     "quick_return_crank_rocker",
     "quick_return_slider_crank",
     "quick_return_guide_bar",
-    "crank_rocker_family",
-    "slider_crank_family",
-    "simulate_quick_return",
 ]
 
 
@@ -91,161 +85,6 @@ def _one_of(**given):
     if len(named) != 1:
         raise ValueError(f"Expected exactly one of {', '.join(f'`{k}`' for k in given)}, got {len(named)}: {named}")
     return named[0], given[named[0]]
-
-
-# ----------------------------------------------------------------------------- simulation
-@dataclass(frozen=True)
-class QuickReturnCheck:
-    """What one simulated crank turn of a quick-return design measured.
-
-    Attributes
-    ----------
-    time_ratio : float
-        K = (crank angle of the slow stroke) / (crank angle of the fast stroke), measured.
-    extreme_angle : float
-        The crank angle between the two limit positions minus pi, in absolute value (rad).
-    output_range : float
-        The swing of the rocker or guide (rad), or the stroke of the slider (length).
-    min_transmission_angle : float
-        The smallest transmission angle over the turn (rad), from the simulated positions.
-    theta_limits : tuple of float
-        The crank angles in [0, 2 pi) where the output stops (first: its smallest value).
-    output_limits : tuple of float
-        The output's smallest and largest values (rocker or guide angle, slider x).
-    samples : int
-        The number of crank angles sampled before the limit positions and the minimum
-        were refined.
-    """
-
-    time_ratio: float
-    extreme_angle: float
-    output_range: float
-    min_transmission_angle: float
-    theta_limits: tuple
-    output_limits: tuple
-    samples: int
-
-
-def _stops(rate, t, xtol):
-    """Crank angles in [0, 2 pi) where `rate` changes sign along the sampled turn `t`."""
-    r = rate(t)
-    nxt = np.roll(r, -1)
-    idx = np.flatnonzero(np.sign(r) != np.sign(nxt))
-    roots = []
-    for i in idx:
-        lo, hi = t[i], t[i] + (t[1] - t[0])
-        roots.append(_optimize().brentq(lambda u: float(rate(np.array([u]))[0]), lo, hi, xtol=xtol) % _TWO_PI)
-    return roots
-
-
-def _simulate(position, rate, gamma, samples, xtol, angular=True):
-    """Measure K, the extreme angle, the output range and gamma_min over one crank turn.
-
-    ``position(t)``, ``rate(t)`` and ``gamma(t)`` are the output coordinate, its rate and
-    the transmission angle, all from the analysis class, at crank angles ``t``.
-    """
-    samples = nonnegative_int("samples", samples, 10**7)
-    if samples < 16:
-        raise ValueError(f"Expected `samples` >= 16, got {samples!r}")
-    xtol = positive_length("xtol", xtol)
-    t = np.linspace(0.0, _TWO_PI, samples, endpoint=False)
-    stops = _stops(rate, t, xtol)
-    if len(stops) != 2:
-        raise ValueError(f"Expected an output with two limit positions per turn, got {len(stops)}")
-    out = position(np.array(stops))
-    span = out[1] - out[0]
-    if angular:
-        # a rocker or guide angle may cross the cut at +-pi between its stops
-        span = float(np.angle(np.exp(1j * span)))
-    low, high = (0, 1) if span > 0 else (1, 0)
-    forward = (stops[high] - stops[low]) % _TWO_PI       # crank turn from the low to the high stop
-    strokes = sorted((forward, _TWO_PI - forward))
-    g = gamma(t)
-    k = int(np.argmin(g))
-    step = t[1] - t[0]
-    refined = _optimize().minimize_scalar(lambda u: float(gamma(np.array([u]))[0]), bounds=(t[k] - step, t[k] + step),
-                              method="bounded", options={"xatol": xtol})
-    return QuickReturnCheck(
-        time_ratio=strokes[1] / strokes[0],
-        extreme_angle=abs(forward - math.pi),
-        output_range=abs(float(span)),
-        min_transmission_angle=float(min(refined.fun, g[k])),
-        theta_limits=(float(stops[low]), float(stops[high])),
-        output_limits=(float(out[low]), float(out[high])),
-        samples=samples,
-    )
-
-
-def simulate_quick_return(linkage, *, samples=2048, xtol=1e-13):
-    """Simulate one crank turn of a `FourBar`, `SliderCrank` or `GuideBar`; measure its quick return.
-
-    The output (rocker angle psi, slider position x, guide angle psi) stops where its rate
-    from ``linkage.solve(t, order=1)`` changes sign: those crank angles are found by
-    Brent's method from `samples` equally spaced crank angles, and K, the extreme angle
-    and the swing or stroke follow from them. The transmission angle is computed from the
-    simulated pin positions (angle BCD of a four-bar; rod against the guide's normal of a
-    slider-crank; pi/2 for the guide-bar, whose block pushes the guide along its normal)
-    and its smallest value refined by a bounded scalar minimisation.
-
-    Parameters
-    ----------
-    linkage : FourBar, SliderCrank or GuideBar
-        A linkage whose input crank turns fully.
-    samples : int, optional
-        Crank angles sampled over the turn (>= 16).
-    xtol : float, optional
-        Absolute tolerance (rad) of the refinements.
-
-    Returns
-    -------
-    QuickReturnCheck
-
-    Raises
-    ------
-    ValueError
-        If the output does not stop exactly twice per turn.
-
-    Examples
-    --------
-    >>> from mech.planar import FourBar
-    >>> from mech.planar.synthesis import simulate_quick_return
-    >>> round(simulate_quick_return(FourBar(10, 40, 30, 35)).time_ratio, 5)     # example 2-1
-    1.22404
-    """
-    # FourBar on this branch loses its angles for lengths near 1e-300 (NaN with valid True):
-    # simulate a copy scaled by a power of two, which changes no angle and no rounding
-    if isinstance(linkage, FourBar):
-        scale = length_scale(linkage.a, linkage.b, linkage.c, linkage.d)
-        linkage = FourBar(linkage.a / scale, linkage.b / scale, linkage.c / scale, linkage.d / scale,
-                          branch=linkage.branch)
-        d = linkage.d
-
-        def gamma(t):
-            p = linkage.solve(t)
-            # angle BCD from the simulated pins, not from the cosine law (2-48)
-            cos_bcd = np.real((p.B - p.C) * np.conj(d - p.C)) / (np.abs(p.B - p.C) * np.abs(d - p.C))
-            return _acute(cos_bcd)
-
-        return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_output,
-                         gamma, samples, xtol)
-    if isinstance(linkage, SliderCrank):
-        scale = length_scale(linkage.a, linkage.b, linkage.e)
-        linkage = SliderCrank(linkage.a / scale, linkage.b / scale, linkage.e / scale, branch=linkage.branch)
-        b = linkage.b
-
-        def gamma(t):
-            p = linkage.solve(t)
-            # acute angle between the rod and the normal of the guide, from the pins
-            return _acute(np.imag(p.C - p.B) / b)
-
-        check = _simulate(lambda t: linkage.solve(t).x, lambda t: linkage.solve(t, order=1).v, gamma,
-                          samples, xtol, angular=False)
-        return replace(check, output_range=check.output_range * scale,
-                       output_limits=tuple(x * scale for x in check.output_limits))
-    if isinstance(linkage, GuideBar):
-        return _simulate(lambda t: linkage.solve(t).psi, lambda t: linkage.solve(t, order=1).omega_guide,
-                         lambda t: np.full(np.shape(t), np.pi / 2), samples, xtol)
-    raise InputTypeError(f"Expected `linkage` to be a FourBar, SliderCrank or GuideBar, got {linkage!r}")
 
 
 def _acute(cos_angle):
@@ -316,6 +155,8 @@ class QuickReturnCrankRocker:
         -------
         QuickReturnCheck
         """
+        from mech.planar.synthesis._quick_return_search import simulate_quick_return   # imports this module
+
         return simulate_quick_return(self.fourbar, samples=samples, xtol=xtol)
 
 
@@ -523,6 +364,8 @@ class QuickReturnSliderCrank:
 
         Same keywords as `QuickReturnCrankRocker.check`.
         """
+        from mech.planar.synthesis._quick_return_search import simulate_quick_return   # imports this module
+
         return simulate_quick_return(self.slider_crank, samples=samples, xtol=xtol)
 
 
@@ -632,6 +475,8 @@ class QuickReturnGuideBar:
 
         Same keywords as `QuickReturnCrankRocker.check`; see `simulate_quick_return`.
         """
+        from mech.planar.synthesis._quick_return_search import simulate_quick_return   # imports this module
+
         return simulate_quick_return(self.guide_bar, samples=samples, xtol=xtol)
 
 
@@ -657,138 +502,3 @@ def quick_return_guide_bar(time_ratio, frame):
         raise ValueError(f"Expected `time_ratio` whose crank d sin(theta / 2) is shorter than `frame` = {d!r}, "
                          f"got {K!r}") from None
     return QuickReturnGuideBar(gb, K, theta, d, gb.a, d + gb.a)
-
-
-# ----------------------------------------------------------------------------- searches over alpha
-@dataclass(frozen=True)
-class QuickReturnFamily:
-    """Every design of one kind for a task, over the free parameter alpha.
-
-    Attributes
-    ----------
-    intervals : tuple of (float, float)
-        Open intervals of alpha (rad) whose designs have ``gamma_min >= min_transmission``
-        (empty if there is none).
-    best : QuickReturnCrankRocker or QuickReturnSliderCrank
-        The design with the largest gamma_min over (0, pi - theta).
-    min_transmission : float
-        The permitted transmission angle [gamma] the intervals keep.
-    design : callable
-        ``design(alpha)`` builds the design at any alpha.
-    """
-
-    intervals: tuple
-    best: object
-    min_transmission: float
-    design: Callable
-
-    def designs(self, n=5):
-        """``n`` designs spread over each interval (its ends excluded)."""
-        n = nonnegative_int("n", n, 10**6)
-        return [self.design(lo + (hi - lo) * (k + 1) / (n + 1)) for lo, hi in self.intervals for k in range(n)]
-
-
-def _search(gamma_of, top, min_transmission, samples, xtol):
-    """alpha maximising gamma_of on (0, top) and the intervals where gamma_of >= min_transmission."""
-    alpha = np.linspace(0.0, top, samples + 2)[1:-1]
-    g = gamma_of(alpha)
-    k = int(np.argmax(g))
-    step = alpha[1] - alpha[0]
-    res = _optimize().minimize_scalar(lambda u: -float(gamma_of(np.array([u]))[0]),
-                          bounds=(max(alpha[k] - step, 0.5 * alpha[0]), min(alpha[k] + step, top - 0.5 * alpha[0])),
-                          method="bounded", options={"xatol": xtol})
-    best = float(res.x) if -res.fun >= g[k] else float(alpha[k])
-    f = lambda u: float(gamma_of(np.array([u]))[0]) - min_transmission  # noqa: E731
-    above = g >= min_transmission
-    ends = [0.0] if above[0] else []
-    for i in np.flatnonzero(above[1:] != above[:-1]):
-        ends.append(_optimize().brentq(f, alpha[i], alpha[i + 1], xtol=xtol))
-    if above[-1]:
-        ends.append(top)
-    return best, tuple((float(lo), float(hi)) for lo, hi in zip(ends[0::2], ends[1::2]))
-
-
-def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side=1, samples=2001, xtol=1e-12):
-    """Every quick-return crank-rocker for K, c and phi, and the best by gamma_min (Table 2-3).
-
-    Parameters
-    ----------
-    time_ratio, rocker, swing, side
-        As for `quick_return_crank_rocker`.
-    min_transmission : float, optional
-        The permitted transmission angle [gamma] in [0, pi/2) (rad).
-    samples : int, optional
-        Values of alpha sampled on (0, pi - theta) before the crossings of [gamma] are
-        refined by Brent's method and the best alpha by a bounded scalar search.
-    xtol : float, optional
-        Absolute tolerance (rad) on alpha of those refinements.
-
-    Returns
-    -------
-    QuickReturnFamily
-
-    Notes
-    -----
-    gamma_min(alpha) comes from (2-48) and its companion at the extended position
-    (l.2543); alpha where the linkage is not a crank-rocker doing the task (see
-    `quick_return_crank_rocker`) count as below [gamma]. The
-    sampling must resolve each interval: an interval narrower than (pi - theta)/samples
-    can be missed.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from mech.planar.synthesis import crank_rocker_family
-    >>> f = crank_rocker_family(1.25, 500.0, np.radians(40.0), min_transmission=np.radians(40.0))
-    >>> [tuple(round(float(np.degrees(x)), 4) for x in iv) for iv in f.intervals]   # l.2551
-    [(14.4487, 45.2267)]
-    """
-    K, theta = _theta(time_ratio)
-    c = positive_length("rocker", rocker)
-    swing = _angle_in("swing", swing, 0.0, math.pi)
-    side = branch_sign(side, "side")
-    gmin = real_number("min_transmission", min_transmission)
-    if not 0.0 <= gmin < math.pi / 2:
-        raise ValueError(f"Expected `min_transmission` in [0, pi/2), got {gmin!r}")
-    samples = nonnegative_int("samples", samples, 10**7)
-    xtol = positive_length("xtol", xtol)
-
-    def gamma_of(al):
-        with np.errstate(invalid="ignore"):
-            return _crank_rocker_unit(theta, swing, al, side)[5]
-
-    best, intervals = _search(gamma_of, math.pi - theta, gmin, samples, xtol)
-    if gamma_of(np.array([best]))[0] < 0.0:
-        raise ValueError(f"Expected `time_ratio`, `swing` and `side` that admit a crank-rocker, got "
-                         f"time_ratio={time_ratio!r}, swing={swing!r}, side={side!r}")
-    return QuickReturnFamily(intervals, _build_crank_rocker(K, theta, c, swing, best, side), gmin,
-                             lambda al: quick_return_crank_rocker(K, c, swing, alpha=al, side=side))
-
-
-def slider_crank_family(time_ratio, stroke, *, min_transmission=0.0, samples=2001, xtol=1e-12):
-    """Every quick-return offset slider-crank for K and H, and the best by gamma_min (Table 2-5).
-
-    Keywords as for `crank_rocker_family`; gamma_min(alpha) from (2-52).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from mech.planar.synthesis import slider_crank_family
-    >>> f = slider_crank_family(1.25, 100.0)
-    >>> round(float(np.degrees(f.best.alpha)), 3), round(float(np.degrees(f.best.min_transmission_angle)), 4)
-    (27.035, 42.8078)
-    """
-    K, theta = _slider_theta(time_ratio)
-    H = positive_length("stroke", stroke)
-    gmin = real_number("min_transmission", min_transmission)
-    if not 0.0 <= gmin < math.pi / 2:
-        raise ValueError(f"Expected `min_transmission` in [0, pi/2), got {gmin!r}")
-    samples = nonnegative_int("samples", samples, 10**7)
-    xtol = positive_length("xtol", xtol)
-
-    def gamma_of(al):
-        return _slider_unit(theta, al)[4]
-
-    best, intervals = _search(gamma_of, math.pi - 2.0 * theta, gmin, samples, xtol)
-    return QuickReturnFamily(intervals, _build_slider(K, theta, H, best), gmin,
-                             lambda al: quick_return_slider_crank(K, H, alpha=al))
