@@ -1,76 +1,70 @@
-"""Independent 50-digit solution of the five-orientation Burmester problem, in mpmath.
+"""Independent high-precision solution of the five-orientation Burmester problem.
 
-Nothing here uses ``mech``: the four crank equations u^T (R_j R_1^T - I) w = 0 are written
-in a random chart, u = Q (a1, a2, 1) and w = Q (b1, b2, 1), and solved by Newton's method
-(``mpmath.findroot``) from random complex starts, in fresh random charts if needed, until
-six distinct solutions are found (six is the Bezout number of four bilinear equations on
-P^2 x P^2, so none is missing).
+Nothing here uses ``mech``. A resultant route, different from the package's: the rotations
+are taken as exact rationals (every float is one), w = Q (x, y, 1) with a random integer
+matrix Q, and SymPy forms exactly the two circle-point cubics det[K_2 w, K_3 w, K_4 w] and
+det[K_2 w, K_3 w, K_5 w] and their resultant in x, a polynomial of degree 9 in y. Its roots
+(``mpmath.polyroots`` at 60 digits) give the nine common points of the cubics; each is
+polished by Newton's method on the pair at 50 digits, and the three where K_2 w and K_3 w
+are parallel (which solve neither j = 4 nor j = 5 with a common u) are told apart from the
+six Burmester points by the four residuals u . K_j w with u = K_2 w x K_3 w.
 """
 
 import mpmath
 import numpy as np
+import sympy as sm
 
 DPS = 50
 
 
-def _mat(A):
-    return mpmath.matrix([[mpmath.mpf(float(x)) for x in row] for row in A])
-
-
-def _projective(v):
-    """A homogeneous complex vector scaled so its largest entry is 1."""
-    k = max(range(3), key=lambda i: abs(v[i]))
-    return [v[i] / v[k] for i in range(3)]
-
-
-def burmester_mp(R, seed=0, starts_per_chart=120, charts=6):
-    """Return (real solutions as [(u, w)] float unit vectors with u.w >= 0, number found)."""
+def burmester_mp(R, seed=0):
+    """Return (real solutions as [(u, w)] float unit vectors with u.w >= 0, number of
+    Burmester points found among the nine common points of the cubics)."""
     rng = np.random.default_rng(seed)
+    Rq = [sm.Matrix(3, 3, [sm.Rational(float(v)) for v in Rj.ravel()]) for Rj in R]
+    K = [Rq[j] * Rq[0].T - sm.eye(3) for j in range(1, 5)]
+    Q = sm.Matrix(3, 3, [int(v) for v in rng.integers(-9, 10, size=9)])
+    while Q.det() == 0:
+        Q = sm.Matrix(3, 3, [int(v) for v in rng.integers(-9, 10, size=9)])
+    x, y = sm.symbols("x y")
+    w = Q * sm.Matrix([x, y, 1])
+    F = sm.expand(sm.Matrix.hstack(K[0] * w, K[1] * w, K[2] * w).det())
+    G = sm.expand(sm.Matrix.hstack(K[0] * w, K[1] * w, K[3] * w).det())
+    res = sm.Poly(sm.resultant(F, G, x), y)
+    f_num = sm.lambdify((x, y), F, "mpmath")
+    g_num = sm.lambdify((x, y), G, "mpmath")
+    Fx = sm.Poly(F, x)
     found = []
-    with mpmath.workdps(DPS):
-        Rm = [_mat(Rj) for Rj in R]
-        K = [Rm[j] * Rm[0].T - mpmath.eye(3) for j in range(1, 5)]
-        for _ in range(charts):
-            Q = _mat(np.linalg.qr(rng.normal(size=(3, 3)))[0])
-            KQ = [Q.T * Kj * Q for Kj in K]
-
-            def f(a1, a2, b1, b2, KQ=KQ):
-                u, w = mpmath.matrix([a1, a2, 1]), mpmath.matrix([b1, b2, 1])
-                return [(u.T * Kj * w)[0] for Kj in KQ]
-
-            def jac(a1, a2, b1, b2, KQ=KQ):
-                u, w = mpmath.matrix([a1, a2, 1]), mpmath.matrix([b1, b2, 1])
-                rows = []
-                for Kj in KQ:
-                    Kw, Ku = Kj * w, Kj.T * u
-                    rows.append([Kw[0], Kw[1], Ku[0], Ku[1]])
-                return mpmath.matrix(rows)
-
-            for _ in range(starts_per_chart):
-                x0 = [mpmath.mpc(*rng.uniform(-3, 3, size=2)) for _ in range(4)]
-                try:
-                    x = mpmath.findroot(f, x0, J=jac, tol=mpmath.mpf(10) ** (-2 * DPS + 10), maxsteps=100)
-                except (ValueError, ZeroDivisionError):
-                    continue
-                x = [x[i] for i in range(4)]
-                if max(abs(v) for v in f(*x)) > mpmath.mpf(10) ** (-DPS + 10):
-                    continue
-                u = Q * mpmath.matrix([x[0], x[1], 1])
-                w = Q * mpmath.matrix([x[2], x[3], 1])
-                key = _projective(u) + _projective(w)
-                if all(max(abs(a - b) for a, b in zip(key, other)) > mpmath.mpf(10) ** (-20) for other, _ in found):
-                    found.append((key, (u, w)))
-                if len(found) == 6:
-                    break
-            if len(found) == 6:
-                break
+    with mpmath.workdps(DPS + 10):
+        coeffs = [mpmath.mpf(c.p) / mpmath.mpf(c.q) for c in map(sm.Rational, res.all_coeffs())]
+        ys = mpmath.polyroots(coeffs, maxsteps=800, extraprec=800)
+        Km = [mpmath.matrix([[mpmath.mpf(v.p) / mpmath.mpf(v.q) for v in row] for row in Kj.tolist()]) for Kj in K]
+        Qm = mpmath.matrix(Q.tolist())
+        for y0 in ys:
+            xs = mpmath.polyroots([sm.lambdify(y, c, "mpmath")(y0) for c in Fx.all_coeffs()],
+                                  maxsteps=800, extraprec=800)
+            x0 = min(xs, key=lambda v: abs(g_num(v, y0)))
+            sol = mpmath.findroot(lambda a, b: [f_num(a, b), g_num(a, b)], (x0, y0), tol=mpmath.mpf(10) ** (-2 * DPS))
+            wv = Qm * mpmath.matrix([sol[0], sol[1], 1])
+            cols = [Kj * wv for Kj in Km]
+            u = mpmath.matrix([cols[0][1] * cols[1][2] - cols[0][2] * cols[1][1],
+                               cols[0][2] * cols[1][0] - cols[0][0] * cols[1][2],
+                               cols[0][0] * cols[1][1] - cols[0][1] * cols[1][0]])
+            size = mpmath.norm(u) * mpmath.norm(wv)
+            if size == 0:
+                continue
+            off = max(abs(sum(u[i] * c[i] for i in range(3))) / (size * mpmath.norm(c) + mpmath.mpf(10) ** -300)
+                      for c in cols[2:])
+            if off < mpmath.mpf(10) ** (-30):
+                found.append((u, wv))
         real = []
-        for key, (u, w) in found:
-            if max(abs(mpmath.im(v)) for v in key) < mpmath.mpf(10) ** (-30):
-                u = mpmath.matrix([mpmath.re(v) for v in key[:3]])
-                w = mpmath.matrix([mpmath.re(v) for v in key[3:]])
-                u, w = u / mpmath.norm(u), w / mpmath.norm(w)
-                if (u.T * w)[0] < 0:
-                    u = -u
-                real.append((np.array([float(c) for c in u]), np.array([float(c) for c in w])))
-        return real, len(found)
+        for u, wv in found:
+            if max(abs(mpmath.im(v / max(u, key=abs))) for v in u) < 1e-30 and \
+                    max(abs(mpmath.im(v / max(wv, key=abs))) for v in wv) < 1e-30:
+                ur = mpmath.matrix([mpmath.re(v / max(u, key=abs)) for v in u])
+                wr = mpmath.matrix([mpmath.re(v / max(wv, key=abs)) for v in wv])
+                ur, wr = ur / mpmath.norm(ur), wr / mpmath.norm(wr)
+                if sum(ur[i] * wr[i] for i in range(3)) < 0:
+                    ur = -ur
+                real.append((np.array([float(c) for c in ur]), np.array([float(c) for c in wr])))
+    return real, len(found)

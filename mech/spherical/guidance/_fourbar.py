@@ -209,12 +209,17 @@ def guidance_fourbars(R, dyads=None, *, rtol=1e-9):
 
     Examples
     --------
+    Example 2-15 on a sphere of radius 1000 (arcs in milliradians; the planar crank-rocker
+    has 108.757, 191.146, 186.698, 188.847):
+
     >>> import numpy as np
-    >>> from mech.spherical import guidance_fourbars, rotation_matrix
-    >>> R = np.stack([rotation_matrix(a, t) for a, t in [([0, 0, 1], 0.0), ([0.2, 0.1, 1], 0.5),
-    ...               ([-0.3, 0.2, 1], 1.0), ([0.1, -0.4, 1], 1.4), ([0.5, 0.3, 1], 1.9)]])
-    >>> result = guidance_fourbars(R)
-    >>> all(c.pose_error < 1e-9 for c in result.candidates)
+    >>> from mech.spherical import guidance_fourbars, planar_orientations
+    >>> P = [13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j]
+    >>> R = planar_orientations(np.radians([0.0, 8.88, 22.1, 63.68, -3.0]), P, 1e-3)
+    >>> best = guidance_fourbars(R).passing[0]
+    >>> best.kind, [round(x * 1e3, 3) for x in (best.linkage.a, best.linkage.b, best.linkage.c, best.linkage.d)]
+    ('crank-rocker', [108.836, 192.038, 187.013, 188.216])
+    >>> best.pose_error < 1e-12
     True
     """
     R = orientation_set("R", R, (2, 3, 4, 5))

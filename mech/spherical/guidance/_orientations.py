@@ -331,8 +331,8 @@ def planar_orientations(theta, d, scale):
     >>> from mech.spherical import planar_orientations
     >>> R = planar_orientations([0.0, 0.5], [0.0, 2.0 + 1.0j], 1e-3)
     >>> P = R[1] @ np.array([0.0, 0.0, 1.0])
-    >>> np.round(P[:2] / P[2] / 1e-3, 6).tolist()
-    [2.000001, 1.000001]
+    >>> np.round(P[:2] / P[2] / 1e-3, 4).tolist()          # the planar d_2, to O(scale^2)
+    [2.0, 1.0]
     """
     from mech._validate import positive_length
     from mech.planar.synthesis._displacement import pose_set
