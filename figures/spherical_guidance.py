@@ -49,7 +49,7 @@ def cubics(curve, poles=(), ax=None, *, elev=30.0, azim=-50.0, title=None):
     return sphere.finish(ax, elev=elev, azim=azim)
 
 
-def fourbar_positions(design, R, ax=None, *, elev=30.0, azim=-50.0, title=None, body=None):
+def fourbar_positions(design, R, ax=None, *, elev=30.0, azim=-50.0, title=None, body=None, limit=1.05):
     """Draw a `SphericalGuidanceFourBar` in its orientations: ground AD black, crank AB blue,
     coupler BC grey, output DC red; the first orientation bold. `body` (unit vectors, body
     coordinates) is a shape drawn with the coupler in every orientation (green)."""
@@ -70,4 +70,4 @@ def fourbar_positions(design, R, ax=None, *, elev=30.0, azim=-50.0, title=None, 
     sphere.point(ax, D, "D")
     if title:
         ax.set_title(title, fontsize=10)
-    return sphere.finish(ax, elev=elev, azim=azim)
+    return sphere.finish(ax, elev=elev, azim=azim, limit=limit)
