@@ -1756,6 +1756,8 @@ CASES.update({
                                       R=_sg_set(3), samples=24, phi=None),
     "spherical.SphericalBurmesterCurve.dyad": E(lambda: sph.circle_point_curve(_sg_set(4), samples=24).dyad,
                                                 {"i": "int", "k": "int"}, i=0, k=0),
+    "spherical.slider_dyads": E(lambda: sph.slider_dyads, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_set(4),
+                                imag_tol=1e-6),
     "spherical.burmester": E(lambda: sph.burmester, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_five(),
                              imag_tol=1e-6),
     "spherical.guidance_fourbars": E(lambda: sph.guidance_fourbars,

@@ -80,6 +80,7 @@ from mech.spherical.guidance import (
     relative_rotation,
     rotation_pole,
     slider_dyad_for_point,
+    slider_dyads,
     slider_point_curve,
     slider_residual,
 )
@@ -114,6 +115,7 @@ __all__ = [
     "relative_rotation",
     "rotation_pole",
     "slider_dyad_for_point",
+    "slider_dyads",
     "slider_point_curve",
     "slider_residual",
     "angle_at",

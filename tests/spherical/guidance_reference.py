@@ -68,3 +68,47 @@ def burmester_mp(R, seed=0):
                     ur = -ur
                 real.append((np.array([float(c) for c in ur]), np.array([float(c) for c in wr])))
     return real, len(found)
+
+
+def slider_points_mp(R, seed=0):
+    """Slider points of four orientations by the same exact-resultant route: the common points
+    of det[w, D_2 w, D_3 w] and det[w, D_2 w, D_4 w] less those where w and D_2 w are parallel.
+    Returns (real slider axes w as float unit vectors at orientation 1, number found)."""
+    rng = np.random.default_rng(seed)
+    Rq = [sm.Matrix(3, 3, [sm.Rational(float(v)) for v in Rj.ravel()]) for Rj in R]
+    D = [Rq[j] * Rq[0].T for j in range(1, 4)]
+    Q = sm.Matrix(3, 3, [int(v) for v in rng.integers(-9, 10, size=9)])
+    while Q.det() == 0:
+        Q = sm.Matrix(3, 3, [int(v) for v in rng.integers(-9, 10, size=9)])
+    x, y = sm.symbols("x y")
+    w = Q * sm.Matrix([x, y, 1])
+    F = sm.expand(sm.Matrix.hstack(w, D[0] * w, D[1] * w).det())
+    G = sm.expand(sm.Matrix.hstack(w, D[0] * w, D[2] * w).det())
+    res = sm.Poly(sm.resultant(F, G, x), y)
+    f_num = sm.lambdify((x, y), F, "mpmath")
+    g_num = sm.lambdify((x, y), G, "mpmath")
+    Fx = sm.Poly(F, x)
+    found = []
+    with mpmath.workdps(DPS + 10):
+        coeffs = [mpmath.mpf(c.p) / mpmath.mpf(c.q) for c in map(sm.Rational, res.all_coeffs())]
+        ys = mpmath.polyroots(coeffs, maxsteps=800, extraprec=800)
+        Dm = [mpmath.matrix([[mpmath.mpf(v.p) / mpmath.mpf(v.q) for v in row] for row in Dj.tolist()]) for Dj in D]
+        Qm = mpmath.matrix(Q.tolist())
+        for y0 in ys:
+            xs = mpmath.polyroots([sm.lambdify(y, c, "mpmath")(y0) for c in Fx.all_coeffs()],
+                                  maxsteps=800, extraprec=800)
+            x0 = min(xs, key=lambda v: abs(g_num(v, y0)))
+            sol = mpmath.findroot(lambda a, b: [f_num(a, b), g_num(a, b)], (x0, y0), tol=mpmath.mpf(10) ** (-2 * DPS))
+            wv = Qm * mpmath.matrix([sol[0], sol[1], 1])
+            d2 = Dm[0] * wv
+            cross = [wv[1] * d2[2] - wv[2] * d2[1], wv[2] * d2[0] - wv[0] * d2[2], wv[0] * d2[1] - wv[1] * d2[0]]
+            if max(abs(c) for c in cross) > mpmath.mpf(10) ** (-30) * mpmath.norm(wv) ** 2:
+                found.append(wv)
+        real = []
+        for wv in found:
+            top = max(wv, key=abs)
+            if max(abs(mpmath.im(v / top)) for v in wv) < 1e-30:
+                wr = mpmath.matrix([mpmath.re(v / top) for v in wv])
+                wr = wr / mpmath.norm(wr)
+                real.append(np.array([float(c) for c in wr]))
+    return real, len(found)

@@ -294,3 +294,40 @@ def test_bad_orientations():
         slider_dyad_for_point(_random_set(rng, 3), [0.3, 0.4, 0.8])
     with pytest.raises(ValueError, match="`dyads`"):
         guidance_fourbars(np.stack([np.eye(3)] * 3), dyads=[])
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 5])
+def test_slider_dyads_four_positions_match_resultant(seed):
+    """§3.5: the slider points of four orientations, every real one, against the exact route."""
+    from guidance_reference import slider_points_mp
+    from mech.spherical import slider_dyads
+
+    rng = np.random.default_rng(seed)
+    R = _random_set(rng, 4, spread=1.5)
+    found = slider_dyads(R)
+    real, n = slider_points_mp(R, seed)
+    assert n == 6 and len(found) == len(real)
+    for k in found:
+        assert min(np.max(np.abs(s * k.moving_pivot - r)) for r in real for s in (1, -1)) < 1e-9
+        assert abs(float(k.arc) - np.pi / 2) < 1e-12
+        dets = [slider_residual(Rj, k.circle_point, k.centre_point) for Rj in R]
+        assert np.max(np.abs(dets)) < 1e-14
+
+
+def test_crank_slider_four_positions_by_analysis():
+    """§3.5: a crank from the circle-point curve and a slider of four orientations make a
+    crank-slider that reaches every orientation (checked by SphericalFourBar)."""
+    from mech.spherical import slider_dyads
+
+    rng = np.random.default_rng(2)
+    R = _random_set(rng, 4, spread=1.5)
+    sliders = slider_dyads(R)
+    assert sliders
+    curve = circle_point_curve(R, samples=60)
+    reached = 0
+    for i, k in np.argwhere(curve.valid):
+        design = guidance_slider_crank(R, curve.dyad(i, k), sliders[0])
+        if design is not None and design.in_order:
+            assert design.pose_error < 1e-9
+            reached += 1
+    assert reached > 0

@@ -10,6 +10,7 @@ from mech.spherical.guidance._burmester import (
     SphericalBurmesterPoints,
     burmester,
     circle_point_curve,
+    slider_dyads,
     slider_point_curve,
 )
 from mech.spherical.guidance._dyads import (
@@ -31,6 +32,6 @@ from mech.spherical.guidance._orientations import (
 __all__ = [
     "relative_rotation", "rotation_pole", "pole_triangle", "crank_residual", "slider_residual", "planar_orientations",
     "SphericalDyad", "dyad_for_circle_point", "dyad_for_centre_point", "slider_dyad_for_point",
-    "SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve", "burmester",
+    "SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve", "burmester", "slider_dyads",
     "SphericalGuidanceFourBar", "guidance_fourbars", "guidance_slider_crank",
 ]

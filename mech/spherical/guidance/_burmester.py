@@ -1,6 +1,6 @@
-"""Burmester theory on the sphere (the spherical monograph, §3.3, §3.4 and §3.6): the
-slider-point cubic of three orientations, the circle-point and centre-point cubics of four,
-and the Burmester points of five, the real roots of a sextic.
+"""Burmester theory on the sphere (the spherical monograph, §3.3 to §3.6): the slider-point
+cubic of three orientations, the circle-point and centre-point cubics and the slider points
+of four, and the Burmester points of five, the real roots of a sextic.
 """
 
 from dataclasses import dataclass
@@ -12,7 +12,7 @@ from mech.spherical.guidance._dyads import SphericalDyad, arc_between, make_dyad
 from mech.spherical.guidance._orientations import _axis_angle, _parts, orientation_set
 
 __all__ = ["SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve",
-           "burmester"]
+           "burmester", "slider_dyads"]
 
 
 @dataclass(frozen=True)
@@ -421,3 +421,113 @@ def burmester(R, *, imag_tol=1e-6):
         dyads.append(make_dyad(z, w, u, "R", R[0]))
     dyads.sort(key=lambda k: float(k.arc))
     return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa)
+
+
+def _pencil_resultant(Ma, Mb, P):
+    """Coefficients (x^0 .. x^8, x = exp(2j phi)) of the resultant (9) of the cubics
+    det[Ma_k w] and det[Mb_k w] on great circles through their common point P, with e1, e2."""
+    e1, e2 = _basis(P)
+    phi = np.arange(16) * (np.pi / 16)
+    v = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
+    f1, f2, f3 = _cubic_on_circles(Ma, P, v)
+    g1, g2, g3 = _cubic_on_circles(Mb, P, v)
+    rho = (f1 * g3 - f3 * g1) ** 2 - (f1 * g2 - f2 * g1) * (f2 * g3 - f3 * g2)
+    spectrum = np.fft.fft(rho) / 16.0
+    return np.array([spectrum[m % 16] for m in range(-4, 5)]), e1, e2
+
+
+def _common_point(Ma, Mb, P, e1, e2, x):
+    """The common point of the two cubics on the great circle through P at x = exp(2j phi)."""
+    ph = 0.5 * np.angle(x)
+    vv = np.cos(ph) * e1 + np.sin(ph) * e2
+    (h1,), (h2,), (h3,) = _cubic_on_circles(Ma, P, vv[None])
+    (k1,), (k2,), (k3,) = _cubic_on_circles(Mb, P, vv[None])
+    w = (h2 * k3 - h3 * k2) * P - (h1 * k3 - h3 * k1) * vv
+    return w / np.linalg.norm(w)
+
+
+def slider_dyads(R, *, imag_tol=1e-6):
+    """Every spherical slider through four orientations (§3.5): up to six slider points.
+
+    A slider point's four positions lie on one great circle, so it lies on the slider-point
+    cubics (7) of orientations (1, 2, 3) and (1, 2, 4). The two cubics meet in nine points;
+    three are the real pole P_12 and the two complex fixed directions of D_21 (where w and
+    D_21 w are parallel) and solve nothing. On great circles through P_12 the resultant (9)
+    has the complex directions as its roots x = 0 and x = infinity; what is left is again
+    a sextic, whose roots on the unit circle give the real slider points.
+
+    Parameters
+    ----------
+    R : array_like, shape (4, 3, 3)
+        Orientations.
+    imag_tol : float, optional
+        A root x of the sextic counts as real when ``abs(abs(x) - 1)`` is at most this.
+
+    Returns
+    -------
+    tuple of SphericalDyad
+        The real slider dyads (``centre_point`` the guide's pole, ``arc`` pi/2), each
+        polished so that its four positions lie on the guide to rounding.
+
+    Raises
+    ------
+    ValueError
+        For a wrong number of orientations, bad input, or orientations 1 and 2 equal.
+
+    Notes
+    -----
+    Eqs. (5), (7) and (9) of :ref:`deriv-spherical-guidance`. With a crank from
+    `circle_point_curve` each slider makes a crank-slider for four orientations
+    (`guidance_slider_crank`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spherical import slider_dyads, rotation_matrix
+    >>> R = np.stack([rotation_matrix(a, t) for a, t in
+    ...               [([0, 0, 1], 0.0), ([0.2, 0.1, 1], 0.5), ([-0.3, 0.2, 1], 1.0), ([0.1, -0.4, 1], 1.4)]])
+    >>> found = slider_dyads(R)
+    >>> all(abs(np.linalg.det(np.stack([R[j] @ k.circle_point for j in (0, 1, 2)]))) < 1e-13 for k in found)
+    True
+    """
+    R = orientation_set("R", R, (4,))
+    imag_tol = nonnegative_number("imag_tol", imag_tol)
+    K = _parts(R[0], R[1:])
+    if not np.any(K[0] != 0.0):
+        raise ValueError("Expected orientations 1 and 2 of `R` to differ, got equal ones")
+    P = _axis_angle(K[0])[0]
+    Ma, Mb = [np.eye(3), K[0], K[1]], [np.eye(3), K[0], K[2]]
+    coef, e1, e2 = _pencil_resultant(Ma, Mb, P)
+    top = np.max(np.abs(coef))
+    if not top > 0.0:
+        raise ValueError("Expected four orientations with finitely many slider points, got `R` whose "
+                         "slider cubics share a whole curve")
+    sextic = (coef / top)[1:8]                     # the roots x = 0 and infinity are the complex axes of D_21
+    roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
+    found = []
+    for x in roots:
+        if abs(abs(x) - 1.0) > imag_tol:
+            continue
+        w = _common_point(Ma, Mb, P, e1, e2, x)
+        rows = np.stack([w, w + K[0] @ w, w + K[1] @ w, w + K[2] @ w])
+        n = _null(rows)
+        # polish: w on the guide at all four orientations (Newton on n^T D_j w = 0, |n| = |w| = 1)
+        D = np.stack([np.eye(3)] + [np.eye(3) + Kj for Kj in K])
+        for _ in range(8):
+            F = np.concatenate([np.einsum("i,jik,k->j", n, D, w), [(n @ n - 1) / 2, (w @ w - 1) / 2]])
+            J = np.zeros((6, 6))
+            J[:4, :3] = D @ w
+            J[:4, 3:] = np.einsum("i,jik->jk", n, D)
+            J[4, :3], J[5, 3:] = n, w
+            try:
+                step = np.linalg.solve(J, F)
+            except np.linalg.LinAlgError:
+                break
+            if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > 0.5:
+                break
+            n, w = n - step[:3], w - step[3:]
+            if np.max(np.abs(step)) <= 1e-16:
+                break
+        n, w = n / np.linalg.norm(n), w / np.linalg.norm(w)
+        found.append(make_dyad(R[0].T @ w, w, n, "R", R[0]))
+    return tuple(found)
