@@ -95,9 +95,9 @@ def _axis_angle(K):
     derivation); near a half turn, where the skew part vanishes, the axis is read from the
     largest column of the symmetric part, (1 - cos phi) (k k^T - I) + ..., instead.
     """
-    s, vers = _gen.sg_pole_parts(*[K[..., i, k] for i in range(3) for k in range(3)])[:3], None
-    s = np.stack(np.broadcast_arrays(*s), axis=-1)
-    vers = -0.5 * np.trace(K, axis1=-2, axis2=-1)                 # 1 - cos phi, exact from K
+    s1, s2, s3, vers = np.broadcast_arrays(*_gen.sg_pole_parts(*[K[..., i, k] for i in range(3) for k in range(3)]))
+    s = np.stack([s1, s2, s3], axis=-1)                           # sin(phi) k
+    vers = np.asarray(vers, dtype=float)                          # 1 - cos(phi), from the trace of K
     sin = np.linalg.norm(s, axis=-1)
     angle = np.arctan2(sin, 1.0 - vers)
     # symmetric part: S = (K + K^T)/2 = vers (k k^T - I); columns of S + vers I = vers k k^T
