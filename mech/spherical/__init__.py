@@ -1,6 +1,6 @@
 """Spherical mechanisms: the spherical calculus, the spherical four-bar and its types, the
-side-angle laws of spherical polygons, the transference principle and function generation
-(the spherical monograph, chapters 1, 5, 6 and 7).
+side-angle laws of spherical polygons, the transference principle, function generation and
+rigid-body guidance (the spherical monograph, chapters 1, 3, 5, 6 and 7).
 
 Conventions (``CONVENTIONS.md``): the sphere has unit radius, arcs are radians in (0, pi),
 points are unit 3-vectors in arrays of shape ``(..., 3)``, and ``lon`` is 0 at the poles.
@@ -63,6 +63,27 @@ from mech.spherical._special import (
     spherical_slider_crank,
     universal_joint,
 )
+from mech.spherical.guidance import (
+    SphericalBurmesterCurve,
+    SphericalBurmesterPoints,
+    SphericalDyad,
+    SphericalGuidanceFourBar,
+    burmester,
+    circle_point_curve,
+    crank_residual,
+    dyad_for_centre_point,
+    dyad_for_circle_point,
+    guidance_fourbars,
+    guidance_slider_crank,
+    planar_orientations,
+    pole_triangle,
+    relative_rotation,
+    rotation_pole,
+    slider_dyad_for_point,
+    slider_dyads,
+    slider_point_curve,
+    slider_residual,
+)
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
@@ -78,6 +99,25 @@ __all__ = [
     "SphericalFourBarPose",
     "SphericalPolygon",
     "SphericalType",
+    "SphericalBurmesterCurve",
+    "SphericalBurmesterPoints",
+    "SphericalDyad",
+    "SphericalGuidanceFourBar",
+    "burmester",
+    "circle_point_curve",
+    "crank_residual",
+    "dyad_for_centre_point",
+    "dyad_for_circle_point",
+    "guidance_fourbars",
+    "guidance_slider_crank",
+    "planar_orientations",
+    "pole_triangle",
+    "relative_rotation",
+    "rotation_pole",
+    "slider_dyad_for_point",
+    "slider_dyads",
+    "slider_point_curve",
+    "slider_residual",
     "angle_at",
     "angle_between",
     "antipode_reduction",

@@ -1,0 +1,533 @@
+"""Burmester theory on the sphere (the spherical monograph, §3.3 to §3.6): the slider-point
+cubic of three orientations, the circle-point and centre-point cubics and the slider points
+of four, and the Burmester points of five, the real roots of a sextic.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from mech._validate import nonnegative_int, nonnegative_number, real_array
+from mech.spherical.guidance._dyads import SphericalDyad, arc_between, make_dyad
+from mech.spherical.guidance._orientations import _axis_angle, _parts, orientation_set
+
+__all__ = ["SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve",
+           "burmester", "slider_dyads"]
+
+
+@dataclass(frozen=True)
+class SphericalBurmesterCurve:
+    """A Burmester cubic on the sphere, traced by great circles through a pole.
+
+    The great circle through ``pole`` at direction ``phi[i]`` meets the cubic cone in the
+    pole and in two more axes, ``k = 0, 1``.
+
+    Attributes
+    ----------
+    phi : ndarray, shape (m,)
+        Directions of the tracing great circles at the pole, radians in [0, pi).
+    circle_point : ndarray, shape (m, 2, 3)
+        Circle points (or slider points) in body coordinates; NaN where not real.
+    moving_pivot : ndarray, shape (m, 2, 3)
+        The same in the ground frame at the first orientation (the circle-point curve).
+    centre_point : ndarray, shape (m, 2, 3)
+        Their centre points (the centre-point curve), or the guides' poles for sliders.
+    arc : ndarray, shape (m, 2)
+        Crank arcs in (0, pi/2].
+    valid : ndarray of bool, shape (m, 2)
+        True where the point is real.
+    pole : ndarray, shape (3,)
+        The pole (ground frame) the tracing great circles pass through.
+    """
+
+    phi: np.ndarray
+    circle_point: np.ndarray
+    moving_pivot: np.ndarray
+    centre_point: np.ndarray
+    arc: np.ndarray
+    valid: np.ndarray
+    pole: np.ndarray
+
+    def dyad(self, i, k):
+        """The `SphericalDyad` at tracing circle `i`, point `k` (0 or 1); it must be valid."""
+        i = nonnegative_int("i", i, self.phi.size - 1)
+        k = nonnegative_int("k", k, 1)
+        if not self.valid[i, k]:
+            raise ValueError(f"Expected a valid (real) point of the curve, got i = {i}, k = {k}")
+        return SphericalDyad(self.circle_point[i, k].copy(), self.moving_pivot[i, k].copy(),
+                             self.centre_point[i, k].copy(), float(self.arc[i, k]))
+
+
+@dataclass(frozen=True)
+class SphericalBurmesterPoints:
+    """The Burmester dyads of five orientations (returned by `burmester`).
+
+    Attributes
+    ----------
+    dyads : tuple of SphericalDyad
+        Every real solution (0, 2, 4 or 6), sorted by arc.
+    n_complex : int
+        The number of complex (unusable) solutions among the six.
+    residual : float
+        Largest design-equation residual (4) over the real dyads, each equation scaled by
+        the size of its displacement.
+    sextic : ndarray of complex, shape (7,)
+        Coefficients (lowest degree first) of the sextic (10) in ``x = exp(2j*phi)``, phi
+        the direction at ``pole`` of the great circle through a Burmester point; real
+        solutions are its roots with ``|x| = 1``.
+    pole : ndarray, shape (3,)
+        The pole the directions are measured at.
+    """
+
+    dyads: tuple
+    n_complex: int
+    residual: float
+    sextic: np.ndarray
+    pole: np.ndarray
+
+
+def _basis(P):
+    """Two unit vectors completing the unit vector P to a right-handed frame."""
+    a = np.array([1.0, 0.0, 0.0]) if abs(P[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    e1 = np.cross(P, a)
+    e1 /= np.linalg.norm(e1)
+    return e1, np.cross(P, e1)
+
+
+def _det(a, b, c):
+    return np.sum(a * np.cross(b, c), axis=-1)
+
+
+def _cubic_on_circles(M, P, v):
+    """Coefficients c1, c2, c3 of det[M_k (P + r v)] / r on great circles through P.
+
+    ``M`` is three 3x3 matrices; P a point of the cubic (c0 = 0); ``v`` shape (m, 3).
+    """
+    a = [Mk @ P for Mk in M]
+    b = [v @ Mk.T for Mk in M]
+    c1 = _det(b[0], a[1], a[2]) + _det(a[0], b[1], a[2]) + _det(a[0], a[1], b[2])
+    c2 = _det(a[0], b[1], b[2]) + _det(b[0], a[1], b[2]) + _det(b[0], b[1], a[2])
+    c3 = _det(b[0], b[1], b[2])
+    return c1, c2, c3
+
+
+def _trace(M, P, phi):
+    """The two further axes of the cubic det[M_k w] = 0 on each great circle through P."""
+    e1, e2 = _basis(P)
+    v = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
+    c1, c2, c3 = _cubic_on_circles(M, P, v)
+    scale = np.maximum(np.max(np.abs(np.stack([c1, c2, c3])), axis=0), np.finfo(float).tiny)
+    c1, c2, c3 = c1 / scale, c2 / scale, c3 / scale
+    disc = c2 * c2 - 4.0 * c1 * c3
+    with np.errstate(invalid="ignore"):
+        q = -0.5 * (c2 + np.where(c2 >= 0.0, 1.0, -1.0) * np.sqrt(np.where(disc >= 0.0, disc, np.nan)))
+    # the roots r = q / c3 and r = c1 / q, homogeneous: w ~ c3 P + q v and w ~ q P + c1 v
+    w = np.stack([c3[:, None] * P + q[:, None] * v, q[:, None] * P + c1[:, None] * v], axis=1)
+    norm = np.linalg.norm(w, axis=-1, keepdims=True)
+    valid = (disc >= 0.0)[:, None] & (norm[..., 0] > 0.0)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        w = np.where(valid[..., None], w / norm, np.nan)
+    return w, valid
+
+
+def _null(rows):
+    """Unit null vectors of stacks of row sets (..., m, 3), by the SVD."""
+    return np.linalg.svd(rows)[2][..., -1, :]
+
+
+def _largest_pole(K):
+    """Index and unit axis of the displacement with the largest turn."""
+    axes, angles = _axis_angle(K)
+    j = int(np.argmax(angles))
+    if not angles[j] > 0.0:
+        raise ValueError("Expected orientations that differ, got `R` with all orientations equal")
+    return j, axes[j]
+
+
+def _curve(R, M, P, phi, rows_of, base_index):
+    w, valid = _trace(M, P, phi)
+    flat = np.where(valid[..., None], w, 0.0).reshape(-1, 3)
+    u = _null(rows_of(flat)).reshape(w.shape)
+    u = np.where(np.sum(u * w, axis=-1, keepdims=True) < 0.0, -u, u)
+    arc = arc_between(u, w)
+    valid &= arc > 0.0
+    z = np.einsum("ji,...j->...i", R[0], w)              # body coordinates: R_1^T w
+    nan = np.where(valid[..., None], 0.0, np.nan)
+    return SphericalBurmesterCurve(phi, z + nan, w + nan, u + nan, np.where(valid, arc, np.nan), valid, P)
+
+
+def _phis(samples, phi):
+    if phi is None:
+        samples = nonnegative_int("samples", samples, 10**7)
+        if samples < 1:
+            raise ValueError(f"Expected `samples` >= 1, got {samples}")
+        return np.arange(samples) * (np.pi / samples)
+    return real_array("phi", phi).reshape(-1)
+
+
+def circle_point_curve(R, *, samples=360, phi=None):
+    """The circle-point and centre-point curves of four orientations (§3.4), as curves.
+
+    The circle points of four orientations (body axes whose four positions lie on one
+    circle) form the cubic cone ``det[K_2 w, K_3 w, K_4 w] = 0`` (eq. (8)); their centres
+    form the centre-point cubic. Each great circle through the pole of the two orientations
+    that differ most meets the circle-point cubic in two more axes, the roots of a
+    quadratic; the great circles at ``samples`` directions trace the curve.
+
+    Parameters
+    ----------
+    R : array_like, shape (4, 3, 3)
+        Orientations.
+    samples : int, optional
+        Number of tracing directions over [0, pi), at least 1.
+    phi : array_like, optional
+        Tracing directions (radians) instead of `samples` even ones.
+
+    Returns
+    -------
+    SphericalBurmesterCurve
+        ``moving_pivot`` (the circle-point curve, ground frame at orientation 1),
+        ``centre_point`` (the centre-point curve), ``circle_point``, ``arc``, ``valid``.
+        Each axis is one point of the sphere; its antipode is on the curve too.
+
+    Raises
+    ------
+    ValueError
+        For a wrong number of orientations, bad input, or all four orientations equal.
+
+    Notes
+    -----
+    Eq. (8) of :ref:`deriv-spherical-guidance`. As the arcs shrink the curves tend to the
+    planar ones of `mech.planar.circle_point_curve` (tested).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spherical import circle_point_curve, rotation_matrix
+    >>> R = np.stack([rotation_matrix(a, t) for a, t in
+    ...               [([0, 0, 1], 0.0), ([0.2, 0.1, 1], 0.5), ([-0.3, 0.2, 1], 1.0), ([0.1, -0.4, 1], 1.4)]])
+    >>> curve = circle_point_curve(R, samples=60)
+    >>> w, u = curve.moving_pivot[curve.valid], curve.centre_point[curve.valid]
+    >>> arcs = np.stack([np.einsum("mi,mi->m", w @ (Rj @ R[0].T).T, u) for Rj in R])
+    >>> bool(np.max(np.ptp(arcs, axis=0)) < 1e-12)
+    True
+    """
+    R = orientation_set("R", R, (4,))
+    phi = _phis(samples, phi)
+    K = _parts(R[0], R[1:])
+    j, P = _largest_pole(K)
+
+    def rows_of(w):
+        return np.stack([w @ Kj.T for Kj in K], axis=1)
+
+    return _curve(R, list(K), P, phi, rows_of, j)
+
+
+def slider_point_curve(R, *, samples=360, phi=None):
+    """The slider points of three orientations (§3.3): a cubic curve on the sphere.
+
+    A body axis is a slider point when its three positions lie on one great circle,
+    ``det[w, D_21 w, D_31 w] = 0`` (eq. (7)); the guide's pole is the normal of that great
+    circle. The curve is traced like `circle_point_curve`, by great circles through the
+    pole P_12 (or P_13).
+
+    Parameters
+    ----------
+    R : array_like, shape (3, 3, 3)
+        Orientations.
+    samples : int, optional
+        Number of tracing directions over [0, pi).
+    phi : array_like, optional
+        Tracing directions instead of `samples` even ones.
+
+    Returns
+    -------
+    SphericalBurmesterCurve
+        ``circle_point`` (the slider points, body), ``moving_pivot`` (ground, orientation 1),
+        ``centre_point`` (the guides' poles) and ``arc`` (pi/2).
+
+    Raises
+    ------
+    ValueError
+        For a wrong number of orientations, bad input, or equal orientations.
+
+    Notes
+    -----
+    Eq. (7) of :ref:`deriv-spherical-guidance`. In the planar limit the cubic tends to the
+    slider-point circle of three poses (`mech.planar.slider_point_circle`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spherical import slider_point_curve, rotation_matrix
+    >>> R = np.stack([np.eye(3), rotation_matrix([0.2, 0.1, 1], 0.5), rotation_matrix([-0.3, 0.2, 1], 1.0)])
+    >>> curve = slider_point_curve(R, samples=30)
+    >>> bool(np.allclose(curve.arc[curve.valid], np.pi / 2))
+    True
+    """
+    R = orientation_set("R", R, (3,))
+    phi = _phis(samples, phi)
+    K = _parts(R[0], R[1:])
+    j, P = _largest_pole(K)
+
+    def rows_of(w):
+        return np.stack([w, w + w @ K[0].T, w + w @ K[1].T], axis=1)
+
+    return _curve(R, [np.eye(3), K[0], K[1]], P, phi, rows_of, j)
+
+
+def _polish(K, u, w):
+    """Newton steps on the six equations u^T K_j w = 0, |u| = |w| = 1."""
+    for _ in range(8):
+        F = np.concatenate([np.einsum("i,jik,k->j", u, K, w), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
+        J = np.zeros((6, 6))
+        J[:4, :3] = K @ w
+        J[:4, 3:] = np.einsum("i,jik->jk", u, K)
+        J[4, :3], J[5, 3:] = u, w
+        try:
+            step = np.linalg.solve(J, F)
+        except np.linalg.LinAlgError:
+            break
+        if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > 0.5:
+            break
+        u, w = u - step[:3], w - step[3:]
+        if np.max(np.abs(step)) <= 1e-16:
+            break
+    return u / np.linalg.norm(u), w / np.linalg.norm(w)
+
+
+def _deflate(coef, root):
+    """Divide the polynomial (lowest degree first) by (x - root); synthetic division."""
+    n = coef.size - 1
+    out = np.zeros(n, dtype=complex)
+    acc = coef[n]
+    for k in range(n - 1, -1, -1):
+        out[k] = acc
+        acc = coef[k] + root * acc
+    return out
+
+
+def burmester(R, *, imag_tol=1e-6):
+    """All Burmester dyads of five orientations: every spherical crank that meets all five.
+
+    The four design equations (4) are bilinear in the fixed axis u and the moving axis w;
+    they have six solutions (complex included). The circle points are the common points of
+    the circle-point cubics of orientations (1, a, b, c) and (1, a, b, d) less the three
+    points both contain for any data (the poles P_1a, P_1b and the image of P_ab). Great
+    circles through P_1a meet each cubic in two more points; they share one where the
+    resultant (9), a binary form of degree 8 in the circle's direction, vanishes; dividing
+    out the two known directions leaves the sextic (10). Its roots on the unit circle are
+    the real solutions, polished by Newton's method on the six equations.
+
+    Parameters
+    ----------
+    R : array_like, shape (5, 3, 3)
+        Orientations.
+    imag_tol : float, optional
+        A root x of the sextic counts as real when ``abs(abs(x) - 1)`` is at most this.
+
+    Returns
+    -------
+    SphericalBurmesterPoints
+        ``dyads`` (every real solution, by arc), ``n_complex``, ``residual``, ``sextic``.
+
+    Raises
+    ------
+    ValueError
+        For a wrong number of orientations, bad input, or orientations too special for
+        finitely many solutions (e.g. all turning about one axis).
+
+    Notes
+    -----
+    Eqs. (4), (8)-(10) of :ref:`deriv-spherical-guidance`. The resultant is sampled at 16
+    directions and its coefficients taken by a discrete Fourier transform, exact for a form
+    of degree 8. Near a double root (two Burmester points about to merge) the accuracy
+    drops to about sqrt(machine epsilon), before polishing. The planar counterpart has at
+    most four solutions (`mech.planar.burmester`); as the arcs shrink four spherical
+    solutions tend to the planar ones and the other two become complex.
+
+    Examples
+    --------
+    Example 2-15 of the planar chapter on a sphere of radius 1000 (arcs in milliradians
+    are close to the planar lengths 108.757, 186.698, 468.402, 1502.997 for the short
+    cranks; the long ones feel the curvature):
+
+    >>> import numpy as np
+    >>> from mech.spherical import burmester, planar_orientations
+    >>> P = [13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j]
+    >>> R = planar_orientations(np.radians([0.0, 8.88, 22.1, 63.68, -3.0]), P, 1e-3)
+    >>> found = burmester(R)
+    >>> [round(float(k.arc) * 1e3, 3) for k in found.dyads], found.n_complex
+    ([108.836, 187.013, 378.454, 823.233], 2)
+    """
+    R = orientation_set("R", R, (5,))
+    imag_tol = nonnegative_number("imag_tol", imag_tol)
+    K = _parts(R[0], R[1:])
+    sizes = np.linalg.norm(K, axis=(1, 2))
+    if np.any(sizes == 0.0):
+        raise ValueError("Expected five different orientations, got `R` with an orientation equal to the first")
+    K = K / sizes[:, None, None]
+    _, angles = _axis_angle(K * sizes[:, None, None])
+    # the pair (a, b) whose three spurious points are best separated
+    best = None
+    for a in range(4):
+        for b in range(a + 1, 4):
+            Kab = (K[b] * sizes[b] - K[a] * sizes[a])
+            rel = np.eye(3) + K[a].T * sizes[a]
+            _, ang_ab = _axis_angle(rel @ Kab)
+            score = min(angles[a], angles[b], ang_ab)
+            if best is None or score > best[0]:
+                best = (score, a, b)
+    _, a, b = best
+    c, d = [k for k in range(4) if k not in (a, b)]
+    Pa = _axis_angle(K[a] * sizes[a])[0]
+    Pb = _axis_angle(K[b] * sizes[b])[0]
+    Pab = _axis_angle((np.eye(3) + K[a].T * sizes[a]) @ (K[b] * sizes[b] - K[a] * sizes[a]))[0]
+    e1, e2 = _basis(Pa)
+    phi = np.arange(16) * (np.pi / 16)
+    v = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
+    f1, f2, f3 = _cubic_on_circles([K[a], K[b], K[c]], Pa, v)
+    g1, g2, g3 = _cubic_on_circles([K[a], K[b], K[d]], Pa, v)
+    rho = (f1 * g3 - f3 * g1) ** 2 - (f1 * g2 - f2 * g1) * (f2 * g3 - f3 * g2)
+    spectrum = np.fft.fft(rho) / 16.0
+    coef = np.array([spectrum[m % 16] for m in range(-4, 5)])        # x^0 .. x^8, x = exp(2j phi)
+    top = np.max(np.abs(coef))
+    if not top > 0.0:
+        raise ValueError("Expected five orientations with finitely many Burmester dyads, got `R` whose two "
+                         "cubics share a whole curve")
+    coef = coef / top
+    for S in (Pb, Pab):
+        s = S - (S @ Pa) * Pa
+        coef = _deflate(coef, np.exp(2j * np.arctan2(s @ e2, s @ e1)))
+    sextic = coef
+    roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
+    dyads, n_complex, worst = [], 6 - roots.size, 0.0
+    for x in roots:
+        if abs(abs(x) - 1.0) > imag_tol:
+            n_complex += 1
+            continue
+        ph = 0.5 * np.angle(x)
+        vv = np.cos(ph) * e1 + np.sin(ph) * e2
+        F = _cubic_on_circles([K[a], K[b], K[c]], Pa, vv[None])
+        G = _cubic_on_circles([K[a], K[b], K[d]], Pa, vv[None])
+        (h1,), (h2,), (h3,) = F
+        (k1,), (k2,), (k3,) = G
+        w = (h2 * k3 - h3 * k2) * Pa - (h1 * k3 - h3 * k1) * vv
+        w /= np.linalg.norm(w)
+        u = _null(np.stack([Kj @ w for Kj in K]))
+        u, w = _polish(K, u, w)
+        worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
+        z = R[0].T @ w
+        dyads.append(make_dyad(z, w, u, "R", R[0]))
+    dyads.sort(key=lambda k: float(k.arc))
+    return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa)
+
+
+def _pencil_resultant(Ma, Mb, P):
+    """Coefficients (x^0 .. x^8, x = exp(2j phi)) of the resultant (9) of the cubics
+    det[Ma_k w] and det[Mb_k w] on great circles through their common point P, with e1, e2."""
+    e1, e2 = _basis(P)
+    phi = np.arange(16) * (np.pi / 16)
+    v = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
+    f1, f2, f3 = _cubic_on_circles(Ma, P, v)
+    g1, g2, g3 = _cubic_on_circles(Mb, P, v)
+    rho = (f1 * g3 - f3 * g1) ** 2 - (f1 * g2 - f2 * g1) * (f2 * g3 - f3 * g2)
+    spectrum = np.fft.fft(rho) / 16.0
+    return np.array([spectrum[m % 16] for m in range(-4, 5)]), e1, e2
+
+
+def _common_point(Ma, Mb, P, e1, e2, x):
+    """The common point of the two cubics on the great circle through P at x = exp(2j phi)."""
+    ph = 0.5 * np.angle(x)
+    vv = np.cos(ph) * e1 + np.sin(ph) * e2
+    (h1,), (h2,), (h3,) = _cubic_on_circles(Ma, P, vv[None])
+    (k1,), (k2,), (k3,) = _cubic_on_circles(Mb, P, vv[None])
+    w = (h2 * k3 - h3 * k2) * P - (h1 * k3 - h3 * k1) * vv
+    return w / np.linalg.norm(w)
+
+
+def slider_dyads(R, *, imag_tol=1e-6):
+    """Every spherical slider through four orientations (§3.5): up to six slider points.
+
+    A slider point's four positions lie on one great circle, so it lies on the slider-point
+    cubics (7) of orientations (1, 2, 3) and (1, 2, 4). The two cubics meet in nine points;
+    three are the real pole P_12 and the two complex fixed directions of D_21 (where w and
+    D_21 w are parallel) and solve nothing. On great circles through P_12 the resultant (9)
+    has the complex directions as its roots x = 0 and x = infinity; what is left is again
+    a sextic, whose roots on the unit circle give the real slider points.
+
+    Parameters
+    ----------
+    R : array_like, shape (4, 3, 3)
+        Orientations.
+    imag_tol : float, optional
+        A root x of the sextic counts as real when ``abs(abs(x) - 1)`` is at most this.
+
+    Returns
+    -------
+    tuple of SphericalDyad
+        The real slider dyads (``centre_point`` the guide's pole, ``arc`` pi/2), each
+        polished so that its four positions lie on the guide to rounding.
+
+    Raises
+    ------
+    ValueError
+        For a wrong number of orientations, bad input, or orientations 1 and 2 equal.
+
+    Notes
+    -----
+    Eqs. (5), (7) and (9) of :ref:`deriv-spherical-guidance`. With a crank from
+    `circle_point_curve` each slider makes a crank-slider for four orientations
+    (`guidance_slider_crank`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spherical import slider_dyads, rotation_matrix
+    >>> R = np.stack([rotation_matrix(a, t) for a, t in
+    ...               [([0, 0, 1], 0.0), ([0.2, 0.1, 1], 0.5), ([-0.3, 0.2, 1], 1.0), ([0.1, -0.4, 1], 1.4)]])
+    >>> found = slider_dyads(R)
+    >>> all(abs(np.linalg.det(np.stack([R[j] @ k.circle_point for j in (0, 1, 2)]))) < 1e-13 for k in found)
+    True
+    """
+    R = orientation_set("R", R, (4,))
+    imag_tol = nonnegative_number("imag_tol", imag_tol)
+    K = _parts(R[0], R[1:])
+    if not np.any(K[0] != 0.0):
+        raise ValueError("Expected orientations 1 and 2 of `R` to differ, got equal ones")
+    P = _axis_angle(K[0])[0]
+    Ma, Mb = [np.eye(3), K[0], K[1]], [np.eye(3), K[0], K[2]]
+    coef, e1, e2 = _pencil_resultant(Ma, Mb, P)
+    top = np.max(np.abs(coef))
+    if not top > 0.0:
+        raise ValueError("Expected four orientations with finitely many slider points, got `R` whose "
+                         "slider cubics share a whole curve")
+    sextic = (coef / top)[1:8]                     # the roots x = 0 and infinity are the complex axes of D_21
+    roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
+    found = []
+    for x in roots:
+        if abs(abs(x) - 1.0) > imag_tol:
+            continue
+        w = _common_point(Ma, Mb, P, e1, e2, x)
+        rows = np.stack([w, w + K[0] @ w, w + K[1] @ w, w + K[2] @ w])
+        n = _null(rows)
+        # polish: w on the guide at all four orientations (Newton on n^T D_j w = 0, |n| = |w| = 1)
+        D = np.stack([np.eye(3)] + [np.eye(3) + Kj for Kj in K])
+        for _ in range(8):
+            F = np.concatenate([np.einsum("i,jik,k->j", n, D, w), [(n @ n - 1) / 2, (w @ w - 1) / 2]])
+            J = np.zeros((6, 6))
+            J[:4, :3] = D @ w
+            J[:4, 3:] = np.einsum("i,jik->jk", n, D)
+            J[4, :3], J[5, 3:] = n, w
+            try:
+                step = np.linalg.solve(J, F)
+            except np.linalg.LinAlgError:
+                break
+            if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > 0.5:
+                break
+            n, w = n - step[:3], w - step[3:]
+            if np.max(np.abs(step)) <= 1e-16:
+                break
+        n, w = n / np.linalg.norm(n), w / np.linalg.norm(w)
+        found.append(make_dyad(R[0].T @ w, w, n, "R", R[0]))
+    return tuple(found)
