@@ -88,8 +88,11 @@ def _evaluate(function, degree, linkage, points):
     safe = np.where(big > 0.0, big, 1.0)
     u = x / safe[..., None]
     n = np.sqrt(np.sum(u * u, axis=-1))
-    u = u / n[..., None]
+    # the origin is evaluated at (0, 0, 1) and then set to 0: F and grad vanish there
+    u = np.where((n > 0.0)[..., None], u / np.where(n > 0.0, n, 1.0)[..., None], [0.0, 0.0, 1.0])
     norm = big * n                                   # |x| without overflow
+    if degree is None:                               # not homogeneous: evaluate where given
+        u = x
     u = np.broadcast_to(u, shape + (3,)).reshape(-1, 3)
     flat_p = np.broadcast_to(p, shape + (9,)).reshape(-1, 9)
     one_linkage = p.ndim == 1
