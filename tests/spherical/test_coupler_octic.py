@@ -76,7 +76,8 @@ def test_mp_frame_is_ground_frame():
 
 @pytest.mark.parametrize("seed", range(6))
 def test_coupler_octic_mpmath_points_random_placement(seed):
-    """Points built at 50 digits lie on the generated octic and quartic to 1e-10 of |grad|."""
+    """Monograph §2.1: points built at 50 digits lie on the generated octic and quartic to
+    1e-10 of |grad| (random placement, both branches, the cone and the antipode)."""
     rng = np.random.default_rng(1400 + seed)
     params = _random_params(rng)
     worst, count = 0.0, 0

@@ -101,7 +101,7 @@ def _evaluate(function, degree, linkage, points):
     for s in range(0, u.shape[0], _BLOCK):
         blk = slice(s, s + _BLOCK)
         args = p if one_linkage else flat_p[blk].T
-        out = function(*u[blk].T, *args)
+        out = function(*np.ascontiguousarray(u[blk].T), *args)
         value[blk] = out[0]
         grad[blk] = np.stack(np.broadcast_arrays(*out[1:]), axis=-1)
     value, grad = value.reshape(shape), grad.reshape(shape + (3,))
