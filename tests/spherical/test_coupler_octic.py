@@ -153,7 +153,7 @@ def test_coupler_sextic_placed_mirrors_planar_points():
 @pytest.mark.parametrize("seed", range(5))
 def test_great_circle_meets_curve_at_most_8_times(seed):
     """Sign changes of Q along a great circle: at most 8, and as many as the parametric
-    curve (both branches) crosses the plane of that circle."""
+    curve of monograph §2.3 (both branches) crosses the plane of that circle."""
     rng = np.random.default_rng(1410 + seed)
     params = _random_params(rng)
     frame = ground_frame(*params[:3])
