@@ -106,7 +106,10 @@ async () => {
     hanChecked += chars.size;
     if (bad.length) problems.push(`Chinese characters drawn as missing glyphs in ${font}: ${bad.join('')}`);
   }
-  return {problems, hanChecked, images: imgs.length, math: document.querySelectorAll('mjx-container').length};
+  // Page weight: the page and every file it loaded, as sent (before any cache).
+  const entries = [...performance.getEntriesByType('navigation'), ...performance.getEntriesByType('resource')];
+  const bytes = entries.reduce((sum, e) => sum + (e.encodedBodySize || 0), 0);
+  return {problems, hanChecked, bytes, images: imgs.length, math: document.querySelectorAll('mjx-container').length};
 }
 """
 
@@ -320,7 +323,7 @@ def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=Non
     """Check ``pages`` (relative paths; default: all) of the build at ``root``.
 
     Returns ``{page: (problems, info)}``: a list of strings, and counts (images, typeset
-    formulas, Han characters checked, seconds).
+    formulas, Han characters checked, bytes loaded by the page, seconds).
     """
     root = Path(root)
     pages = built_pages(root) if pages is None else list(pages)

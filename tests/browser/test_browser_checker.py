@@ -9,6 +9,7 @@ The good page carries a working animation and 3-D view written to the contract o
 import pytest
 
 import _crawl
+from conftest import unavailable
 
 pytestmark = pytest.mark.slow
 
@@ -91,6 +92,18 @@ def test_good_page_has_no_problems(results):
     assert info["hanChecked"] >= 8  # 球面四杆机构, 连杆曲线, 曲柄摇杆 (distinct characters)
     assert info["images"] == 1
     assert (shots / "good.jpg").stat().st_size > 1000
+    assert 1000 < info["bytes"] < 20000  # the page and its svg
+
+
+@pytest.mark.parametrize("variable, value", [("MECH_BROWSER_TEST", "required"), ("CI", "true")])
+def test_missing_browser_fails_where_required(monkeypatch, variable, value):
+    monkeypatch.delenv("MECH_BROWSER_TEST", raising=False)
+    monkeypatch.delenv("CI", raising=False)
+    with pytest.raises(pytest.skip.Exception):
+        unavailable("no browser")
+    monkeypatch.setenv(variable, value)
+    with pytest.raises(pytest.fail.Exception, match="required"):
+        unavailable("no browser")
 
 
 def test_asset_folders_are_not_pages(results):

@@ -37,8 +37,12 @@ def test_derivation_page_offers_its_notebook(built, page):
     depth = page.count("/")
     href = "../" * depth + f"_sources/{page}.ipynb"
     assert re.search(rf'href="{re.escape(href)}"', html), f"no download link {href} on {page}.html"
-    assert "Run this derivation yourself" in html
-    assert f"jupyter execute {Path(page).name}.ipynb" in html
+    bs4 = pytest.importorskip("bs4")
+    note = bs4.BeautifulSoup(html, "html.parser").select_one("section .mech-run-notebook")
+    assert note is not None, f"no 'Run this derivation yourself' box on {page}.html"
+    assert note.find_previous_sibling().name == "h1"  # right under the title
+    text = " ".join(note.get_text(" ").split())
+    assert f"jupyter execute {Path(page).name}.ipynb" in text and "make setup" in text
     notebook = nbformat.read(built / "_sources" / f"{page}.ipynb", as_version=4)
     nbformat.validate(notebook)
     sources = "\n".join(c.source for c in notebook.cells if c.cell_type == "code")
