@@ -109,7 +109,10 @@ async () => {
   // Page weight: the page and every file it loaded, as sent (before any cache).
   const entries = [...performance.getEntriesByType('navigation'), ...performance.getEntriesByType('resource')];
   const bytes = entries.reduce((sum, e) => sum + (e.encodedBodySize || 0), 0);
-  return {problems, hanChecked, bytes, images: imgs.length, math: document.querySelectorAll('mjx-container').length};
+  // ... and without the theme, MathJax and other files under _static/ that all pages share.
+  const ownBytes = entries.filter((e) => !e.name.includes('/_static/'))
+    .reduce((sum, e) => sum + (e.encodedBodySize || 0), 0);
+  return {problems, hanChecked, bytes, ownBytes, images: imgs.length, math: document.querySelectorAll('mjx-container').length};
 }
 """
 
@@ -189,7 +192,8 @@ def serve(root):
 
 async def _check_animations(page, problems):
     anims = page.locator(".mech-anim")
-    for i in range(await anims.count()):
+    count = await anims.count()
+    for i in range(count):
         anim = anims.nth(i)
         name = f"animation {i + 1}"
         try:
@@ -227,11 +231,13 @@ async def _check_animations(page, problems):
                 problems.append(f"{name}: two slider values draw the same picture")
         except Exception as exc:  # a broken widget must not stop the crawl
             problems.append(f"{name}: {type(exc).__name__}: {exc}".splitlines()[0])
+    return count
 
 
 async def _check_views(page, problems):
     views = page.locator(".mech-view3d")
-    for i in range(await views.count()):
+    count = await views.count()
+    for i in range(count):
         view = views.nth(i)
         name = f"3-D view {i + 1}"
         try:
@@ -252,6 +258,7 @@ async def _check_views(page, problems):
                 problems.append(f"{name}: data-yaw/data-pitch stay {before} after a drag")
         except Exception as exc:
             problems.append(f"{name}: {type(exc).__name__}: {exc}".splitlines()[0])
+    return count
 
 
 async def _check_one(context, base, rel, screenshot_dir):
@@ -279,8 +286,8 @@ async def _check_one(context, base, rel, screenshot_dir):
             await page.wait_for_load_state("load")
             info = await page.evaluate(PAGE_CHECKS)
         problems.extend(info.pop("problems"))
-        await _check_animations(page, problems)
-        await _check_views(page, problems)
+        info["animations"] = await _check_animations(page, problems)
+        info["views3d"] = await _check_views(page, problems)
         if screenshot_dir is not None:
             shot = Path(screenshot_dir) / (rel.removesuffix(".html").replace("/", "__") + ".jpg")
             await page.screenshot(path=str(shot), full_page=True, type="jpeg", quality=70)
@@ -323,7 +330,8 @@ def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=Non
     """Check ``pages`` (relative paths; default: all) of the build at ``root``.
 
     Returns ``{page: (problems, info)}``: a list of strings, and counts (images, typeset
-    formulas, Han characters checked, bytes loaded by the page, seconds).
+    formulas, Han characters checked, bytes loaded by the page with and without the
+    shared files of ``_static/``, animations and 3-D views exercised, seconds).
     """
     root = Path(root)
     pages = built_pages(root) if pages is None else list(pages)

@@ -34,13 +34,19 @@ def crawl(chromium):
     t0 = time.perf_counter()
     results = _crawl.check_pages(HTML, PAGES, screenshot_dir=SHOTS, executable=chromium)
     seconds = time.perf_counter() - t0
-    weights = sorted(info.get("bytes", 0) for _, info in results.values())
-    html = sorted((HTML / page).stat().st_size for page in results)
+    def spread(values):
+        values = sorted(values)
+        return {"median": values[len(values) // 2], "max": values[-1]} if values else {}
+
+    infos = [info for _, info in results.values()]
     report = {
         "pages": len(results),
         "seconds": round(seconds, 1),
-        "bytes_loaded": {"median": weights[len(weights) // 2], "max": weights[-1]},
-        "html_bytes": {"median": html[len(html) // 2], "max": html[-1]},
+        "bytes_loaded": spread(info.get("bytes", 0) for info in infos),
+        "bytes_loaded_outside_static": spread(info.get("ownBytes", 0) for info in infos),
+        "html_bytes": spread((HTML / page).stat().st_size for page in results),
+        "animations": sum(info.get("animations", 0) for info in infos),
+        "views3d": sum(info.get("views3d", 0) for info in infos),
         "results": {page: {"problems": p, **info} for page, (p, info) in sorted(results.items())},
     }
     (SHOTS / "report.json").write_text(json.dumps(report, indent=1, ensure_ascii=False), encoding="utf-8")
