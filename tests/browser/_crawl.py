@@ -23,6 +23,7 @@ downloads a browser.
 
 import asyncio
 import functools
+import re
 import http.server
 import os
 import shutil
@@ -33,6 +34,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 SKIP_DIRS = {"_static", "_sources", "_images", "_sphinx_design_static", "_downloads"}
+PAGE_TIMEOUT = 150  # seconds for one page: load, checks and screenshot
 MISSING = "\U0010FFFD"  # a private-use code point that no installed font draws
 
 # Waits for MathJax, loads lazy images, then checks images, figures, math and Han glyphs.
@@ -261,6 +263,18 @@ async def _check_views(page, problems):
     return count
 
 
+REFRESH = re.compile(r"""<meta\s+http-equiv=["']refresh["']\s+content=["'][^"']*url=([^"'\s]+)""", re.I)
+
+
+def _redirect_target(root, rel):
+    """The target of a page that is only a ``<meta http-equiv="refresh">``, or None."""
+    text = (Path(root) / rel).read_text(encoding="utf-8", errors="replace")
+    match = REFRESH.search(text)
+    if match and len(text) < 2000:
+        return match.group(1)
+    return None
+
+
 async def _check_one(context, base, rel, screenshot_dir):
     page = await context.new_page()
     problems, seen_outside = [], []
@@ -299,7 +313,7 @@ async def _check_one(context, base, rel, screenshot_dir):
     return rel, problems, info
 
 
-async def _check_all(root, pages, screenshot_dir, tabs, executable):
+async def _check_all(root, pages, screenshot_dir, tabs, executable, page_timeout):
     from playwright.async_api import async_playwright
 
     results = {}
@@ -317,16 +331,26 @@ async def _check_all(root, pages, screenshot_dir, tabs, executable):
             async def one(rel):
                 async with gate:
                     t0 = time.perf_counter()
-                    rel_, problems, info = await _check_one(context, base, rel, screenshot_dir)
+                    target = _redirect_target(root, rel)
+                    if target is not None:  # the browser would leave it at once: check its target
+                        ok = (Path(root) / Path(rel).parent / target.split("#")[0]).is_file()
+                        results[rel] = ([] if ok else [f"redirects to a missing page: {target}"],
+                                        {"redirect": target, "seconds": 0.0})
+                        return
+                    try:
+                        _, problems, info = await asyncio.wait_for(
+                            _check_one(context, base, rel, screenshot_dir), timeout=page_timeout)
+                    except asyncio.TimeoutError:
+                        problems, info = [f"page not checked within {page_timeout} s"], {}
                     info["seconds"] = round(time.perf_counter() - t0, 2)
-                    results[rel_] = (problems, info)
+                    results[rel] = (problems, info)
 
             await asyncio.gather(*(one(rel) for rel in pages))
             await browser.close()
     return results
 
 
-def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=None):
+def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=None, page_timeout=PAGE_TIMEOUT):
     """Check ``pages`` (relative paths; default: all) of the build at ``root``.
 
     Returns ``{page: (problems, info)}``: a list of strings, and counts (images, typeset
@@ -340,4 +364,4 @@ def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=Non
     executable = executable or chromium_path()
     if executable is None:
         raise RuntimeError("no Chromium found (install the package `chromium`)")
-    return asyncio.run(_check_all(root, pages, screenshot_dir, tabs, executable))
+    return asyncio.run(_check_all(root, pages, screenshot_dir, tabs, executable, page_timeout))

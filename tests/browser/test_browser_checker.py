@@ -79,10 +79,15 @@ def results(chromium, tmp_path_factory):
     (root / "dot.svg").write_text(DOT_SVG, encoding="utf-8")
     (root / "good.html").write_text(GOOD, encoding="utf-8")
     (root / "bad.html").write_text(BAD, encoding="utf-8")
+    (root / "index.html").write_text('<meta http-equiv="Refresh" content="0; url=good.html" />', encoding="utf-8")
+    (root / "moved.html").write_text('<meta http-equiv="Refresh" content="0; url=gone.html" />', encoding="utf-8")
+    # MathJax that never finishes typesetting: the page must time out, not hang the crawl.
+    (root / "mathjax-never.js").write_text("window.MathJax = {startup: {promise: new Promise(() => {})}};")
+    (root / "hang.html").write_text('<script src="mathjax-never.js"></script><p>x</p>', encoding="utf-8")
     (root / "_static").mkdir()
     (root / "_static" / "skipped.html").write_text("<p>not a page</p>", encoding="utf-8")
     shots = root / "shots"
-    return _crawl.check_pages(root, screenshot_dir=shots, executable=chromium), shots
+    return _crawl.check_pages(root, screenshot_dir=shots, executable=chromium, page_timeout=60), shots
 
 
 def test_good_page_has_no_problems(results):
@@ -107,7 +112,16 @@ def test_missing_browser_fails_where_required(monkeypatch, variable, value):
 
 
 def test_asset_folders_are_not_pages(results):
-    assert sorted(results[0]) == ["bad.html", "good.html"]
+    assert sorted(results[0]) == ["bad.html", "good.html", "hang.html", "index.html", "moved.html"]
+
+
+def test_redirect_pages_are_checked_by_their_target(results):
+    assert results[0]["index.html"] == ([], {"redirect": "good.html", "seconds": 0.0})
+    assert results[0]["moved.html"][0] == ["redirects to a missing page: gone.html"]
+
+
+def test_a_page_that_never_settles_times_out(results):
+    assert results[0]["hang.html"][0] == ["page not checked within 60 s"]
 
 
 @pytest.mark.parametrize("needle", [

@@ -63,7 +63,8 @@ def test_book_is_built():
 def test_page_in_browser(crawl, page):
     problems, info = crawl[page]
     assert problems == [], f"{page}:\n" + "\n".join(problems)
-    assert (SHOTS / (page.removesuffix(".html").replace("/", "__") + ".jpg")).is_file()
+    if "redirect" not in info:
+        assert (SHOTS / (page.removesuffix(".html").replace("/", "__") + ".jpg")).is_file()
 
 
 def test_chinese_terms_were_checked(crawl):
