@@ -211,8 +211,7 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     k : int, optional
         Number of matches returned, 1 <= k <= shortlist.
     shortlist : int, optional
-        Entries taken from the signature stage to the exact alignment stage (for an open
-        arc, four times as many get a coarse alignment first).
+        Entries taken from the signature stage to the exact alignment stage.
     resampled : bool, optional
         True if a closed `target` is already at equal arc-length steps (used as given).
     closed : bool, optional
@@ -222,10 +221,11 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
         the input angle for a crank that turns fully) the arc is expected to cover, in
         (0, 1]; it places the sub-arcs of the signature stage, and the alignment frees it.
     starts : int, optional
-        For an open arc: sub-arcs per closed curve in the signature stage (their
-        signatures are computed on the first open query and kept with the atlas, in
-        float32: ``8 * harmonics * starts`` bytes per linkage, 82 MB for 10^4 linkages
-        at the defaults). Fewer starts save memory but rank the right linkage lower.
+        For an open arc: windows (sub-arcs) per closed curve in the signature stage. Their
+        signatures, four harmonics per side in float16, are computed on the first open
+        query and kept with the atlas: ``40 * starts`` bytes per linkage with their
+        squared norms and gaps, 26 MB for 10^4 linkages at the default (256 MB for 10^5).
+        Fewer starts save memory but rank the right linkage lower.
 
     Returns
     -------
@@ -245,8 +245,11 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     then removes the normalisation's sensitivity (a nearly circular first harmonic) by
     aligning exactly. Matches are linkages of the atlas scaled, turned and moved; their
     cognates trace the same curve with other pivots. An open arc is compared with the
-    signatures of sub-arcs of each closed curve (the arc run forward and back), then
-    aligned by a pattern search on the two ends of the sub-arc; its matches carry `arc`.
+    signatures of windows of each closed curve (the arc run forward and back), through
+    the distance to the segment between neighbouring windows' signatures, then aligned
+    by a pattern search on the two ends of the sub-arc; its matches carry `arc`. When
+    the arc's first harmonic is small (below about a tenth of its RMS radius) the
+    normalisation is ill-conditioned and the right linkage may be missed.
 
     Examples
     --------
