@@ -18,7 +18,9 @@ Three choices keep this sharp, fast and small:
   previous window's (any of the four represents the window, since the target is compared
   in all four of its own), so neighbouring windows lie on one smooth path;
 - windows keep the first `ARC_HARMONICS` harmonics per side only, in float16: 2 bytes *
-  4 * 4 harmonics * 64 starts = 2 kB per linkage (20 MB for 10^4 linkages, 205 MB for 10^5).
+  4 * 4 harmonics * 65 windows = 2 kB per linkage, 2.6 kB with the float32 squared norms
+  and segment lengths (26 MB for 10^4 linkages, 260 MB for 10^5; built in blocks of
+  `_ROWS` linkages, so the build needs little more).
 
 The alignment stage then frees both ends of the sub-arc: a pattern search on the arc
 length at its two ends, each step fitting the best similarity (place, turn and scale) of the
@@ -114,11 +116,12 @@ def _u_to_length(cum, u):
 def arc_signatures(atlas, span, starts):
     """Window signatures of every atlas curve; cached on the atlas.
 
-    Returns ``(sigs, norms, gaps)``: ``sigs`` (rows, starts, 4 * ARC_HARMONICS) float16,
-    window ``j`` covering the curve parameter from ``u_0 + 2 pi j / starts`` to that plus
-    ``2 pi span``, in the normal form nearest the previous window's; ``norms`` (rows,
-    starts) float32, their squared norms; ``gaps`` (rows, starts) float32, the squared
-    distance from window j's signature to window j + 1's (the segment's length).
+    Returns ``(sigs, norms, gaps)``: ``sigs`` (rows, starts + 1, 4 * ARC_HARMONICS)
+    float16, window ``j`` covering the curve parameter from ``u_0 + 2 pi j / starts`` to
+    that plus ``2 pi span``, in the normal form nearest the previous window's (window
+    ``starts`` is window 0 again, tracked round the cycle); ``norms`` (rows, starts + 1)
+    float32, their squared norms; ``gaps`` (rows, starts) float32, the squared distance
+    from window j's signature to window j + 1's (the segment's length).
     """
     cache = atlas._arc_cache
     key = (float(span), int(starts))
@@ -127,36 +130,39 @@ def arc_signatures(atlas, span, starts):
     n = atlas.samples
     points = n // 2 + 1
     size = _WINDOW_TABLE
-    first = (np.arange(starts) * size) // starts
+    # window `starts` is window 0 again, in the normal form tracked from window starts - 1,
+    # so the last segment closes the path without a jump between normal forms
+    first = (np.arange(starts + 1) * size) // starts
     last = first + int(round(span * size))
     f = np.linspace(0.0, 1.0, points)
     width = 4 * min(ARC_HARMONICS, atlas.harmonics)
-    sigs = np.empty((len(atlas), starts, width), dtype=np.float16)
+    windows = starts + 1
+    sigs = np.empty((len(atlas), windows, width), dtype=np.float16)
     for lo in range(0, len(atlas), _ROWS):
         rows = np.arange(lo, min(lo + _ROWS, len(atlas)))
         cum, table, _, fine = curve_tables(atlas.linkages.take(rows).columns(), size, with_u=False)
         x0 = cum[:, first]
         x1 = np.where(last[None, :] <= size, cum[:, np.minimum(last, size)], 1.0 + cum[:, last % size])
         x = x0[:, :, None] + (x1 - x0)[:, :, None] * f[None, None, :]
-        arcs = _lerp(table, x.reshape(rows.size, -1), 0).reshape(rows.size * starts, points)
+        arcs = _lerp(table, x.reshape(rows.size, -1), 0).reshape(rows.size * windows, points)
         # a window of no length (the coupler point still while u runs, as at a dead centre)
         # has no shape: it gets a signature far from any other
-        still = ~(np.max(np.abs(arcs - arcs[:, :1]), axis=1) > 0.0) | np.repeat(~fine, starts)
+        still = ~(np.max(np.abs(arcs - arcs[:, :1]), axis=1) > 0.0) | np.repeat(~fine, windows)
         arcs = np.where(still[:, None], np.arange(points)[None, :], arcs)
         # the first harmonics only (the normalisation uses all of them, so these are the
         # first entries of the full signature)
         form = normal_form(_close_arc(arcs), width // 4)
-        cands = form.candidates.reshape(rows.size, starts, 4, width)
-        out = np.empty((rows.size, starts, width))
-        out[:, 0] = cands[np.arange(rows.size), 0, form.chosen.reshape(rows.size, starts)[:, 0]]
-        for j in range(1, starts):
+        cands = form.candidates.reshape(rows.size, windows, 4, width)
+        out = np.empty((rows.size, windows, width))
+        out[:, 0] = cands[np.arange(rows.size), 0, form.chosen.reshape(rows.size, windows)[:, 0]]
+        for j in range(1, windows):
             pick = np.argmin(np.sum((cands[:, j] - out[:, j - 1, None, :]) ** 2, axis=2), axis=1)
             out[:, j] = cands[np.arange(rows.size), j, pick]
-        out[still.reshape(rows.size, starts)] = _FAR
+        out[still.reshape(rows.size, windows)] = _FAR
         sigs[rows] = out
     wide = sigs.astype(np.float32)
     norms = np.sum(wide * wide, axis=2)
-    gaps = np.sum((np.roll(wide, -1, axis=1) - wide) ** 2, axis=2)
+    gaps = np.sum((wide[:, 1:] - wide[:, :-1]) ** 2, axis=2)
     cache[key] = (sigs, norms, gaps)
     return cache[key]
 
@@ -164,8 +170,8 @@ def arc_signatures(atlas, span, starts):
 def window_distances(sigs, norms, gaps, candidates):
     """Per row: the least distance from any of the target's `candidates` (4, D) to the
     polyline through its window signatures, the window j of that segment and the fraction
-    (0..1) along it towards window j + 1. The last window's segment runs back to the first."""
-    rows, starts, width = sigs.shape
+    (0..1) along it towards window j + 1."""
+    rows, windows, width = sigs.shape
     c = np.asarray(candidates, dtype=np.float32)
     cc = np.sum(c.astype(np.float64) ** 2, axis=1).astype(np.float32)
     best = np.empty(rows)
@@ -179,9 +185,10 @@ def window_distances(sigs, norms, gaps, candidates):
         d2 = norms[block, :, None] - 2.0 * np.einsum("ijk,lk->ijl", s, c) + cc
         d2 = np.maximum(d2, 0.0)
         e2 = gaps[block, :, None]
-        half = 0.5 * (np.roll(d2, -1, axis=1) - d2 - e2)           # (S_j+1 - S_j) . (S_j - T)
+        here = d2[:, :-1]
+        half = 0.5 * (d2[:, 1:] - here - e2)                      # (S_j+1 - S_j) . (S_j - T)
         lam = np.clip(-half / np.maximum(e2, 1e-30), 0.0, 1.0)
-        seg = d2 + lam * (2.0 * half + lam * e2)
+        seg = here + lam * (2.0 * half + lam * e2)
         flat = seg.reshape(b, -1)
         k = np.argmin(flat, axis=1)
         best[block] = flat[np.arange(b), k]
@@ -210,18 +217,18 @@ def _fit_tables(targets, table, rows, x0, x1):
 _MOVES = np.array([(1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1), (-1, 1), (1, -1)], dtype=float)
 
 
-def align_arcs(t, linkages, u0, u1, step, levels=_LEVELS):
+def align_arcs(t, linkages, u0, u1, step, levels=_LEVELS, size=_TABLE):
     """Best sub-arc [u0, u1] and direction of each linkage's curve for the open target `t`.
 
     A pattern search from the given ends (arrays over rows): at each round every row takes
     the best of eight moves (either end, both together, both apart) by `step` (a fraction
     of the curve's length), if it helps; the step is halved `levels` times. Both directions
     of the target run side by side; every trial reads the curve from its table at equal
-    arc-length steps, all rows and moves in one evaluation.
+    arc-length steps (`size` per cycle), all rows and moves in one evaluation.
     Returns (error, w, centroid, points, u0, u1, direction) per row, for the better way.
     """
     rows = len(linkages)
-    cum, table, u_at, fine = curve_tables(linkages.columns())
+    cum, table, u_at, fine = curve_tables(linkages.columns(), size)
     X0 = _u_to_length(cum, np.asarray(u0, float)[:, None])[:, 0]
     X1 = _u_to_length(cum, np.asarray(u1, float)[:, None])[:, 0]
     X1 = np.where(X1 <= X0, X1 + 1.0, X1)

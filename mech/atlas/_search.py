@@ -24,6 +24,11 @@ _BLOCK = 1 << 15
 _UPSAMPLE = 16
 _DENSE = 4
 _REFINE = 8
+#: An open arc: rows given a coarse alignment, per row of the short list, and its halvings.
+_ARC_WIDER = 4
+_ARC_COARSE = 4
+#: Points per cycle of the curve tables of the coarse alignment.
+_COARSE_TABLE = 512
 _LEVELS = 6
 
 
@@ -211,7 +216,8 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     k : int, optional
         Number of matches returned, 1 <= k <= shortlist.
     shortlist : int, optional
-        Entries taken from the signature stage to the exact alignment stage.
+        Entries taken from the signature stage to the exact alignment stage (for an open
+        arc, four times as many get a coarse alignment first).
     resampled : bool, optional
         True if a closed `target` is already at equal arc-length steps (used as given).
     closed : bool, optional
@@ -223,8 +229,8 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     starts : int, optional
         For an open arc: windows (sub-arcs) per closed curve in the signature stage. Their
         signatures, four harmonics per side in float16, are computed on the first open
-        query and kept with the atlas: ``40 * starts`` bytes per linkage with their
-        squared norms and gaps, 26 MB for 10^4 linkages at the default (256 MB for 10^5).
+        query and kept with the atlas: about ``40 * starts`` bytes per linkage with their
+        squared norms and gaps, 26 MB for 10^4 linkages at the default (260 MB for 10^5).
         Fewer starts save memory but rank the right linkage lower.
 
     Returns
@@ -329,14 +335,20 @@ def _query_arc(atlas, z, k, shortlist, span, starts):
     form = normal_form(_close_arc(t), atlas.harmonics)
     sigs, norms, gaps = arc_signatures(atlas, span, starts)
     best, where, frac = window_distances(sigs, norms, gaps, _truncate(form.candidates[0], atlas.harmonics))
-    m = min(shortlist, len(atlas))
+    # a window's signature is less sharp than a closed curve's (its normalisation rests on
+    # the arc's first harmonic, which is often small): a longer list gets a coarse
+    # alignment, the best `shortlist` of it the full one
+    m = min(_ARC_WIDER * shortlist, len(atlas))
     short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
-    short = short[np.argsort(best[short], kind="stable")]
     # the start of the window (and the fraction of a step towards the next) that fits best
     u0 = 2 * np.pi * (where[short] + frac[short]) / starts + np.pi / _WINDOW_TABLE
+    step = 0.5 / starts
+    err, *_, u0, u1, _ = align_arcs(t[0], atlas.linkages.take(short), u0, u0 + 2 * np.pi * span, step,
+                                    levels=_ARC_COARSE, size=_COARSE_TABLE)
+    keep = np.argsort(err, kind="stable")[:min(shortlist, m)]
+    short, u0, u1 = short[keep], u0[keep], u1[keep]
     rows = atlas.linkages.take(short)
-    err, w, centroid, points, u0, u1, direction = align_arcs(t[0], rows, u0, u0 + 2 * np.pi * span,
-                                                             0.5 / starts)
+    err, w, centroid, points, u0, u1, direction = align_arcs(t[0], rows, u0, u1, step / 2**_ARC_COARSE)
     radius = np.sqrt(np.mean(np.abs(t[0] - t[0].mean()) ** 2))
     return [_match(rank, int(short[j]), rows.take([j]), t[0], w[j], centroid[j], err[j], radius, direction[j],
                    float(best[short[j]]), points[j], arc=(float(u0[j]), float(u1[j])))

@@ -51,17 +51,19 @@ def test_query_open_arc_exact(atlas):
 
 
 def test_query_open_arc_caches_window_signatures(atlas):
-    """Window signatures: float16, four harmonics per side, 2 kB per linkage at 64 starts."""
+    """Window signatures: float16, four harmonics per side, 65 windows (the first again at
+    the end, so the path of signatures closes), about 2 kB per linkage at 64 starts."""
     from mech.atlas._arcs import ARC_HARMONICS
 
     query(atlas, [0, 1, 1 + 1j, 2 + 1j], closed=False, k=1)
     sigs, norms, gaps = atlas._arc_cache[(0.5, 64)]
-    assert sigs.dtype == np.float16 and sigs.shape == (len(atlas), 64, 4 * ARC_HARMONICS)
-    assert norms.dtype == np.float32 and gaps.dtype == np.float32 and norms.shape == gaps.shape == (len(atlas), 64)
-    assert sigs.nbytes / len(atlas) == 2048
-    # the gaps are the squared distances between neighbouring windows, the last back to the first
+    assert sigs.dtype == np.float16 and sigs.shape == (len(atlas), 65, 4 * ARC_HARMONICS)
+    assert norms.dtype == np.float32 and gaps.dtype == np.float32
+    assert norms.shape == (len(atlas), 65) and gaps.shape == (len(atlas), 64)
+    assert sigs.nbytes / len(atlas) == 2080
+    # the gaps are the squared distances between neighbouring windows
     wide = sigs.astype(np.float64)
-    assert np.allclose(gaps[:, -1], np.sum((wide[:, 0] - wide[:, -1]) ** 2, axis=1), rtol=1e-5, atol=1e-6)
+    assert np.allclose(gaps, np.sum(np.diff(wide, axis=1) ** 2, axis=2), rtol=1e-5, atol=1e-6)
 
 
 def test_window_segments_rank_half_step_targets_first(atlas):
