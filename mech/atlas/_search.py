@@ -301,7 +301,7 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     err, w, centroid, radius, curves, direction = _best_fits(t[0], dense, max(k, _REFINE))
     return [_match(rank, int(short[j]), atlas.linkages.take([short[j]]), t[0], w[j], centroid[j], err[j],
                    radius, direction[j], float(dist[j]), curves[j])
-            for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+            for rank, j in enumerate(np.argsort(np.where(np.isnan(w), np.inf, err), kind="stable")[:k])]
 
 
 def _nearest(atlas, candidates, m):
