@@ -6,7 +6,10 @@ Layers, each usable alone:
   that does not depend on where a curve lies, its size, its turn, its start or its direction
   (derivation page :ref:`deriv-shape-signature`);
 - a sampled design space of planar four-bars (`sample_fourbars`, `FourBarSamples`) with
-  the Grashof type, assembly branch, input range and minimum transmission angle of each;
+  the Grashof type, assembly branch, input range and minimum transmission angle of each,
+  and one of slider-cranks with a coupler point on the rod (`sample_slider_cranks`,
+  `SliderCrankSamples`; ``build_atlas(..., mechanism="slider-crank")``, searched by the
+  same `query`, whose matches then carry a `PlacedSliderCrank` and no cognates);
 - the atlas itself (`build_atlas`, `Atlas`, stored as Parquet through pyarrow) and its
   search (`query`, returning `Match` records placed on the target, with the two
   Roberts-Chebyshev cognates of each match; an open arc is matched against parts of
@@ -26,7 +29,8 @@ from mech.atlas._signature import curve_signature, read_points, resample
 from mech.atlas._sampling import FourBarSamples, sample_fourbars
 from mech.atlas._store import ATLAS_VERSION, Atlas
 from mech.atlas._build import build_atlas
-from mech.atlas._search import Match, PlacedLinkage, query, refine
+from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query, refine
+from mech.atlas._slider import SliderCrankSamples, sample_slider_cranks
 from mech.atlas._multistart import find_linkages
 from mech.atlas._sphere import SphereAtlas, SphereMatch, build_sphere_atlas, query_sphere, sphere_signature
 
@@ -36,6 +40,8 @@ __all__ = [
     "FourBarSamples",
     "Match",
     "PlacedLinkage",
+    "PlacedSliderCrank",
+    "SliderCrankSamples",
     "SphereAtlas",
     "SphereMatch",
     "build_atlas",
@@ -48,5 +54,6 @@ __all__ = [
     "refine",
     "resample",
     "sample_fourbars",
+    "sample_slider_cranks",
     "sphere_signature",
 ]

@@ -18,7 +18,7 @@ from mech.atlas._signature import _close_arc, _curves, _resample_rows, _samples,
 from mech.atlas._store import Atlas
 from mech.planar.kinematics._fourbar import FourBar
 
-__all__ = ["Match", "PlacedLinkage", "query", "refine"]
+__all__ = ["Match", "PlacedLinkage", "PlacedSliderCrank", "query", "refine"]
 
 _BLOCK = 1 << 15
 _UPSAMPLE = 16
@@ -64,6 +64,49 @@ class PlacedLinkage:
 
 
 @dataclass(frozen=True)
+class PlacedSliderCrank:
+    """A slider-crank with a coupler point, in its standard frame, and the similarity that places it.
+
+    Attributes
+    ----------
+    name : str
+        "slider-crank".
+    slider : SliderCrank
+        The linkage at the target's scale in its standard frame (crank pivot A = 0, guide
+        the line y = e run in +x), as `mech.planar.SliderCrank`.
+    coupler : (float, float)
+        The coupler point ``(p, q)`` on the rod at the target's scale,
+        ``P = B + (p + 1j*q) * exp(1j*phi)``.
+    origin : complex
+        Where the crank pivot A lies in the target's frame.
+    rotation : float
+        Angle of the guide's +x direction in the target's frame, radians.
+    """
+
+    name: str
+    slider: object
+    coupler: tuple
+    origin: complex
+    rotation: float
+
+    def place(self, z):
+        """Map standard-frame points `z` into the target's frame: ``origin + exp(1j*rotation)*z``."""
+        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
+
+    @property
+    def pivots(self):
+        """The crank pivot A in the target's frame (one ground pivot)."""
+        return (self.origin,)
+
+    @property
+    def guide(self):
+        """The guide line in the target's frame: ``(point, direction)``, the foot of the
+        perpendicular from A and a unit complex number along +x of the standard frame."""
+        turn = np.exp(1j * self.rotation)
+        return complex(self.origin + turn * 1j * self.slider.e), complex(turn)
+
+
+@dataclass(frozen=True)
 class Match:
     """One linkage found by `query`, placed on the target.
 
@@ -73,11 +116,14 @@ class Match:
         0 for the best match.
     index : int
         Its row in the atlas.
-    linkage : PlacedLinkage
-        The match, scaled and placed so that its coupler curve lies on the target.
+    linkage : PlacedLinkage or PlacedSliderCrank
+        The match, scaled and placed so that its coupler curve lies on the target (a
+        `PlacedSliderCrank` for an atlas of slider-cranks).
     cognates : tuple of PlacedLinkage
         Its two Roberts-Chebyshev cognates AEGK and DFHK, placed on the target (they trace
-        the same curve); empty if the coupler point lies on a pin (no cognates).
+        the same curve); empty if the coupler point lies on a pin (no cognates), and empty
+        for a slider-crank: its one slider-crank cognate (Roberts' law as a limit of the
+        four-bar's) is not computed by the package.
     direction : int
         +1 if the target is run in the direction of the stored curve (input angle
         increasing along the curve as sampled), -1 if against it.
@@ -385,15 +431,24 @@ def _best_fits(t, dense, keep, levels=None):
 
 
 def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, curve, refined=False, arc=None):
-    """The `Match` of one linkage (a one-row FourBarSamples) placed by ``z -> origin + w z``."""
-    a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
+    """The `Match` of one linkage (a one-row FourBarSamples or SliderCrankSamples) placed by
+    ``z -> origin + w z``."""
     branch = int(row.branch[0])
     origin = t.mean() - w * centroid
     s = abs(w)
-    unit = FourBar(a, b, c, d, branch=branch, coupler=(p, q))
-    return Match(rank, index, PlacedLinkage("ABCD", _scaled(a, b, c, d, p, q, branch, s), complex(origin),
-                                            float(np.angle(w))),
-                 _placed_cognates(unit, origin, w), int(direction), float(err), float(err / radius), distance,
+    if hasattr(row, "e"):
+        from mech.planar.kinematics._slider_crank import SliderCrank
+
+        a, b, e, p, q = (float(getattr(row, k)[0] * s) for k in "abepq")
+        placed = PlacedSliderCrank("slider-crank", SliderCrank(a, b, e, branch=branch), (p, q), complex(origin),
+                                   float(np.angle(w)))
+        cognates = ()
+    else:
+        a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
+        unit = FourBar(a, b, c, d, branch=branch, coupler=(p, q))
+        placed = PlacedLinkage("ABCD", _scaled(a, b, c, d, p, q, branch, s), complex(origin), float(np.angle(w)))
+        cognates = _placed_cognates(unit, origin, w)
+    return Match(rank, index, placed, cognates, int(direction), float(err), float(err / radius), distance,
                  str(row.kind[0]), float(row.gamma_min[0]), bool(row.full_turn[0]),
                  (float(row.theta_lo[0]), float(row.theta_hi[0])), origin + w * curve, refined, arc)
 
@@ -463,6 +518,9 @@ def refine(match, target, *, samples=128, iterations=400):
     from mech.planar.synthesis import DesignModel, penalty_method
 
     instance("match", match, Match)
+    if not isinstance(match.linkage, PlacedLinkage):
+        raise ValueError(f"Expected `match` of a four-bar (refine does not move slider-cranks), got a match "
+                         f"of a {match.linkage.name}")
     samples = _samples(samples, harmonics=1)
     iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
     z, lead = _curves(target, True, "target")
