@@ -1233,6 +1233,10 @@ _SQUARE = [0, 1, 1 + 1j, 1j]
 _SPHERE_CURVE = [[0.6, 0.0, 0.8], [0.0, 0.6, 0.8], [-0.6, 0.0, 0.8], [0.0, -0.5, 0.8], [0.3, -0.3, 0.9]]
 
 
+def _small_slider_atlas():
+    return at.build_atlas(40, seed=1, mechanism="slider-crank")
+
+
 def _small_sphere_atlas():
     return at.build_sphere_atlas(8, seed=1, harmonics=3, samples=16)
 CASES.update({
@@ -1260,6 +1264,26 @@ CASES.update({
                             "block": "count", "progress": "bool", "resume": "bool"},
                            n=30, seed=2, harmonics=4, samples=32, lengths=(0.2, 5.0), coupler=(-1.0, 2.0, -1.0, 1.0),
                            min_transmission=0.0, block=64, progress=False, resume=False),
+    "atlas.build_atlas#slider-crank": E(lambda: at.build_atlas,
+                                         {"n": "count", "lengths": ("scalar", lambda v: (v, 5.0)),
+                                          "offsets": ("scalar", lambda v: (v, 2.0)), "mechanism": "option"},
+                                         n=20, lengths=(0.3, 5.0), offsets=(-2.0, 2.0), mechanism="slider-crank",
+                                         block=64),
+    "atlas.sample_slider_cranks": E(lambda: at.sample_slider_cranks,
+                                    {"n": "count", "seed": "seed", "rods": ("scalar", lambda v: (v, 5.0)),
+                                     "offsets": ("scalar", lambda v: (v, 2.0)),
+                                     "coupler": ("scalar", lambda v: (v, 2.0, -1.0, 1.0)), "branch": "branch?",
+                                     "min_transmission": "scalar"},
+                                    n=20, seed=3, rods=(0.3, 5.0), offsets=(-2.0, 2.0), coupler=(-1.0, 2.0, -1.0, 1.0),
+                                    branch=None, min_transmission=0.1),
+    "atlas.SliderCrankSamples.take": E(lambda: at.sample_slider_cranks(10).take, {"index": "int"}, index=[1, 2]),
+    "atlas.SliderCrankSamples.columns": E(lambda: at.sample_slider_cranks(10).columns),
+    "atlas.SliderCrankSamples.slider_crank": E(lambda: _small_slider_atlas().linkages.slider_crank,
+                                               {"i": "int"}, i=3),
+    "atlas.SliderCrankSamples.curves": E(lambda: at.sample_slider_cranks(10).curves, {"samples": "count"},
+                                         samples=16),
+    "atlas.PlacedSliderCrank.place": E(lambda: at.query(_small_slider_atlas(), _SQUARE, k=1)[0].linkage.place,
+                                       {"z": "point"}, z=[0.0, 1 + 1j]),
     "atlas.Atlas.curves": E(lambda: _small_atlas().curves, {"index": "int", "samples": "count?"},
                             index=[0, 3], samples=None),
     "atlas.Atlas.to_parquet": E(lambda: functools.partial(_small_atlas().to_parquet, _new_dir()),
@@ -1294,7 +1318,8 @@ CASES.update({
                                    {"z": "point"}, z=[0.0, 1 + 1j]),
 })
 RECORDS.update({f"atlas.{n}": "result record built by the package"
-                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "SphereAtlas", "SphereMatch")})
+                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "PlacedSliderCrank",
+                          "SliderCrankSamples", "SphereAtlas", "SphereMatch")})
 
 
 # ----------------------------------------------------------------------------- the walk

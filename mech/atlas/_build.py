@@ -177,6 +177,10 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
     if lengths is None:
         lengths = RODS if slider else LENGTHS
     if slider:
+        from mech.atlas._sampling import _box
+
+        if not _box("lengths", lengths, 2)[0] > 0.0:
+            raise ValueError(f"Expected `lengths` > 0, got {_show(lengths)}")
         sample_slider_cranks(0, rods=lengths, offsets=offsets, coupler=coupler,
                              min_transmission=min_transmission)  # checks
     else:
