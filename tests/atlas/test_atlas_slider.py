@@ -167,3 +167,18 @@ def test_query_finds_slider_crank_first_and_places_it(atlas):
         worst = max(worst, np.sqrt(np.mean(gap ** 2)) / radius)
     assert found == len(rows)
     assert worst < 2e-3
+
+
+def test_cli_builds_and_queries_a_slider_crank_atlas(tmp_path, capsys):
+    from mech.atlas.__main__ import main
+
+    folder = tmp_path / "sliders"
+    assert main(["build", str(folder), "-n", "300", "--seed", "4", "--mechanism", "slider-crank", "--quiet"]) == 0
+    atlas = Atlas.from_parquet(folder)
+    row = int(np.flatnonzero(atlas.linkages.full_turn)[0])
+    curve = 2 - 1j + 3 * atlas.curves(row)[0]
+    np.savetxt(tmp_path / "t.csv", np.c_[curve.real, curve.imag], delimiter=",")
+    assert main(["query", str(folder), str(tmp_path / "t.csv"), "-k", "2", "--plot", str(tmp_path / "p.png")]) == 0
+    out = capsys.readouterr().out
+    assert f"#0  row {row}  crank-slider" in out and "guide through" in out
+    assert (tmp_path / "p.png").is_file()
