@@ -54,9 +54,8 @@ def test_sample_slider_cranks_space_and_types(samples):
     assert np.array_equal(samples.movable, np.abs(samples.e) < 1 + samples.b)
     assert set(samples.kind[samples.full_turn]) == {"crank-slider"}
     assert set(samples.kind[~samples.full_turn]) == {"rocker-slider"}
-    for i in range(0, len(samples), 37):
-        assert SliderCrank(samples.a[i], max(samples.b[i], abs(samples.e[i]) - 1 + 1e-9),
-                           samples.e[i]).crank_turns == bool(samples.full_turn[i]) or not samples.movable[i]
+    for i in np.flatnonzero(samples.movable)[::29]:
+        assert SliderCrank(samples.a[i], samples.b[i], samples.e[i]).crank_turns == bool(samples.full_turn[i])
 
 
 def test_gamma_min_against_f57_and_a_dense_scan(samples):
@@ -182,3 +181,21 @@ def test_cli_builds_and_queries_a_slider_crank_atlas(tmp_path, capsys):
     out = capsys.readouterr().out
     assert f"#0  row {row}  crank-slider" in out and "guide through" in out
     assert (tmp_path / "p.png").is_file()
+
+
+def test_open_half_turn_arcs_of_slider_cranks_found(atlas):
+    from mech.atlas._sampling import coupler_points
+
+    rng = np.random.default_rng(31)
+    rows = rng.choice(np.flatnonzero(atlas.linkages.full_turn), 20, replace=False)
+    found = 0
+    for row in rows:
+        u0 = rng.uniform(0, 2 * np.pi)
+        arc = coupler_points(atlas.linkages.take([int(row)]).columns(), (u0 + np.pi * np.linspace(0, 1, 200))[None, :])[0]
+        arc = (1 + 2j + 3 * np.exp(1j * rng.uniform(0, 6)) * arc)[::int(rng.choice([-1, 1]))]
+        radius = np.sqrt(np.mean(np.abs(arc - arc.mean()) ** 2))
+        arc = arc + 1e-3 * radius * (rng.normal(size=200) + 1j * rng.normal(size=200)) / np.sqrt(2)
+        best = query(atlas, arc, k=1, closed=False)[0]
+        assert isinstance(best.linkage, PlacedSliderCrank) and best.arc is not None
+        found += best.index == row
+    assert found >= 18, found
