@@ -9,7 +9,8 @@ Layers, each usable alone:
   the Grashof type, assembly branch, input range and minimum transmission angle of each,
   and one of slider-cranks with a coupler point on the rod (`sample_slider_cranks`,
   `SliderCrankSamples`; ``build_atlas(..., mechanism="slider-crank")``, searched by the
-  same `query`, whose matches then carry a `PlacedSliderCrank` and no cognates);
+  same `query`, whose matches then carry a `PlacedSliderCrank` and its one cognate
+  slider-crank);
 - the atlas itself (`build_atlas`, `Atlas`, stored as Parquet through pyarrow) and its
   search (`query`, returning `Match` records placed on the target, with the two
   Roberts-Chebyshev cognates of each match; an open arc is matched against parts of

@@ -77,7 +77,10 @@ def _describe(m):
             f"{'full turn' if m.full_turn else 'rocking %.1f..%.1f deg' % tuple(map(math.degrees, m.theta_range))}",
             f"    slider-crank  a={sc.a:.5g} b={sc.b:.5g} e={sc.e:.5g} p={p:.5g} q={q:.5g} branch={sc.branch:+d}  "
             f"A=({A.real:.5g}, {A.imag:.5g})  guide through ({G.real:.5g}, {G.imag:.5g}) "
-            f"along ({u.real:.5g}, {u.imag:.5g})"])
+            f"along ({u.real:.5g}, {u.imag:.5g})"]
+            + [f"    cognate  a={c.slider.a:.5g} b={c.slider.b:.5g} e={c.slider.e:.5g} p={c.coupler[0]:.5g} "
+               f"q={c.coupler[1]:.5g}  guide through ({c.guide[0].real:.5g}, {c.guide[0].imag:.5g}) "
+               f"along ({c.guide[1].real:.5g}, {c.guide[1].imag:.5g})" for c in m.cognates])
     f = m.linkage.fourbar
     A, D = m.linkage.pivots
     lines = [f"#{m.rank}  row {m.index}  {m.kind}  error {m.error:.4g} ({100 * m.relative_error:.3g} %)  "

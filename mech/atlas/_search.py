@@ -70,7 +70,7 @@ class PlacedSliderCrank:
     Attributes
     ----------
     name : str
-        "slider-crank".
+        "slider-crank" for the match itself, "cognate" for its Roberts cognate.
     slider : SliderCrank
         The linkage at the target's scale in its standard frame (crank pivot A = 0, guide
         the line y = e run in +x), as `mech.planar.SliderCrank`.
@@ -121,9 +121,9 @@ class Match:
         `PlacedSliderCrank` for an atlas of slider-cranks).
     cognates : tuple of PlacedLinkage
         Its two Roberts-Chebyshev cognates AEGK and DFHK, placed on the target (they trace
-        the same curve); empty if the coupler point lies on a pin (no cognates), and empty
-        for a slider-crank: its one slider-crank cognate (Roberts' law as a limit of the
-        four-bar's) is not computed by the package.
+        the same curve); empty if the coupler point lies on a pin (no cognates). For a
+        slider-crank, its one cognate slider-crank (Roberts' law), a `PlacedSliderCrank`
+        named "cognate"; the four-bar's second cognate degenerates there.
     direction : int
         +1 if the target is run in the direction of the stored curve (input angle
         increasing along the curve as sampled), -1 if against it.
@@ -169,6 +169,38 @@ class Match:
     curve: np.ndarray
     refined: bool = False
     arc: tuple = None
+
+
+def slider_cognate(placed):
+    """The Roberts cognate of a placed slider-crank: one slider-crank tracing the same curve.
+
+    With ``w = (p + i q) / b``, the coupler point is ``P = B + w (C - B)`` (standard frame).
+    The parallelogram A, B, P, E gives a crank ``E = w (C - B)`` about A, and the point
+    ``F = w C`` of the link EP runs on the line ``w (x + i e)``: the original guide turned
+    by ``arg w`` and scaled by ``|w|``. In its own frame (turned by ``arg w``) the cognate
+    has crank ``|w| b``, rod ``|w| a``, offset ``|w| e`` and coupler point
+    ``a conj(w) / |w|`` on its rod EF; driven at the original rod's angle ``phi`` it puts
+    its coupler point on P, pose by pose. Its rod turns with the original crank, so a
+    cognate of a crank that turns fully rocks (``|w| a < |w| b + |w e|``) and changes
+    assembly branch at its dead centres (branch ``sign(cos theta)``, theta the original
+    crank angle); the second four-bar cognate degenerates (both pivots at infinity).
+
+    Returns
+    -------
+    tuple of PlacedSliderCrank
+        One cognate named "cognate", placed on the same target; empty if P lies on the
+        crank pin B (``w = 0``).
+    """
+    from mech.planar.kinematics._slider_crank import SliderCrank
+
+    sc = placed.slider
+    w = complex(*placed.coupler) / sc.b
+    m = abs(w)
+    if m < 1e-12:
+        return ()
+    cog = SliderCrank(m * sc.b, m * sc.a, m * sc.e, branch=1)
+    coupler = (float(sc.a * w.real / m), float(-sc.a * w.imag / m))
+    return (PlacedSliderCrank("cognate", cog, coupler, placed.origin, float(placed.rotation + np.angle(w))),)
 
 
 def _signature_distances(signatures, norms, candidates):
@@ -442,7 +474,7 @@ def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, c
         a, b, e, p, q = (float(getattr(row, k)[0] * s) for k in "abepq")
         placed = PlacedSliderCrank("slider-crank", SliderCrank(a, b, e, branch=branch), (p, q), complex(origin),
                                    float(np.angle(w)))
-        cognates = ()
+        cognates = slider_cognate(placed)
     else:
         a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
         unit = FourBar(a, b, c, d, branch=branch, coupler=(p, q))

@@ -157,7 +157,7 @@ def test_query_finds_slider_crank_first_and_places_it(atlas):
         target = _target(atlas, int(row), rng)
         best = query(atlas, target, k=1)[0]
         found += best.index == row
-        assert isinstance(best.linkage, PlacedSliderCrank) and best.cognates == ()
+        assert isinstance(best.linkage, PlacedSliderCrank) and len(best.cognates) == 1
         assert best.kind == "crank-slider" and best.full_turn
         curve = _recomputed(best.linkage)
         radius = np.sqrt(np.mean(np.abs(target - target.mean()) ** 2))
@@ -199,3 +199,33 @@ def test_open_half_turn_arcs_of_slider_cranks_found(atlas):
         assert isinstance(best.linkage, PlacedSliderCrank) and best.arc is not None
         found += best.index == row
     assert found >= 18, found
+
+
+def test_slider_cognate_traces_the_same_curve_pose_by_pose(atlas):
+    rng = np.random.default_rng(3)
+    rows = np.concatenate([rng.choice(np.flatnonzero(atlas.linkages.full_turn), 6, replace=False),
+                           rng.choice(np.flatnonzero(~atlas.linkages.full_turn), 4, replace=False)])
+    for row in rows:
+        target = 1 - 2j + 2.5 * np.exp(0.7j) * atlas.curves(int(row), 300)[0]
+        best = query(atlas, target, k=1)[0]
+        (cog,) = best.cognates
+        placed, sc, g = best.linkage, best.linkage.slider, cog.slider
+        assert (g.a, g.b) == pytest.approx((abs(complex(*placed.coupler)) / sc.b * sc.b,
+                                             abs(complex(*placed.coupler)) / sc.b * sc.a))
+        lo, hi = best.theta_range
+        theta = np.linspace(lo, hi, 301)[1:-1]
+        pts = []
+        for mode in (1, -1):
+            sol = _linkage(sc.a, sc.b, sc.e, *placed.coupler, mode).solve(theta)
+            rod = sol.points["C"] - sol.points["B"]
+            # away from the cognate's dead centres (cos theta = 0), where its rod's position
+            # has only half the digits (a square root of a rounding-sized radicand)
+            ok = np.isfinite(rod) & (np.abs(np.cos(theta)) > 1e-3)
+            phi = np.angle(rod[ok])
+            mine = placed.place(sol.points["P"][ok])
+            # the cognate driven at the original rod's angle, on branch sign(cos theta)
+            other = _linkage_points(g.a, g.b, g.e, *cog.coupler, phi, np.sign(np.cos(theta[ok])))
+            pts.append(np.abs(cog.origin + np.exp(1j * cog.rotation) * other - mine))
+        gap = np.concatenate(pts)
+        assert np.isfinite(gap).mean() > 0.95
+        assert np.nanmax(gap) < 1e-9 * (1 + np.max(np.abs(target)))
