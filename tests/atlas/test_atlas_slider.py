@@ -191,7 +191,8 @@ def test_open_half_turn_arcs_of_slider_cranks_found(atlas):
     found = 0
     for row in rows:
         u0 = rng.uniform(0, 2 * np.pi)
-        arc = coupler_points(atlas.linkages.take([int(row)]).columns(), (u0 + np.pi * np.linspace(0, 1, 200))[None, :])[0]
+        u = (u0 + np.pi * np.linspace(0, 1, 200))[None, :]
+        arc = coupler_points(atlas.linkages.take([int(row)]).columns(), u)[0]
         arc = (1 + 2j + 3 * np.exp(1j * rng.uniform(0, 6)) * arc)[::int(rng.choice([-1, 1]))]
         radius = np.sqrt(np.mean(np.abs(arc - arc.mean()) ** 2))
         arc = arc + 1e-3 * radius * (rng.normal(size=200) + 1j * rng.normal(size=200)) / np.sqrt(2)
