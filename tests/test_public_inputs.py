@@ -1773,5 +1773,35 @@ CASES.update({
         lambda: sph.guidance_fourbars(_sg_five()).candidates[0].coupler_orientations, {"theta_input": "real"},
         theta_input=[0.1, 0.4]),
 })
+
+
+def _sg_nine():
+    """Nine coupler orientations of a crank-rocker (as in tests/spherical/test_spherical_optimal.py)."""
+    lk = sph.SphericalFourBar(0.35, 0.75, 0.6, 0.8)
+    pose = lk.solve(np.linspace(0.3, 2.6, 9))
+    zB, zC = np.array([0.0, 0.0, 1.0]), np.array([np.sin(0.75), 0.0, np.cos(0.75)])
+
+    def frame(p, q):
+        t = q - np.sum(p * q, axis=-1, keepdims=True) * p
+        t = t / np.linalg.norm(t, axis=-1, keepdims=True)
+        return np.stack([p, t, np.cross(p, t)], axis=-1)
+    return frame(pose.B, pose.C) @ frame(zB, zC).T
+
+
+CASES.update({
+    "spherical.guidance_motion": E(lambda: sph.guidance_motion, {"design": "instance", "theta_input": "real"},
+                                   design=sph.guidance_fourbars(_sg_five()).candidates[0], theta_input=[0.1, 0.4]),
+    "spherical.optimal_guidance": E(lambda: sph.optimal_guidance,
+                                    {"R": "matrix", "start": "instance?", "objective": "option",
+                                     "theta_input": "real?", "rtol": "scalar"},
+                                    R=_sg_nine(), start=None, objective="orientation",
+                                    theta_input=np.linspace(0.0, 2.3, 9), rtol=1e-2),
+    "spherical.minimax": E(lambda: sph.minimax,
+                           {"x": "real", "y": "real", "theta0": "scalar", "psi0": "scalar", "start": "instance?",
+                            "tol": "scalar", "max_iter": "count"},
+                           x=np.linspace(0.0, 1.0, 41), y=0.5 * np.sin(np.linspace(0.0, 1.0, 41)),
+                           theta0=0.7, psi0=1.4, start=None, tol=1e-10, max_iter=40),
+})
 RECORDS.update({f"spherical.{n}": "result record built by the package" for n in (
-    "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar")})
+    "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar",
+    "SphericalGuidanceMotion", "SphericalOptimalGuidance")})

@@ -30,6 +30,7 @@ from mech.spherical._function_generation import (
     least_squares,
     precision_pairs,
 )
+from mech.spherical._minimax import minimax
 from mech.spherical._polygons import (
     PolygonRelations,
     SphericalPolygon,
@@ -158,6 +159,7 @@ __all__ = [
     "isogram_output",
     "law_count",
     "least_squares",
+    "minimax",
     "local_frame",
     "open_chain_axes",
     "point_at",

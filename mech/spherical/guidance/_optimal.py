@@ -101,6 +101,14 @@ def _linkage(A, D, a, c, zB, zC, branch):
     return SphericalFourBar(float(a), b, float(c), d, branch=branch, frame=frame), frame
 
 
+def _gamma(B, C, D, valid):
+    """Transmission angle where the linkage assembles, NaN elsewhere."""
+    out = np.full(valid.shape, np.nan)
+    if np.any(valid):
+        out[valid] = _transmission(B[valid], C[valid], D)
+    return out
+
+
 def _check_design(name, value):
     if not isinstance(value, SphericalGuidanceFourBar):
         raise InputTypeError(f"Expected `{name}` to be a SphericalGuidanceFourBar, got {_show(value)}")
@@ -151,8 +159,8 @@ def guidance_motion(design, theta_input):
     pose = design.linkage.solve(theta)
     zB, zC = design.input_dyad.circle_point, design.output_dyad.circle_point
     orientation = _orientation(pose.B, pose.C, zB, zC)
-    return SphericalGuidanceMotion(theta, orientation, np.asarray(pose.B), np.asarray(pose.C),
-                                   np.asarray(pose.valid, bool), _transmission(pose.B, pose.C, design.linkage.D))
+    B, C, valid = np.asarray(pose.B), np.asarray(pose.C), np.asarray(pose.valid, bool)
+    return SphericalGuidanceMotion(theta, orientation, B, C, valid, _gamma(B, C, design.linkage.D, valid))
 
 
 def _best_angles(model, zB, zC, R, theta):
@@ -186,7 +194,7 @@ def _verified(R, A, D, a, c, zB, zC, branch, theta, rtol, refine):
         errors = _rotation_gap(_orientation(pose.B, pose.C, zB, zC), R)
     direction, critical = _motion(model, theta) if np.all(valid) else (0, None)
     in_order = direction != 0
-    gamma_at = _transmission(pose.B, pose.C, D)
+    gamma_at = _gamma(np.asarray(pose.B), np.asarray(pose.C), D, valid)
     if in_order:
         crit = model.solve(critical)
         gamma_min = float(min(np.min(_transmission(crit.B, crit.C, D)), np.min(gamma_at)))
