@@ -84,7 +84,7 @@ def minimax(x, y, theta0, psi0, *, start=None, tol=1e-10, max_iter=40):
 
     Notes
     -----
-    Eq. (8) of ``deriv-spherical-function-generation``: on the reference x_0 < ... < x_4
+    Eq. (9) of ``deriv-spherical-function-generation``: on the reference x_0 < ... < x_4
     the arcs and the level E solve e(x_i) = (-1)^i E (five equations, SciPy's least squares
     as a Newton solver). SciPy is imported lazily.
 

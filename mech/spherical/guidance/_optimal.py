@@ -140,7 +140,7 @@ def guidance_motion(design, theta_input):
     -----
     The linkage is solved by `SphericalFourBar` on its branch; the coupler orientation is
     the rotation that carries the frame [zB, t, zB x t] of the body points (t the direction
-    from zB toward zC) to the frame [B, t', B x t'] of the moving pivots, eq. (11) of
+    from zB toward zC) to the frame [B, t', B x t'] of the moving pivots, eq. (12) of
     :ref:`deriv-spherical-guidance`.
 
     Examples
@@ -274,7 +274,7 @@ def optimal_guidance(R, start=None, *, objective="orientation", theta_input=None
     The design variables are the ground pivots A, D and the body points zB, zC (two
     tangent-plane coordinates each), the crank arcs a, c, and with the orientation
     objective the input angles; the optimiser is SciPy's trust-region reflective least
-    squares. Eqs. (12)-(14) of :ref:`deriv-spherical-guidance`.
+    squares. Eqs. (12)-(14) (the objectives (13) and (14)) of :ref:`deriv-spherical-guidance`.
 
     Examples
     --------
