@@ -59,6 +59,7 @@ def _check_by_analysis(fit, R):
 
 
 def test_motion_reproduces_burmester_design_and_rigid_body():
+    """Motion analysis of a guidance four-bar (§3.7): a rigid coupler that meets the design's orientations."""
     P = [13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j]
     R = planar_orientations(np.radians([0.0, 8.88, 22.1, 63.68, -3.0]), P, 1e-3)
     best = guidance_fourbars(R).passing[0]
@@ -77,6 +78,7 @@ def test_motion_reproduces_burmester_design_and_rigid_body():
 
 @pytest.mark.parametrize("objective", ["orientation", "constant_length"])
 def test_exact_task_recovers_the_linkage(objective):
+    """Optimal synthesis through nine orientations of a known linkage (§3.7) recovers it."""
     R = _task()
     fit = optimal_guidance(R, objective=objective, rtol=1e-9)
     assert fit.design.passes and fit.design.pose_error < 1e-9
@@ -87,13 +89,17 @@ def test_exact_task_recovers_the_linkage(objective):
 
 
 def test_noisy_task_both_objectives_compared():
+    """Orientation error against constant length (§3.7): result and speed, checked by analysis."""
     R = _task(noise=0.01)
     timing, fits = {}, {}
     for objective in ("orientation", "constant_length"):
         optimal_guidance(R, objective=objective)                   # warm (imports)
-        t = time.perf_counter()
-        fits[objective] = optimal_guidance(R, objective=objective, rtol=0.02)
-        timing[objective] = time.perf_counter() - t
+        runs = []
+        for _ in range(2):                                         # best of two: the machine is shared
+            t = time.perf_counter()
+            fits[objective] = optimal_guidance(R, objective=objective, rtol=0.02)
+            runs.append(time.perf_counter() - t)
+        timing[objective] = min(runs)
         assert fits[objective].design.passes
         _check_by_analysis(fits[objective], R)
     # the orientation objective is the better fit of what it measures; constant length is cheaper
@@ -129,6 +135,7 @@ def _segments(e):
 
 
 def test_minimax_equioscillates_and_beats_least_squares():
+    """Best approximation (§1.8): five equal alternating extrema, below the least-squares maximum."""
     span_in, span_out = np.radians(90.0), np.radians(60.0)
     theta0, psi0 = np.radians(-120.0), np.radians(-70.0)
     u = np.linspace(1.0, 10.0, 401)

@@ -278,10 +278,10 @@ def optimal_guidance(R, start=None, *, objective="orientation", theta_input=None
 
     Examples
     --------
+    Eight orientations turning about a slowly tilting axis (no four-bar meets them exactly):
+
     >>> import numpy as np
-    >>> from mech.spherical import SphericalFourBar, guidance_motion, optimal_guidance, guidance_fourbars
-    >>> from mech.spherical import rotation_matrix
-    >>> rng = np.random.default_rng(1)
+    >>> from mech.spherical import optimal_guidance, rotation_matrix
     >>> R = np.stack([rotation_matrix([0.1 * k, 0.05, 1.0], 0.25 * k) for k in range(8)])
     >>> fit = optimal_guidance(R)
     >>> fit.design.in_order, fit.design.pose_error < 0.05
