@@ -158,3 +158,24 @@ def test_minimax_bad_inputs():
         minimax(x, 0.5 * np.sin(x), 0.7, 1.4, max_iter=0)
     with pytest.raises(TypeError, match="`start`"):
         minimax(x, 0.5 * np.sin(x), 0.7, 1.4, start="fit")
+
+
+@pytest.mark.parametrize("objective", ["orientation", "constant_length"])
+def test_planar_limit_of_optimal_synthesis(objective):
+    """§3.7 as the arcs shrink: nine poses of a planar four-bar carried onto spheres of radius
+    1/scale; the optimal spherical four-bar's arcs divided by the scale tend to the planar
+    lengths, with an error that falls like scale**2."""
+    from mech.planar import FourBar
+
+    lengths = np.array([1.0, 3.0, 2.5, 3.0])
+    pl = FourBar(*lengths).solve(np.linspace(0.4, 2.8, 9))
+    theta, d = np.angle(pl.C - pl.B), pl.B          # body frame: origin at B, x along BC
+    errors = []
+    for scale in (1e-2, 1e-3, 1e-4):
+        fit = optimal_guidance(planar_orientations(theta, d, scale), objective=objective)
+        link = fit.design.linkage
+        got = np.array([link.a, link.b, link.c, link.d]) / scale
+        errors.append(float(np.max(np.abs(got - lengths)) / lengths.max()))
+        assert fit.design.in_order
+    rates = -np.diff(np.log10(errors))
+    assert errors[-1] < 1e-6 and np.all(rates > 1.8), (errors, rates)
