@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: setup book generate check-generated test test-fast bench clean
+.PHONY: setup browser-deps book generate check-generated test test-fast bench clean
 
 $(STAMP): requirements.txt pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -29,8 +29,22 @@ generate: $(STAMP)
 check-generated: $(STAMP)
 	$(BIN)/python -m derivations --check
 
-## The test suite (doctests included).
-test: $(STAMP)
+## System packages of the browser test (tests/browser): Debian's chromium and a CJK font,
+## installed with apt-get only when missing (as root, or with password-less sudo).
+CHROME_DEBS := chromium fonts-noto-cjk
+browser-deps:
+	@if command -v chromium >/dev/null && fc-list :lang=zh 2>/dev/null | grep -q .; then :; \
+	elif [ "$$(id -u)" = 0 ]; then \
+	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $(CHROME_DEBS); \
+	elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then \
+	  sudo apt-get update && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y $(CHROME_DEBS); \
+	else \
+	  echo "browser-deps: chromium or a CJK font is missing and apt-get needs root;" \
+	       "the browser test will skip (and fail with MECH_BROWSER_TEST=required)"; \
+	fi
+
+## The test suite (doctests included), the browser test of the built book among them.
+test: $(STAMP) browser-deps
 	$(BIN)/python -m pytest
 
 test-fast: $(STAMP)

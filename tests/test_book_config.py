@@ -113,7 +113,7 @@ def test_config_no_mathjax_path_or_intersphinx():
     assert "mathjax_path" not in keys
     assert "intersphinx_mapping" not in keys
     sphinx = _config().get("sphinx", {})
-    extensions = (sphinx.get("extra_extensions") or []) + (sphinx.get("local_extensions") or [])
+    extensions = (sphinx.get("extra_extensions") or []) + list(sphinx.get("local_extensions") or {})
     assert "sphinx.ext.intersphinx" not in extensions
 
 
@@ -206,3 +206,57 @@ def test_toc_pages_define_required_labels():
         if path is not None and path.suffix == ".md":
             found.update(_label_and_title(path.read_text(encoding="utf-8"))[0])
     assert sorted(REQUIRED_LABELS - found) == []
+
+
+# --- navigation titles (issue 17, item 5) ----------------------------------------------
+
+
+def _titles():
+    """``{toc entry: title text}`` for every MyST page of the table of contents."""
+    titles = {}
+    for entry in _toc_files():
+        path = _page_path(entry)
+        if path is not None and path.suffix == ".md":
+            title = _label_and_title(path.read_text(encoding="utf-8"))[1]
+            if title is not None:
+                titles[entry] = title[2:].strip()
+    return titles
+
+
+def _topic(title):
+    """A title without its kind prefix and its parenthesised numbers, lower case."""
+    title = re.sub(r"^(Derivation|Worked examples):\s*", "", title)
+    return re.sub(r"\s*\([^()]*\)\s*$", "", title).strip().lower()
+
+
+def test_page_titles_unique():
+    seen = {}
+    for entry, title in _titles().items():
+        seen.setdefault(title, []).append(entry)
+    repeated = {title: pages for title, pages in seen.items() if len(pages) > 1}
+    assert repeated == {}, f"pages sharing a title in the side bar: {repeated}"
+
+
+def test_derivation_pages_say_derivation():
+    """A reader tells a derivation from its worked use in the side bar alone."""
+    wrong = [
+        f"{entry}: {title!r}" for entry, title in _titles().items()
+        if entry.startswith("derivations/") != title.startswith("Derivation: ")
+    ]
+    assert wrong == [], "\n".join(wrong)
+
+
+def test_derivation_and_worked_use_titles_differ_beyond_prefix():
+    """Removing 'Derivation:' and the numbers may leave a shared topic, but never two
+    pages of the same kind on one topic (that is a duplicate page)."""
+    seen = {}
+    for entry, title in _titles().items():
+        kind = "derivation" if entry.startswith("derivations/") else "page"
+        seen.setdefault((kind, _topic(title)), []).append(entry)
+    repeated = {key: pages for key, pages in seen.items() if len(pages) > 1}
+    assert repeated == {}
+
+
+def test_title_checks_can_fail():
+    assert _topic("Derivation: the RSSR spatial four-bar (eqs. 2-67 to 2-71)") == "the rssr spatial four-bar"
+    assert _topic("Worked examples: the RSSR (§2.4)") == "the rssr"

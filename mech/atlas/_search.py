@@ -24,9 +24,12 @@ _BLOCK = 1 << 15
 _UPSAMPLE = 16
 _DENSE = 4
 _REFINE = 8
-_LEVELS = 6
+#: An open arc: rows given a coarse alignment, per row of the short list, and its halvings.
 _ARC_WIDER = 4
 _ARC_COARSE = 4
+#: Points per cycle of the curve tables of the coarse alignment.
+_COARSE_TABLE = 512
+_LEVELS = 6
 
 
 @dataclass(frozen=True)
@@ -224,10 +227,11 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
         the input angle for a crank that turns fully) the arc is expected to cover, in
         (0, 1]; it places the sub-arcs of the signature stage, and the alignment frees it.
     starts : int, optional
-        For an open arc: sub-arcs per closed curve in the signature stage (their
-        signatures are computed on the first open query and kept with the atlas, in
-        float32: ``8 * harmonics * starts`` bytes per linkage, 82 MB for 10^4 linkages
-        at the defaults). Fewer starts save memory but rank the right linkage lower.
+        For an open arc: windows (sub-arcs) per closed curve in the signature stage. Their
+        signatures, four harmonics per side in float16, are computed on the first open
+        query and kept with the atlas: about ``40 * starts`` bytes per linkage with their
+        squared norms and gaps, 26 MB for 10^4 linkages at the default (260 MB for 10^5).
+        Fewer starts save memory but rank the right linkage lower.
 
     Returns
     -------
@@ -247,8 +251,11 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     then removes the normalisation's sensitivity (a nearly circular first harmonic) by
     aligning exactly. Matches are linkages of the atlas scaled, turned and moved; their
     cognates trace the same curve with other pivots. An open arc is compared with the
-    signatures of sub-arcs of each closed curve (the arc run forward and back), then
-    aligned by a pattern search on the two ends of the sub-arc; its matches carry `arc`.
+    signatures of windows of each closed curve (the arc run forward and back), through
+    the distance to the segment between neighbouring windows' signatures, then aligned
+    by a pattern search on the two ends of the sub-arc; its matches carry `arc`. When
+    the arc's first harmonic is small (below about a tenth of its RMS radius) the
+    normalisation is ill-conditioned and the right linkage may be missed.
 
     Examples
     --------
@@ -287,36 +294,57 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     else:
         t = _resample_rows(z, n, True)
     form = normal_form(t, atlas.harmonics)
-    dist = _signature_distances(atlas.signatures, atlas._norms, form.candidates[0])
     m = min(shortlist, len(atlas))
-    short = np.argpartition(dist, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    short = _nearest(atlas, form.candidates[0], m)
+    dist = _signature_distances(atlas.signatures[short], atlas._norms[short], form.candidates[0])
     dense = atlas.curves(short, _DENSE * n)
     err, w, centroid, radius, curves, direction = _best_fits(t[0], dense, max(k, _REFINE))
     return [_match(rank, int(short[j]), atlas.linkages.take([short[j]]), t[0], w[j], centroid[j], err[j],
-                   radius, direction[j], float(dist[short[j]]), curves[j])
-            for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+                   radius, direction[j], float(dist[j]), curves[j])
+            for rank, j in enumerate(np.argsort(np.where(np.isnan(w), np.inf, err), kind="stable")[:k])]
+
+
+def _nearest(atlas, candidates, m):
+    """Rows of the `m` signatures nearest any of the `candidates` (4, D), in no order.
+
+    The four normal forms of a curve have the same norm, so the nearest of them to a row is
+    the one with the largest dot product: ``d^2 = |s|^2 + |c|^2 - 2 max_k s . c_k``. The
+    products run on a float32 copy of the signatures (half the memory to stream; entries
+    in [-1, 1], so the rounding, below 1e-7, moves only ties within the short list, whose
+    distances `query` recomputes in float64).
+    """
+    sig, norms = atlas._signatures32
+    c = np.ascontiguousarray(candidates, dtype=np.float32)
+    score = np.empty(len(atlas), dtype=np.float32)
+    for start in range(0, len(atlas), _BLOCK):
+        block = slice(start, start + _BLOCK)
+        # einsum, not a BLAS product: a (rows, 32) x (32, 4) product is memory-bound, and
+        # a threaded BLAS spends more on waking its threads than on the arithmetic
+        np.subtract(norms[block], 2.0 * np.max(np.einsum("ij,kj->ik", sig[block], c), axis=1), out=score[block])
+    if m >= len(atlas):
+        return np.arange(len(atlas))
+    return np.argpartition(score, m - 1)[:m]
 
 
 def _query_arc(atlas, z, k, shortlist, span, starts):
-    """`query` for an open arc `z` (1, m): sub-arc signatures, then alignment of both ends."""
-    from mech.atlas._arcs import align_arcs, arc_signatures
+    """`query` for an open arc `z` (1, m): window signatures, then alignment of both ends."""
+    from mech.atlas._arcs import _WINDOW_TABLE, _truncate, align_arcs, arc_signatures, window_distances
 
     n = atlas.samples
     t = _resample_rows(z, n // 2 + 1, False)
     form = normal_form(_close_arc(t), atlas.harmonics)
-    sigs, norms = arc_signatures(atlas, span, starts)
-    dist = _signature_distances(sigs.reshape(-1, sigs.shape[2]), norms.reshape(-1),
-                                form.candidates[0]).reshape(len(atlas), starts)
-    where = np.argmin(dist, axis=1)
-    best = dist[np.arange(len(atlas)), where]
-    # a sub-arc's signature changes with its ends, so the signature stage is less sharp
-    # than for closed curves: a longer list gets a coarse alignment, the best of it a fine one
+    sigs, norms, gaps = arc_signatures(atlas, span, starts)
+    best, where, frac = window_distances(sigs, norms, gaps, _truncate(form.candidates[0], atlas.harmonics))
+    # a window's signature is less sharp than a closed curve's (its normalisation rests on
+    # the arc's first harmonic, which is often small): a longer list gets a coarse
+    # alignment, the best `shortlist` of it the full one
     m = min(_ARC_WIDER * shortlist, len(atlas))
     short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
-    u0 = 2 * np.pi * (where[short] / starts + 0.5 / (2 * atlas.samples))
-    step = np.pi / starts
+    # the start of the window (and the fraction of a step towards the next) that fits best
+    u0 = 2 * np.pi * (where[short] + frac[short]) / starts + np.pi / _WINDOW_TABLE
+    step = 0.5 / starts
     err, *_, u0, u1, _ = align_arcs(t[0], atlas.linkages.take(short), u0, u0 + 2 * np.pi * span, step,
-                                    levels=_ARC_COARSE)
+                                    levels=_ARC_COARSE, size=_COARSE_TABLE)
     keep = np.argsort(err, kind="stable")[:min(shortlist, m)]
     short, u0, u1 = short[keep], u0[keep], u1[keep]
     rows = atlas.linkages.take(short)
@@ -331,7 +359,7 @@ def _best_fits(t, dense, keep, levels=None):
     """Align every dense curve with the target `t` (N,): start and direction by FFT for all,
     then bisection on the exact error for the best `keep`. Returns arrays over all rows
     (error, w, centroid, radius, placed-frame samples, direction); rows past the best
-    `keep` have the unrefined error."""
+    `keep` have the unrefined error and NaN placement."""
     n = t.shape[0]
     direction, start = _align(t, _resample_rows(dense, n, True))
     err = _fit(t, dense, direction, start)[0]
@@ -346,7 +374,13 @@ def _best_fits(t, dense, keep, levels=None):
             start[best] = np.where(better, trial % 1.0, start[best])
             err[best] = np.where(better, e, err[best])
         step *= 0.5
-    err, w, centroid, radius, curves = _fit(t, dense, direction, start)
+    # the placement of the best few only (the others keep their unrefined error and no placement)
+    e, wb, cb, radius, zb = _fit(t, dense[best], direction[best], start[best])
+    err[best] = e
+    w = np.full(err.shape, np.nan + 0j)
+    centroid = np.full(err.shape, np.nan + 0j)
+    curves = np.full((err.size, n), np.nan + 0j)
+    w[best], centroid[best], curves[best] = wb, cb, zb
     return err, w, centroid, radius, curves, direction
 
 

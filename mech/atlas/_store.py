@@ -80,6 +80,12 @@ class Atlas:
         return np.einsum("ij,ij->i", self.signatures, self.signatures)
 
     @cached_property
+    def _signatures32(self):
+        """The signatures in float32 (C order) and their squared norms, for the brute force."""
+        sig = np.ascontiguousarray(self.signatures, dtype=np.float32)
+        return sig, np.einsum("ij,ij->i", sig, sig)
+
+    @cached_property
     def _arc_cache(self):
         """Sub-arc signatures of the curves, by (span, starts), for open targets (filled by `query`)."""
         return {}

@@ -73,6 +73,7 @@ from mech.planar.coupler import (
     cognates,
     coupler_centrodes,
     coupler_dashes,
+    coupler_sextic,
 )
 from mech.planar.forces import (
     DeadPoints,
@@ -226,6 +227,7 @@ __all__ = [
     "collar_friction_radius",
     "coupler_centrodes",
     "coupler_dashes",
+    "coupler_sextic",
     "curved_contact_mu",
     "design_check",
     "eccentric_clamp_locks",

@@ -1,6 +1,7 @@
 """Spherical mechanisms: the spherical calculus, the spherical four-bar and its types, the
 side-angle laws of spherical polygons, the transference principle, function generation and
-rigid-body guidance (the spherical monograph, chapters 1, 3, 5, 6 and 7).
+rigid-body guidance (the spherical monograph, chapters 1, 3, 5, 6 and 7), and in ``path`` the
+eighth-order coupler curve (chapter 2).
 
 Conventions (``CONVENTIONS.md``): the sphere has unit radius, arcs are radians in (0, pi),
 points are unit 3-vectors in arrays of shape ``(..., 3)``, and ``lon`` is 0 at the poles.
@@ -89,12 +90,14 @@ from mech.spherical.guidance import (
     slider_point_curve,
     slider_residual,
 )
+from mech.spherical.path import CouplerOctic, coupler_octic, coupler_quartic, nine_parameters
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
 __all__ = [
     "Circle",
     "Collinearity",
+    "CouplerOctic",
     "Dual",
     "FunctionGenerator",
     "Intersection",
@@ -139,6 +142,8 @@ __all__ = [
     "close_polygon",
     "collinearity",
     "cosine_law",
+    "coupler_octic",
+    "coupler_quartic",
     "deltoid",
     "deltoid_input",
     "distance",
@@ -161,6 +166,7 @@ __all__ = [
     "least_squares",
     "minimax",
     "local_frame",
+    "nine_parameters",
     "open_chain_axes",
     "point_at",
     "polygon_relations",

@@ -406,6 +406,30 @@ class SphericalFourBar:
             intervals = [(-t_hi, -t_lo), (t_lo, t_hi)]
         return AssemblyRange(np.array(intervals, dtype=float), False)
 
+    def coupler_curve_polynomial(self):
+        """The implicit coupler curve: the homogeneous octic F in (x, y, z) (monograph §2.1).
+
+        Returns a `mech.spherical.path.CouplerOctic`: call it on points of shape (..., 3)
+        for F and its gradient (the cone over the curve and over its antipodal image,
+        degree 8). Other forms: ``.quartic`` (the quartic Q that cuts the curve from the
+        sphere), ``.lonlat`` (Q in longitude and latitude), and the parametric form
+        `solve` (P, vP, aP over theta). Both assembly branches lie on the one curve; the
+        mirrored coupler point ``(r, -gamma)`` does not. Derivation:
+        :ref:`deriv-spherical-coupler-curve`.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mech.spherical._fourbar import SphericalFourBar
+        >>> m = SphericalFourBar(0.5, 1.1, 0.9, 1.2, coupler=(0.6, 0.8), branch=-1)
+        >>> F, grad = m.coupler_curve_polynomial()(m.solve([0.5, 2.0]).P)
+        >>> bool(np.all(np.abs(F) < 1e-12 * np.linalg.norm(grad, axis=-1)))
+        True
+        """
+        from mech.spherical.path import CouplerOctic
+
+        return CouplerOctic(self)
+
     def coupler_curve(self, n=721):
         """The coupler point over the assembly range on this branch, for figures.
 

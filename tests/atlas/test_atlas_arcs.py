@@ -50,11 +50,56 @@ def test_query_open_arc_exact(atlas):
     assert np.max(gap) < 0.02 * np.ptp(target.real) + 0.02 * np.ptp(target.imag)
 
 
-def test_query_open_arc_caches_sub_arc_signatures(atlas):
+def test_query_open_arc_caches_window_signatures(atlas):
+    """Window signatures: float16, four harmonics per side, 65 windows (the first again at
+    the end, so the path of signatures closes), about 2 kB per linkage at 64 starts."""
+    from mech.atlas._arcs import ARC_HARMONICS
+
     query(atlas, [0, 1, 1 + 1j, 2 + 1j], closed=False, k=1)
-    sigs, norms = atlas._arc_cache[(0.5, 64)]
-    assert sigs.dtype == np.float32 and sigs.shape == (len(atlas), 64, 4 * atlas.harmonics)
-    assert norms.dtype == np.float64
+    sigs, norms, gaps = atlas._arc_cache[(0.5, 64)]
+    assert sigs.dtype == np.float16 and sigs.shape == (len(atlas), 65, 4 * ARC_HARMONICS)
+    assert norms.dtype == np.float32 and gaps.dtype == np.float32
+    assert norms.shape == (len(atlas), 65) and gaps.shape == (len(atlas), 64)
+    assert sigs.nbytes / len(atlas) == 2080
+    # the gaps are the squared distances between neighbouring windows
+    wide = sigs.astype(np.float64)
+    assert np.allclose(gaps, np.sum(np.diff(wide, axis=1) ** 2, axis=2), rtol=1e-5, atol=1e-6)
+
+
+def test_window_segments_rank_half_step_targets_first(atlas):
+    """Arcs that start half a window step between two grid starts (the worst place for the
+    signature stage), with a random similarity and 1e-3 noise: the distance to the segment
+    between neighbouring windows ranks the true row first or second in every trial, where
+    the distance to the nearest window alone (the stage before) ranks it far lower in some.
+
+    Targets whose first harmonic is small (|c_1| < 0.1 of the RMS radius, where the
+    normalisation of the signature is ill-conditioned and the windows' signatures jump as
+    their start moves) are left out and counted."""
+    from mech.atlas._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
+    from mech.atlas._signature import _close_arc, _resample_rows, normal_form
+
+    sigs, norms, gaps = arc_signatures(atlas, 0.5, 64)
+    wide = sigs.astype(np.float64)
+    rng = np.random.default_rng(4)
+    seg_ranks, point_ranks = [], []
+    for _ in range(24):
+        i = int(rng.integers(len(atlas)))
+        j = int(rng.integers(64))
+        target = _arc(atlas, i, 2 * np.pi * (j + 0.5) / 64 + np.pi / _WINDOW_TABLE, rng)
+        t = _resample_rows(target[None], atlas.samples // 2 + 1, False)
+        closed = _close_arc(t)[0]
+        c = np.fft.fft(closed) / closed.size
+        if abs(c[1]) < 0.1 * np.sqrt(np.sum(np.abs(c[1:]) ** 2)):
+            continue
+        cands = _truncate(normal_form(_close_arc(t), atlas.harmonics).candidates[0], atlas.harmonics)
+        best, where, frac = window_distances(sigs, norms, gaps, cands)
+        seg_ranks.append(int(np.sum(best < best[i])))
+        # nearest window only, in float64, from the definition
+        d2 = np.min(np.sum(wide**2, axis=2)[:, :, None] - 2 * wide @ cands.T + np.sum(cands**2, axis=1), axis=(1, 2))
+        point_ranks.append(int(np.sum(d2 < d2[i])))
+    assert len(seg_ranks) >= 18
+    assert max(seg_ranks) <= 1, seg_ranks
+    assert max(point_ranks) >= 5, point_ranks
 
 
 def test_query_open_arc_recovery_quick(atlas):
@@ -66,15 +111,15 @@ def test_query_open_arc_recovery_quick(atlas):
     assert hits >= 5
 
 
-@pytest.mark.slow
 def test_query_open_arc_recovery_rate(atlas):
-    """All kinds of linkage, 30 trials: at least 70 % found first (the benchmark reports the rate)."""
+    """All kinds of linkage, 30 trials: at least 28 found first (the window stage before
+    the segment distances found 21 to 24; the benchmark reports the rate on 10^4 linkages)."""
     rng = np.random.default_rng(11)
     hits = 0
     for _ in range(30):
         i = int(rng.integers(len(atlas)))
         hits += _found(atlas, i, query(atlas, _arc(atlas, i, rng.uniform(0, 2 * np.pi), rng), closed=False, k=1)[0])
-    assert hits >= 21
+    assert hits >= 28
 
 
 def test_query_open_arc_options(atlas):
@@ -102,7 +147,7 @@ def test_align_arcs_rocking_input_from_offset_ends(atlas):
         t = _resample_rows(arc[None], atlas.samples // 2 + 1, False)[0]
         radius = np.sqrt(np.mean(np.abs(t - t.mean()) ** 2))
         e = align_arcs(t, atlas.linkages.take([i]), np.array([u0 + np.pi / 64]), np.array([u0 + np.pi * 65 / 64]),
-                       np.pi / 32)[0][0]
+                       1 / 64)[0][0]
         errors.append(e / radius)
     assert np.median(errors) < 1e-4
     assert np.sum(np.array(errors) < 2e-3) >= 11
