@@ -1297,6 +1297,108 @@ RECORDS.update({f"atlas.{n}": "result record built by the package"
                 for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "SphereAtlas", "SphereMatch")})
 
 
+# ----------------------------------------------------------------------------- spherical guidance (issue 15)
+def _sg_set(n):
+    axes = [[0, 0, 1], [0.2, 0.1, 1], [-0.3, 0.2, 1], [0.1, -0.4, 1], [0.5, 0.3, 1]]
+    angles = [0.0, 0.5, 1.0, 1.4, 1.9]
+    return np.stack([sph.rotation_matrix(a, t) for a, t in zip(axes[:n], angles[:n])])
+
+
+def _sg_five():
+    rng = np.random.default_rng(3)
+    return np.stack([sph.rotation_matrix(rng.normal(size=3), rng.uniform(0.1, 1.2)) for _ in range(5)])
+
+
+def _sg_slider():
+    curve = sph.slider_point_curve(_sg_set(3), samples=12)
+    return curve.dyad(*np.argwhere(curve.valid)[0])
+
+
+def _sg_crank():
+    return sph.dyad_for_circle_point(_sg_set(3), [0.3, 0.2, 0.93])
+
+
+_SGZ = [0.3, 0.2, 0.93]
+CASES.update({
+    "spherical.relative_rotation": E(lambda: sph.relative_rotation, {"R_1": "matrix", "R_j": "matrix"},
+                                     R_1=np.eye(3), R_j=_sg_set(2)[1]),
+    "spherical.rotation_pole": E(lambda: sph.rotation_pole, {"R_1": "matrix", "R_j": "matrix"},
+                                 R_1=np.eye(3), R_j=_sg_set(2)[1]),
+    "spherical.pole_triangle": E(lambda: sph.pole_triangle, {"R": "matrix"}, R=_sg_set(3)),
+    "spherical.crank_residual": E(lambda: sph.crank_residual,
+                                  {"R_1": "matrix", "R_j": "matrix", "circle_point": "vec3", "centre_point": "vec3"},
+                                  R_1=np.eye(3), R_j=_sg_set(2)[1], circle_point=_SGZ, centre_point=[0, 0, 1]),
+    "spherical.slider_residual": E(lambda: sph.slider_residual,
+                                   {"R_j": "matrix", "slider_point": "vec3", "guide_pole": "vec3"},
+                                   R_j=_sg_set(2)[1], slider_point=_SGZ, guide_pole=[0, 0, 1]),
+    "spherical.planar_orientations": E(lambda: sph.planar_orientations,
+                                       {"theta": "real", "d": "point", "scale": "scalar"},
+                                       theta=[0.0, 0.5], d=[0.0, 2 + 1j], scale=1e-3),
+    "spherical.dyad_for_circle_point": E(lambda: sph.dyad_for_circle_point,
+                                         {"R": "matrix", "circle_point": "vec3", "along": "scalar"},
+                                         R=_sg_set(3), circle_point=_SGZ, along=0.0),
+    "spherical.dyad_for_centre_point": E(lambda: sph.dyad_for_centre_point,
+                                         {"R": "matrix", "centre_point": "vec3", "along": "scalar"},
+                                         R=_sg_set(2), centre_point=[0.1, -0.2, 0.97], along=0.3),
+    "spherical.slider_dyad_for_point": E(lambda: sph.slider_dyad_for_point,
+                                         {"R": "matrix", "slider_point": "vec3", "rtol": "scalar"},
+                                         R=_sg_set(2), slider_point=_SGZ, rtol=1e-9),
+    "spherical.circle_point_curve": E(lambda: sph.circle_point_curve,
+                                      {"R": "matrix", "samples": "count", "phi": "real?"},
+                                      R=_sg_set(4), samples=24, phi=None),
+    "spherical.slider_point_curve": E(lambda: sph.slider_point_curve,
+                                      {"R": "matrix", "samples": "count", "phi": "real?"},
+                                      R=_sg_set(3), samples=24, phi=None),
+    "spherical.SphericalBurmesterCurve.dyad": E(lambda: sph.circle_point_curve(_sg_set(4), samples=24).dyad,
+                                                {"i": "int", "k": "int"}, i=0, k=0),
+    "spherical.slider_dyads": E(lambda: sph.slider_dyads, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_set(4),
+                                imag_tol=1e-6),
+    "spherical.burmester": E(lambda: sph.burmester, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_five(),
+                             imag_tol=1e-6),
+    "spherical.guidance_fourbars": E(lambda: sph.guidance_fourbars,
+                                     {"R": "matrix", "rtol": "scalar", "dyads": "instance?"},
+                                     R=_sg_five(), rtol=1e-9, dyads=None),
+    "spherical.guidance_slider_crank": E(lambda: sph.guidance_slider_crank,
+                                         {"R": "matrix", "crank": "instance", "slider": "instance", "rtol": "scalar"},
+                                         R=_sg_set(3), crank=_sg_crank(), slider=_sg_slider(), rtol=1e-9),
+    "spherical.SphericalGuidanceFourBar.coupler_orientations": E(
+        lambda: sph.guidance_fourbars(_sg_five()).candidates[0].coupler_orientations, {"theta_input": "real"},
+        theta_input=[0.1, 0.4]),
+})
+
+
+def _sg_nine():
+    """Nine coupler orientations of a crank-rocker (as in tests/spherical/test_spherical_optimal.py)."""
+    lk = sph.SphericalFourBar(0.35, 0.75, 0.6, 0.8)
+    pose = lk.solve(np.linspace(0.3, 2.6, 9))
+    zB, zC = np.array([0.0, 0.0, 1.0]), np.array([np.sin(0.75), 0.0, np.cos(0.75)])
+
+    def frame(p, q):
+        t = q - np.sum(p * q, axis=-1, keepdims=True) * p
+        t = t / np.linalg.norm(t, axis=-1, keepdims=True)
+        return np.stack([p, t, np.cross(p, t)], axis=-1)
+    return frame(pose.B, pose.C) @ frame(zB, zC).T
+
+
+CASES.update({
+    "spherical.guidance_motion": E(lambda: sph.guidance_motion, {"design": "instance", "theta_input": "real"},
+                                   design=sph.guidance_fourbars(_sg_five()).candidates[0], theta_input=[0.1, 0.4]),
+    "spherical.optimal_guidance": E(lambda: sph.optimal_guidance,
+                                    {"R": "matrix", "start": "instance?", "objective": "option",
+                                     "theta_input": "real?", "rtol": "scalar"},
+                                    R=_sg_nine(), start=None, objective="orientation",
+                                    theta_input=np.linspace(0.0, 2.3, 9), rtol=1e-2),
+    "spherical.minimax": E(lambda: sph.minimax,
+                           {"x": "real", "y": "real", "theta0": "scalar", "psi0": "scalar", "start": "instance?",
+                            "tol": "scalar", "max_iter": "count"},
+                           x=np.linspace(0.0, 1.0, 41), y=0.5 * np.sin(np.linspace(0.0, 1.0, 41)),
+                           theta0=0.7, psi0=1.4, start=None, tol=1e-10, max_iter=40),
+})
+RECORDS.update({f"spherical.{n}": "result record built by the package" for n in (
+    "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar",
+    "SphericalGuidanceMotion", "SphericalOptimalGuidance")})
+
+
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():
     """Qualified names of every public function, class and public method of a public class."""
@@ -1716,105 +1818,3 @@ def test_hooke_acceleration_huge_speed_at_a_stationary_angle():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert sp.hooke_acceleration(0.0, 0.5, omega=1e200) == 0.0
-
-
-# ----------------------------------------------------------------------------- spherical guidance (issue 15)
-def _sg_set(n):
-    axes = [[0, 0, 1], [0.2, 0.1, 1], [-0.3, 0.2, 1], [0.1, -0.4, 1], [0.5, 0.3, 1]]
-    angles = [0.0, 0.5, 1.0, 1.4, 1.9]
-    return np.stack([sph.rotation_matrix(a, t) for a, t in zip(axes[:n], angles[:n])])
-
-
-def _sg_five():
-    rng = np.random.default_rng(3)
-    return np.stack([sph.rotation_matrix(rng.normal(size=3), rng.uniform(0.1, 1.2)) for _ in range(5)])
-
-
-def _sg_slider():
-    curve = sph.slider_point_curve(_sg_set(3), samples=12)
-    return curve.dyad(*np.argwhere(curve.valid)[0])
-
-
-def _sg_crank():
-    return sph.dyad_for_circle_point(_sg_set(3), [0.3, 0.2, 0.93])
-
-
-_SGZ = [0.3, 0.2, 0.93]
-CASES.update({
-    "spherical.relative_rotation": E(lambda: sph.relative_rotation, {"R_1": "matrix", "R_j": "matrix"},
-                                     R_1=np.eye(3), R_j=_sg_set(2)[1]),
-    "spherical.rotation_pole": E(lambda: sph.rotation_pole, {"R_1": "matrix", "R_j": "matrix"},
-                                 R_1=np.eye(3), R_j=_sg_set(2)[1]),
-    "spherical.pole_triangle": E(lambda: sph.pole_triangle, {"R": "matrix"}, R=_sg_set(3)),
-    "spherical.crank_residual": E(lambda: sph.crank_residual,
-                                  {"R_1": "matrix", "R_j": "matrix", "circle_point": "vec3", "centre_point": "vec3"},
-                                  R_1=np.eye(3), R_j=_sg_set(2)[1], circle_point=_SGZ, centre_point=[0, 0, 1]),
-    "spherical.slider_residual": E(lambda: sph.slider_residual,
-                                   {"R_j": "matrix", "slider_point": "vec3", "guide_pole": "vec3"},
-                                   R_j=_sg_set(2)[1], slider_point=_SGZ, guide_pole=[0, 0, 1]),
-    "spherical.planar_orientations": E(lambda: sph.planar_orientations,
-                                       {"theta": "real", "d": "point", "scale": "scalar"},
-                                       theta=[0.0, 0.5], d=[0.0, 2 + 1j], scale=1e-3),
-    "spherical.dyad_for_circle_point": E(lambda: sph.dyad_for_circle_point,
-                                         {"R": "matrix", "circle_point": "vec3", "along": "scalar"},
-                                         R=_sg_set(3), circle_point=_SGZ, along=0.0),
-    "spherical.dyad_for_centre_point": E(lambda: sph.dyad_for_centre_point,
-                                         {"R": "matrix", "centre_point": "vec3", "along": "scalar"},
-                                         R=_sg_set(2), centre_point=[0.1, -0.2, 0.97], along=0.3),
-    "spherical.slider_dyad_for_point": E(lambda: sph.slider_dyad_for_point,
-                                         {"R": "matrix", "slider_point": "vec3", "rtol": "scalar"},
-                                         R=_sg_set(2), slider_point=_SGZ, rtol=1e-9),
-    "spherical.circle_point_curve": E(lambda: sph.circle_point_curve,
-                                      {"R": "matrix", "samples": "count", "phi": "real?"},
-                                      R=_sg_set(4), samples=24, phi=None),
-    "spherical.slider_point_curve": E(lambda: sph.slider_point_curve,
-                                      {"R": "matrix", "samples": "count", "phi": "real?"},
-                                      R=_sg_set(3), samples=24, phi=None),
-    "spherical.SphericalBurmesterCurve.dyad": E(lambda: sph.circle_point_curve(_sg_set(4), samples=24).dyad,
-                                                {"i": "int", "k": "int"}, i=0, k=0),
-    "spherical.slider_dyads": E(lambda: sph.slider_dyads, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_set(4),
-                                imag_tol=1e-6),
-    "spherical.burmester": E(lambda: sph.burmester, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_five(),
-                             imag_tol=1e-6),
-    "spherical.guidance_fourbars": E(lambda: sph.guidance_fourbars,
-                                     {"R": "matrix", "rtol": "scalar", "dyads": "instance?"},
-                                     R=_sg_five(), rtol=1e-9, dyads=None),
-    "spherical.guidance_slider_crank": E(lambda: sph.guidance_slider_crank,
-                                         {"R": "matrix", "crank": "instance", "slider": "instance", "rtol": "scalar"},
-                                         R=_sg_set(3), crank=_sg_crank(), slider=_sg_slider(), rtol=1e-9),
-    "spherical.SphericalGuidanceFourBar.coupler_orientations": E(
-        lambda: sph.guidance_fourbars(_sg_five()).candidates[0].coupler_orientations, {"theta_input": "real"},
-        theta_input=[0.1, 0.4]),
-})
-
-
-def _sg_nine():
-    """Nine coupler orientations of a crank-rocker (as in tests/spherical/test_spherical_optimal.py)."""
-    lk = sph.SphericalFourBar(0.35, 0.75, 0.6, 0.8)
-    pose = lk.solve(np.linspace(0.3, 2.6, 9))
-    zB, zC = np.array([0.0, 0.0, 1.0]), np.array([np.sin(0.75), 0.0, np.cos(0.75)])
-
-    def frame(p, q):
-        t = q - np.sum(p * q, axis=-1, keepdims=True) * p
-        t = t / np.linalg.norm(t, axis=-1, keepdims=True)
-        return np.stack([p, t, np.cross(p, t)], axis=-1)
-    return frame(pose.B, pose.C) @ frame(zB, zC).T
-
-
-CASES.update({
-    "spherical.guidance_motion": E(lambda: sph.guidance_motion, {"design": "instance", "theta_input": "real"},
-                                   design=sph.guidance_fourbars(_sg_five()).candidates[0], theta_input=[0.1, 0.4]),
-    "spherical.optimal_guidance": E(lambda: sph.optimal_guidance,
-                                    {"R": "matrix", "start": "instance?", "objective": "option",
-                                     "theta_input": "real?", "rtol": "scalar"},
-                                    R=_sg_nine(), start=None, objective="orientation",
-                                    theta_input=np.linspace(0.0, 2.3, 9), rtol=1e-2),
-    "spherical.minimax": E(lambda: sph.minimax,
-                           {"x": "real", "y": "real", "theta0": "scalar", "psi0": "scalar", "start": "instance?",
-                            "tol": "scalar", "max_iter": "count"},
-                           x=np.linspace(0.0, 1.0, 41), y=0.5 * np.sin(np.linspace(0.0, 1.0, 41)),
-                           theta0=0.7, psi0=1.4, start=None, tol=1e-10, max_iter=40),
-})
-RECORDS.update({f"spherical.{n}": "result record built by the package" for n in (
-    "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar",
-    "SphericalGuidanceMotion", "SphericalOptimalGuidance")})
