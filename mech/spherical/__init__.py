@@ -84,6 +84,7 @@ from mech.spherical.guidance import (
     slider_point_curve,
     slider_residual,
 )
+from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
@@ -168,4 +169,10 @@ __all__ = [
     "turn",
     "universal_joint",
     "velocity",
+    "SphericalLinkage",
+    "SphericalLinkagePose",
+    "stephenson1",
+    "stephenson2",
+    "watt1",
+    "watt2",
 ]

@@ -1,0 +1,368 @@
+"""A spherical linkage of one degree of freedom: a crank, then spherical RRR dyads.
+
+The formulas come from ``derivations/spherical/linkage.md`` through
+``mech._generated.spherical_linkage``; this module orders the steps, carries the points,
+angular velocities and accelerations from one step to the next, and reports failures.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from mech._errors import AssemblyError, InputTypeError
+from mech._generated import spherical_linkage as _g
+from mech._pose import Pose
+from mech._validate import arc as _arc, bool_flag, branch_sign, motion_inputs, real_number, real_tuple
+
+__all__ = ["SphericalLinkage", "SphericalLinkagePose", "GROUND"]
+
+GROUND = "ground"
+
+
+def _xyz(v):
+    return v[..., 0], v[..., 1], v[..., 2]
+
+
+def _stack(*c):
+    return np.stack(np.broadcast_arrays(*c), axis=-1)
+
+
+def _unit_vector(name, value):
+    v = np.asarray(real_tuple(name, value, 3), dtype=float)
+    n = float(np.linalg.norm(v))
+    if not abs(n - 1.0) <= 1e-9:
+        raise ValueError(f"Expected `{name}` to be a unit vector, got {value!r} (norm {n!r})")
+    return v / n
+
+
+def _pair(name, value):
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise InputTypeError(f"Expected `{name}` to be a pair, got {value!r}")
+    return tuple(value)
+
+
+class SphericalLinkagePose(Pose):
+    """Poses of a `SphericalLinkage` at an array of input angles (`SphericalLinkage.solve`).
+
+    Attributes
+    ----------
+    theta, valid, assembled : ndarray, shape (...)
+        Input angle; True where every solved field is finite; True where the positions
+        exist (they differ only at dead points, where a dyad's rates are unbounded).
+    points : dict of str -> ndarray, shape (..., 3)
+        Every named point (ground points broadcast), NaN where it cannot assemble.
+    velocities, accelerations : dict of str -> ndarray, shape (..., 3)
+        Velocities and accelerations of every point; with ``order >= 1`` and ``>= 2``.
+    angular_velocities, angular_accelerations : dict of str -> ndarray, shape (..., 3)
+        Angular velocity and acceleration vectors of every link (the ground's are zero).
+    """
+
+    _ORDER_OF = {"velocities": 1, "angular_velocities": 1, "accelerations": 2, "angular_accelerations": 2}
+
+
+class SphericalLinkage:
+    """A spherical linkage (球面连杆机构) built as a crank followed by spherical RRR dyads.
+
+    Build it with the chained methods (each returns a new linkage), then call `solve`.
+    Points are unit vectors named by strings; links are named by strings; the frame is
+    ``"ground"``. Every moving link has a frame: an origin point and the great circle
+    towards a second point of it, set by the step that creates it, and `point` attaches a
+    point at an arc and an angle there (eq. (1) of :ref:`deriv-spherical-linkage`).
+
+    Parameters
+    ----------
+    ground : mapping of str to array_like (3,), optional
+        Named fixed points (unit vectors).
+
+    Notes
+    -----
+    Derivation: :ref:`deriv-spherical-linkage`. Each dyad is solved in closed form from
+    the one equation A cos x + B sin x = C, eqs. (2)-(4), with an explicit ``branch``:
+    +1 puts the joint to the left of the directed great circle pins[0] -> pins[1] seen
+    from outside (``det[P1, P2, J] > 0``), the convention of `SphericalFourBar`. A branch
+    is kept by its sign at every input, so no solution jumps from one branch to the other;
+    where a dyad's two branches meet (its radicand (4) is zero) the pose is the limit
+    position and its rates are unbounded (``valid`` False, ``assembled`` True). Unlike
+    `SphericalFourBar`, a dyad whose branches meet and part again (a change-point
+    geometry) is not continued onto the other sign. Rates come from differentiating the
+    closure, eqs. (5)-(8): each link's angular velocity and acceleration vector, then
+    ``v = w x P`` and ``a = dw x P + w x (w x P)`` for its points.
+
+    Examples
+    --------
+    The spherical four-bar (0.3, 0.9, 0.7, 1.0) as a crank and one dyad:
+
+    >>> import numpy as np
+    >>> from mech.spherical import SphericalLinkage
+    >>> lk = (SphericalLinkage({"A": (0, 0, 1), "D": (np.sin(1.0), 0, np.cos(1.0))})
+    ...       .crank("AB", pivot="A", tip="B", arc=0.3, reference="D")
+    ...       .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(0.9, 0.7)))
+    >>> pose = lk.solve([0.0, np.pi / 2], order=2)
+    >>> np.round(np.arccos(np.sum(pose.points["C"] * pose.points["D"], axis=-1)), 12).tolist()
+    [0.7, 0.7]
+    >>> pose.accelerations["C"].shape
+    (2, 3)
+    """
+
+    def __init__(self, ground=None):
+        self._steps = ()
+        self._points = {}
+        self._links = {GROUND: None}
+        self._driver = None
+        if ground is not None and not hasattr(ground, "items"):
+            raise InputTypeError(f"Expected `ground` to be a mapping of point names to unit vectors, got {ground!r}")
+        for name, v in dict(ground or {}).items():
+            self._add_point(name, GROUND, "ground")
+            self._steps += (("ground", name, _unit_vector(f"ground[{name!r}]", v)),)
+
+    # ------------------------------------------------------------------ building
+    def _copy(self):
+        new = object.__new__(SphericalLinkage)
+        new._steps = self._steps
+        new._points = dict(self._points)
+        new._links = dict(self._links)
+        new._driver = self._driver
+        return new
+
+    def _add_point(self, name, link, arg):
+        if not isinstance(name, str) or not name:
+            raise ValueError(f"Expected `{arg}` to be a point name (a non-empty str), got {name!r}")
+        if name in self._points:
+            raise ValueError(f"Expected `{arg}` to be a new point name, got {name!r}, which is already defined")
+        self._points[name] = link
+
+    def _add_link(self, name, frame, arg):
+        if not isinstance(name, str) or not name:
+            raise ValueError(f"Expected `{arg}` to be a link name (a non-empty str), got {name!r}")
+        if name in self._links:
+            raise ValueError(f"Expected `{arg}` to be a new link name, got {name!r}, which is already defined")
+        self._links[name] = frame
+
+    def _need_point(self, name, arg):
+        if not isinstance(name, str) or name not in self._points:
+            known = ", ".join(sorted(self._points)) or "none"
+            raise ValueError(f"Expected `{arg}` to be a known point, got {name!r} (known points: {known})")
+
+    def _need_link(self, name, arg):
+        if not isinstance(name, str) or name not in self._links:
+            known = ", ".join(sorted(self._links))
+            raise ValueError(f"Expected `{arg}` to be a known link, got {name!r} (known links: {known})")
+
+    @property
+    def points(self):
+        """Names of the points, in the order they are defined."""
+        return tuple(self._points)
+
+    @property
+    def links(self):
+        """Names of the links (the ground first)."""
+        return tuple(self._links)
+
+    def ground(self, name, at):
+        """Add a fixed point `name` at the unit vector `at`."""
+        new = self._copy()
+        new._add_point(name, GROUND, "name")
+        new._steps += (("ground", name, _unit_vector("at", at)),)
+        return new
+
+    def point(self, name, *, link, at):
+        """Attach a point to a moving `link` at ``at = (r, gamma)`` in its frame.
+
+        The point is at arc `r` from the frame's origin O, at the angle `gamma`
+        counter-clockwise (seen from outside) from the great circle O -> X, eq. (1).
+        """
+        new = self._copy()
+        new._need_link(link, "link")
+        if link == GROUND:
+            raise ValueError("Expected `link` to be a moving link (add ground points with `ground`), got 'ground'")
+        r, g = real_tuple("at", at, 2)
+        new._add_point(name, link, "name")
+        new._steps += (("point", name, link, r, g),)
+        return new
+
+    def crank(self, link, *, pivot, tip, arc, reference):
+        """The input crank: `link` turns about the fixed point `pivot`, its `tip` at `arc`.
+
+        The input angle theta is the angle at `pivot` from the great circle towards the
+        fixed point `reference` to the great circle towards `tip`, counter-clockwise seen
+        from outside; the link's frame is ``pivot -> tip``.
+        """
+        new = self._copy()
+        if new._driver is not None:
+            raise ValueError(f"Expected one crank (the linkage has one degree of freedom), got a second: {link!r}")
+        new._need_point(pivot, "pivot")
+        new._need_point(reference, "reference")
+        for arg, p in (("pivot", pivot), ("reference", reference)):
+            if new._points[p] != GROUND:
+                raise ValueError(f"Expected `{arg}` to be a ground point, got {p!r} (on link {new._points[p]!r})")
+        if pivot == reference:
+            raise ValueError(f"Expected `reference` to differ from `pivot`, got {reference!r} for both")
+        a = _arc("arc", arc)
+        new._add_link(link, (pivot, tip), "link")
+        new._add_point(tip, link, "tip")
+        new._driver = link
+        new._steps += (("crank", link, pivot, tip, a, reference),)
+        return new
+
+    def rrr(self, links, *, pins, joint, arcs, branch=1):
+        """A spherical RRR dyad, eqs. (2)-(8): two links pinned at known `pins`, met at `joint`.
+
+        ``arcs = (b1, b2)`` are the arcs pins[0]-joint and pins[1]-joint. ``branch=+1``
+        puts `joint` to the left of the great circle pins[0] -> pins[1] seen from outside.
+        Frames: link 0 is ``pins[0] -> joint``, link 1 is ``pins[1] -> joint``.
+        """
+        new = self._copy()
+        l1, l2 = _pair("links", links)
+        p1, p2 = _pair("pins", pins)
+        new._need_point(p1, "pins[0]")
+        new._need_point(p2, "pins[1]")
+        if p1 == p2:
+            raise ValueError(f"Expected two different `pins`, got {pins!r}")
+        b1, b2 = (_arc(f"arcs[{k}]", v) for k, v in enumerate(_pair("arcs", arcs)))
+        sign = branch_sign(branch)
+        new._add_link(l1, (p1, joint), "links[0]")
+        new._add_link(l2, (p2, joint), "links[1]")
+        new._add_point(joint, l1, "joint")
+        new._steps += (("rrr", (l1, l2), (p1, p2), joint, (b1, b2), sign),)
+        return new
+
+    def __repr__(self):
+        return f"SphericalLinkage(points={list(self._points)}, links={list(self._links)[1:]})"
+
+    # ------------------------------------------------------------------ solving
+    def solve(self, theta, order=0, omega=1.0, alpha=0.0, strict=False):
+        """Solve every point of the linkage at the input angles `theta`.
+
+        Parameters
+        ----------
+        theta : array_like, shape (...)
+            Input angle of the crank, radians.
+        order : {0, 1, 2}, optional
+            Highest time derivative to compute.
+        omega, alpha : array_like, optional
+            The crank's angular velocity and acceleration, broadcast against `theta`.
+        strict : bool, optional
+            Raise `AssemblyError` instead of returning NaN where it cannot assemble.
+
+        Returns
+        -------
+        SphericalLinkagePose
+            ``theta, valid, assembled, points``; with ``order >= 1`` also ``velocities``
+            and ``angular_velocities``; with ``order >= 2`` also ``accelerations`` and
+            ``angular_accelerations``.
+
+        Raises
+        ------
+        AssemblyError
+            With ``strict=True``, naming the first input angle that cannot be assembled.
+        ValueError
+            For a linkage without a crank, a non-finite input or an `order` outside 0..2.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mech.spherical import stephenson1
+        >>> lk = stephenson1(0.3, 0.9, 0.7, 1.0, E=(0.2, 0.8), F=(0.3, -1.0), arcs=(0.8, 0.7), coupler=(0.4, 0.5))
+        >>> pose = lk.solve(np.linspace(0.0, 1.0, 3), order=2)
+        >>> pose.valid.tolist(), pose.accelerations["P"].shape
+        ([True, True, True], (3, 3))
+        """
+        strict = bool_flag("strict", strict)
+        if self._driver is None:
+            raise ValueError("Expected a linkage with a crank before `solve`, got none (call `crank` first)")
+        order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
+        th = inputs[0].reshape(-1)
+        om = inputs[1].reshape(-1) if order >= 1 else None
+        al = inputs[2].reshape(-1) if order >= 2 else None
+        n = th.size
+        P, V, Acc, W, DW = {}, {}, {}, {GROUND: np.zeros((n, 3))}, {GROUND: np.zeros((n, 3))}
+        zero = np.zeros((n, 3))
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            for step in self._steps:
+                kind = step[0]
+                if kind == "ground":
+                    _, name, v = step
+                    P[name] = np.broadcast_to(v, (n, 3)).copy()
+                    V[name], Acc[name] = zero, zero
+                    continue
+                if kind == "crank":
+                    _, link, pivot, tip, a, ref = step
+                    P[tip] = _stack(*_g.spherical_link_point(*_xyz(P[pivot]), *_xyz(P[ref]), a, th))
+                    if order >= 1:
+                        W[link] = om[:, None] * P[pivot]
+                    if order >= 2:
+                        DW[link] = al[:, None] * P[pivot]
+                    self._rates(P, V, Acc, W, DW, tip, link, order)
+                elif kind == "point":
+                    _, name, link, r, g = step
+                    o, x = self._links[link]
+                    P[name] = _stack(*_g.spherical_link_point(*_xyz(P[o]), *_xyz(P[x]), r, g))
+                    self._rates(P, V, Acc, W, DW, name, link, order)
+                else:
+                    _, (l1, l2), (p1, p2), j, (b1, b2), sign = step
+                    P[j] = _stack(*_g.spherical_dyad_position(*_xyz(P[p1]), *_xyz(P[p2]), b1, b2, float(sign)))
+                    if order >= 1:
+                        out = _g.spherical_dyad_velocity(*_xyz(P[p1]), *_xyz(V[p1]), *_xyz(P[p2]), *_xyz(V[p2]),
+                                                         *_xyz(P[j]))
+                        W[l1], W[l2] = _stack(*out[:3]), _stack(*out[3:])
+                    if order >= 2:
+                        out = _g.spherical_dyad_acceleration(*_xyz(P[p1]), *_xyz(Acc[p1]), *_xyz(P[p2]),
+                                                             *_xyz(Acc[p2]), *_xyz(P[j]), *_xyz(W[l1]), *_xyz(W[l2]))
+                        DW[l1], DW[l2] = _stack(*out[:3]), _stack(*out[3:])
+                    self._rates(P, V, Acc, W, DW, j, l1, order)
+        assembled = np.all([np.isfinite(v).all(axis=-1) for v in P.values()], axis=0)
+        valid = assembled.copy()
+        for group in ((V, W) if order == 1 else (V, W, Acc, DW) if order == 2 else ()):
+            for v in group.values():
+                valid &= np.isfinite(v).all(axis=-1)
+        if strict and not assembled.all():
+            bad = float(th[np.argmin(assembled)])
+            raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
+        nan = np.where(assembled[:, None], 0.0, np.nan)
+        ok = np.where(valid[:, None], 0.0, np.nan)
+
+        def shaped(d, mask):
+            return {k: (v + mask).reshape(shape + (3,)) for k, v in d.items()}
+
+        fields = {"theta": inputs[0].copy(), "valid": valid.reshape(shape), "assembled": assembled.reshape(shape),
+                  "points": shaped(P, nan)}
+        if order >= 1:
+            fields["velocities"] = shaped(V, ok)
+            fields["angular_velocities"] = shaped({k: W[k] for k in self._links}, ok)
+        if order >= 2:
+            fields["accelerations"] = shaped(Acc, ok)
+            fields["angular_accelerations"] = shaped({k: DW[k] for k in self._links}, ok)
+        return SphericalLinkagePose(order, fields)
+
+    @staticmethod
+    def _rates(P, V, Acc, W, DW, name, link, order):
+        if order >= 1:
+            V[name] = np.cross(W[link], P[name])
+        if order >= 2:
+            Acc[name] = np.cross(DW[link], P[name]) + np.cross(W[link], V[name])
+
+    def coupler_curve(self, theta, point="P", order=0, omega=1.0, alpha=0.0):
+        """The path of `point` with the input angle as parameter (monograph §2.4).
+
+        Returns ``(P, valid)`` for ``order=0``, ``(P, v, valid)`` for ``order=1`` and
+        ``(P, v, a, valid)`` for ``order=2``: arrays of shape ``theta.shape + (3,)``
+        (NaN where it cannot assemble) and the mask. See `solve` for the arguments.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from mech.spherical import watt1
+        >>> lk = watt1(0.3, 0.9, 0.7, 1.0, E=(0.5, 0.6), F=(0.4, 0.9), arcs=(0.7, 0.8), coupler=(0.3, 0.4))
+        >>> P, valid = lk.coupler_curve(np.linspace(0, 2 * np.pi, 7))
+        >>> P.shape, bool(valid.all())
+        ((7, 3), True)
+        """
+        if not isinstance(point, str) or point not in self._points:
+            raise ValueError(f"Expected `point` to be a known point, got {point!r} (known points: {', '.join(self._points)})")
+        pose = self.solve(theta, order=order, omega=omega, alpha=alpha)
+        out = [pose.points[point]]
+        if order >= 1:
+            out.append(pose.velocities[point])
+        if order >= 2:
+            out.append(pose.accelerations[point])
+        return (*out, pose.valid)
