@@ -18,7 +18,7 @@ Watt-2     the rocker (D, C, E)  the ground (A, D, F)  rocker and ground, adjace
 import numpy as np
 
 from mech._generated import spherical_linkage as _g
-from mech._validate import arc as _arc, real_tuple
+from mech._validate import arc as _arc, branch_sign, real_tuple
 from mech.spherical.linkage._linkage import SphericalLinkage
 
 __all__ = ["stephenson1", "stephenson2", "watt1", "watt2"]
@@ -38,6 +38,7 @@ def _build(kind, a, b, c, d, E, F, arcs, coupler, branches):
     coupler = real_tuple("coupler", coupler, 2)
     if not isinstance(branches, (tuple, list)) or len(branches) != 2:
         raise ValueError(f"Expected `branches` to be two signs (+1 or -1), got {branches!r}")
+    branches = tuple(branch_sign(v, f"branches[{k}]") for k, v in enumerate(branches))
     A = np.array([0.0, 0.0, 1.0])
     D = np.array([np.sin(d), 0.0, np.cos(d)])
     lk = (SphericalLinkage({"A": A, "D": D})
