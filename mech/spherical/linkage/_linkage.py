@@ -218,7 +218,7 @@ class SphericalLinkage:
         new._need_point(p2, "pins[1]")
         if p1 == p2:
             raise ValueError(f"Expected two different `pins`, got {pins!r}")
-        b1, b2 = (_arc(f"arcs[{k}]", v) for k, v in enumerate(_pair("arcs", arcs)))
+        b1, b2 = (_arc("arcs", v) for v in _pair("arcs", arcs))
         sign = branch_sign(branch)
         new._add_link(l1, (p1, joint), "links[0]")
         new._add_link(l2, (p2, joint), "links[1]")

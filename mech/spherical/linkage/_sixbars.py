@@ -17,7 +17,6 @@ Watt-2     the rocker (D, C, E)  the ground (A, D, F)  rocker and ground, adjace
 
 import numpy as np
 
-from mech._generated import spherical_linkage as _g
 from mech._validate import arc as _arc, branch_sign, real_tuple
 from mech.spherical.linkage._linkage import SphericalLinkage
 
@@ -34,11 +33,11 @@ def _build(kind, a, b, c, d, E, F, arcs, coupler, branches):
     F = real_tuple("F", F, 2)
     if not isinstance(arcs, (tuple, list)) or len(arcs) != 2:
         raise ValueError(f"Expected `arcs` to be two arcs (EG, FG), got {arcs!r}")
-    e, f = (_arc(f"arcs[{k}]", v) for k, v in enumerate(arcs))
+    e, f = (_arc("arcs", v) for v in arcs)
     coupler = real_tuple("coupler", coupler, 2)
     if not isinstance(branches, (tuple, list)) or len(branches) != 2:
         raise ValueError(f"Expected `branches` to be two signs (+1 or -1), got {branches!r}")
-    branches = tuple(branch_sign(v, f"branches[{k}]") for k, v in enumerate(branches))
+    branches = tuple(branch_sign(v, "branches") for v in branches)
     A = np.array([0.0, 0.0, 1.0])
     D = np.array([np.sin(d), 0.0, np.cos(d)])
     lk = (SphericalLinkage({"A": A, "D": D})
@@ -47,8 +46,9 @@ def _build(kind, a, b, c, d, E, F, arcs, coupler, branches):
     on_e, on_f = _CARRIER[kind]
     lk = lk.point("E", link=on_e, at=E)
     if on_f == GROUND:
-        Fv = np.array(_g.spherical_link_point(*A, *D, *F), dtype=float)
-        lk = lk.ground("F", Fv / np.linalg.norm(Fv))
+        # eq. (1) in the ground frame, where u = (1, 0, 0) and w = (0, 1, 0) exactly
+        r, g = F
+        lk = lk.ground("F", (np.sin(r) * np.cos(g), np.sin(r) * np.sin(g), np.cos(r)))
     else:
         lk = lk.point("F", link=on_f, at=F)
     lk = lk.rrr(("EG", "FG"), pins=("E", "F"), joint="G", arcs=(e, f), branch=branches[1])
