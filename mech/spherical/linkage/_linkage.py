@@ -158,6 +158,18 @@ class SphericalLinkage:
         """Names of the links (the ground first)."""
         return tuple(self._links)
 
+    @property
+    def members(self):
+        """The points of every link: link name -> tuple of point names (frame points first).
+
+        A link with three or more points is a ternary (or higher) link.
+        """
+        out = {link: [] if frame is None else list(frame) for link, frame in self._links.items()}
+        for name, link in self._points.items():
+            if name not in out[link]:
+                out[link].append(name)
+        return {link: tuple(names) for link, names in out.items()}
+
     def ground(self, name, at):
         """Add a fixed point `name` at the unit vector `at`."""
         new = self._copy()
