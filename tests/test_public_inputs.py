@@ -669,9 +669,9 @@ CASES = {
                                                   theta=[0.0, 1.0], order=2, omega=1.5, alpha=0.5),
     **{f"spherical.{name}": E(lambda name=name: getattr(sph, name),
                               {**_ABCD, "E": ("scalar", first), "F": ("scalar", first), "arcs": ("scalar", first),
-                               "coupler": ("scalar", first), "branches": ("branch", first)},
+                               "coupler": ("scalar", first), "branches": ("branch", first), "frame": "matrix?"},
                               a=0.3, b=0.9, c=0.7, d=1.0, E=(0.2, 0.8), F=(0.3, -1.0), arcs=(0.8, 0.7),
-                              coupler=(0.4, 0.5), branches=(1, 1))
+                              coupler=(0.4, 0.5), branches=(1, 1), frame=np.eye(3))
        for name in ("stephenson1", "stephenson2", "watt1", "watt2")},
     "spherical.SphericalPolygon.relations": E(lambda: _polygon().relations),
     "spherical.angle_at": E(lambda: sph.angle_at, {"a": "vec3", "b": "vec3", "c": "vec3"},

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from mech import AssemblyError
-from mech.spherical import SphericalFourBar, SphericalLinkage, stephenson1, stephenson2, watt1, watt2
+from mech.spherical import SphericalFourBar, SphericalLinkage, ground_frame, stephenson1, stephenson2, watt1, watt2
 
 from sixbar_reference import reference
 
@@ -24,7 +24,9 @@ def random_sixbar(kind, rng, full_turn=True):
         arcs = tuple(rng.uniform(0.4, 1.5, 2))
         coupler = (rng.uniform(0.1, 1.0), rng.uniform(-np.pi, np.pi))
         branches = tuple(int(s) for s in rng.choice([-1, 1], 2))
-        lk = KINDS[kind](a, b, c, d, E=E, F=F, arcs=arcs, coupler=coupler, branches=branches)
+        # placed anywhere on the sphere
+        frame = ground_frame(rng.uniform(-np.pi, np.pi), rng.uniform(-1.5, 1.5), rng.uniform(-np.pi, np.pi))
+        lk = KINDS[kind](a, b, c, d, E=E, F=F, arcs=arcs, coupler=coupler, branches=branches, frame=frame)
         ok = lk.solve(np.linspace(0, 2 * np.pi, 361), order=1).valid
         if (ok.all() if full_turn else ok.any()):
             return lk
@@ -160,6 +162,21 @@ def test_a_six_bar_whose_second_dyad_copies_the_first_moves_as_the_fourbar():
     pose = lk.solve(th)
     np.testing.assert_allclose(pose.points["E"], pose.points["B"], atol=1e-12)
     np.testing.assert_allclose(pose.points["G"], fb.solve(th).C, atol=1e-7)
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_placed_anywhere_on_the_sphere_is_the_rotated_linkage(kind):
+    R = ground_frame(0.7, -0.4, 2.1)
+    args = dict(E=(0.4, 0.6), F=(0.9, 0.5), arcs=(0.7, 0.6), coupler=(0.3, 0.5))
+    here, there = KINDS[kind](0.3, 0.9, 0.7, 1.0, **args), KINDS[kind](0.3, 0.9, 0.7, 1.0, frame=R, **args)
+    th = np.linspace(0, 2 * np.pi, 25)
+    p1, p2 = here.solve(th, order=2, omega=1.2, alpha=0.4), there.solve(th, order=2, omega=1.2, alpha=0.4)
+    np.testing.assert_array_equal(p1.valid, p2.valid)
+    assert p1.valid.any()
+    for name in here.points:
+        np.testing.assert_allclose(p2.points[name][p1.valid], p1.points[name][p1.valid] @ R.T, atol=1e-14)
+        np.testing.assert_allclose(p2.accelerations[name][p1.valid], p1.accelerations[name][p1.valid] @ R.T,
+                                   atol=1e-12)
 
 
 def test_not_assembled_is_nan_and_strict_raises():

@@ -18,6 +18,7 @@ Watt-2     the rocker (D, C, E)  the ground (A, D, F)  rocker and ground, adjace
 import numpy as np
 
 from mech._validate import arc as _arc, branch_sign, real_tuple
+from mech.spherical._fourbar import _rotation
 from mech.spherical.linkage._linkage import SphericalLinkage
 
 __all__ = ["stephenson1", "stephenson2", "watt1", "watt2"]
@@ -27,7 +28,7 @@ _CARRIER = {"stephenson1": ("AB", "DC"), "stephenson2": ("BC", "ground"),
             "watt1": ("BC", "DC"), "watt2": ("DC", "ground")}
 
 
-def _build(kind, a, b, c, d, E, F, arcs, coupler, branches):
+def _build(kind, a, b, c, d, E, F, arcs, coupler, branches, frame):
     a, b, c, d = (_arc(n, v) for n, v in zip("abcd", (a, b, c, d)))
     E = real_tuple("E", E, 2)
     F = real_tuple("F", F, 2)
@@ -38,8 +39,9 @@ def _build(kind, a, b, c, d, E, F, arcs, coupler, branches):
     if not isinstance(branches, (tuple, list)) or len(branches) != 2:
         raise ValueError(f"Expected `branches` to be two signs (+1 or -1), got {branches!r}")
     branches = tuple(branch_sign(v, "branches") for v in branches)
-    A = np.array([0.0, 0.0, 1.0])
-    D = np.array([np.sin(d), 0.0, np.cos(d)])
+    R = np.eye(3) if frame is None else _rotation(frame)
+    A = R[:, 2].copy()
+    D = R @ np.array([np.sin(d), 0.0, np.cos(d)])
     lk = (SphericalLinkage({"A": A, "D": D})
           .crank("AB", pivot="A", tip="B", arc=a, reference="D")
           .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(b, c), branch=branches[0]))
@@ -48,7 +50,7 @@ def _build(kind, a, b, c, d, E, F, arcs, coupler, branches):
     if on_f == GROUND:
         # eq. (1) in the ground frame, where u = (1, 0, 0) and w = (0, 1, 0) exactly
         r, g = F
-        lk = lk.ground("F", (np.sin(r) * np.cos(g), np.sin(r) * np.sin(g), np.cos(r)))
+        lk = lk.ground("F", R @ np.array([np.sin(r) * np.cos(g), np.sin(r) * np.sin(g), np.cos(r)]))
     else:
         lk = lk.point("F", link=on_f, at=F)
     lk = lk.rrr(("EG", "FG"), pins=("E", "F"), joint="G", arcs=(e, f), branch=branches[1])
@@ -73,6 +75,10 @@ _PARAMS = """
     branches : (int, int), optional
         Branches of the dyads B-C-D and E-G-F: +1 puts C left of B->D (G left of E->F)
         seen from outside.
+    frame : array_like, shape (3, 3), optional
+        Proper rotation placing the linkage anywhere on the sphere (as in
+        `SphericalFourBar`; see `ground_frame`): every point is ``frame @`` its position
+        in the default frame.
 
     Returns
     -------
@@ -81,20 +87,20 @@ _PARAMS = """
 """
 
 
-def stephenson1(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1)):
-    return _build("stephenson1", a, b, c, d, E, F, arcs, coupler, branches)
+def stephenson1(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1), frame=None):
+    return _build("stephenson1", a, b, c, d, E, F, arcs, coupler, branches, frame)
 
 
-def stephenson2(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1)):
-    return _build("stephenson2", a, b, c, d, E, F, arcs, coupler, branches)
+def stephenson2(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1), frame=None):
+    return _build("stephenson2", a, b, c, d, E, F, arcs, coupler, branches, frame)
 
 
-def watt1(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1)):
-    return _build("watt1", a, b, c, d, E, F, arcs, coupler, branches)
+def watt1(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1), frame=None):
+    return _build("watt1", a, b, c, d, E, F, arcs, coupler, branches, frame)
 
 
-def watt2(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1)):
-    return _build("watt2", a, b, c, d, E, F, arcs, coupler, branches)
+def watt2(a, b, c, d, *, E, F, arcs, coupler, branches=(1, 1), frame=None):
+    return _build("watt2", a, b, c, d, E, F, arcs, coupler, branches, frame)
 
 
 stephenson1.__doc__ = """The Stephenson-1 spherical six-bar (monograph §2.4.1).
