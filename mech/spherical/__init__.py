@@ -1,6 +1,7 @@
 """Spherical mechanisms: the spherical calculus, the spherical four-bar and its types, the
-side-angle laws of spherical polygons, the transference principle, function generation and
-rigid-body guidance (the spherical monograph, chapters 1, 3, 5, 6 and 7).
+side-angle laws of spherical polygons, the transference principle, function generation,
+rigid-body guidance, and a general spherical linkage solver with the Stephenson and Watt
+six-bars (the spherical monograph, chapters 1, 2 (§2.4), 3, 5, 6 and 7).
 
 Conventions (``CONVENTIONS.md``): the sphere has unit radius, arcs are radians in (0, pi),
 points are unit 3-vectors in arrays of shape ``(..., 3)``, and ``lon`` is 0 at the poles.
