@@ -215,3 +215,17 @@ def test_builder_errors():
         lk.crank("AB2", pivot="A", tip="B2", arc=0.3, reference="D")
     with pytest.raises(ValueError, match="`link`"):
         lk.point("P", link="ground", at=(0.1, 0.1))
+
+
+def test_dead_point_rates_are_masked_not_huge():
+    # the spherical isogram (a = c, b = d) has its joints on one great circle at theta = pi
+    a, b = 0.4, 1.0
+    lk = (SphericalLinkage({"A": (0, 0, 1), "D": (np.sin(b), 0, np.cos(b))})
+          .crank("AB", pivot="A", tip="B", arc=a, reference="D")
+          .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(b, a)))
+    pose = lk.solve([0.0, np.pi, 1.0], order=2)
+    assert pose.assembled.all()
+    assert pose.valid.tolist() == [False, False, True]
+    assert np.isnan(pose.velocities["C"][:2]).all() and np.isfinite(pose.points["C"]).all()
+    ref = SphericalFourBar(a, b, a, b).solve(1.0, order=2)
+    np.testing.assert_allclose(pose.velocities["C"][2], ref.vC, atol=1e-13)

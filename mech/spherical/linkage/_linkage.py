@@ -12,6 +12,7 @@ import numpy as np
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import spherical_linkage as _g
 from mech._pose import Pose
+from mech._scaling import DEAD_POINT_RTOL
 from mech._validate import arc as _arc, bool_flag, branch_sign, motion_inputs, real_number, real_tuple
 
 __all__ = ["SphericalLinkage", "SphericalLinkagePose", "GROUND"]
@@ -82,7 +83,9 @@ class SphericalLinkage:
     from outside (``det[P1, P2, J] > 0``), the convention of `SphericalFourBar`. A branch
     is kept by its sign at every input, so no solution jumps from one branch to the other;
     where a dyad's two branches meet (its radicand (4) is zero) the pose is the limit
-    position and its rates are unbounded (``valid`` False, ``assembled`` True). Unlike
+    position and its rates are unbounded: where ``|det[P1, P2, J]| <= 2**-46`` the rates
+    from that dyad on are NaN (``valid`` False, ``assembled`` True), never a huge finite
+    number. Unlike
     `SphericalFourBar`, a dyad whose branches meet and part again (a change-point
     geometry) is not continued onto the other sign. Rates come from differentiating the
     closure, eqs. (5)-(8): each link's angular velocity and acceleration vector, then
@@ -314,9 +317,12 @@ class SphericalLinkage:
                     _, (l1, l2), (p1, p2), j, (b1, b2), sign = step
                     P[j] = _stack(*_g.spherical_dyad_position(*_xyz(P[p1]), *_xyz(P[p2]), b1, b2, float(sign)))
                     if order >= 1:
+                        # a dead point (J on the great circle P1P2, det = 0): rates unbounded
+                        det = np.einsum("ij,ij->i", np.cross(P[p1], P[p2]), P[j])
+                        dead = np.where(np.abs(det) <= DEAD_POINT_RTOL, np.nan, 0.0)[:, None]
                         out = _g.spherical_dyad_velocity(*_xyz(P[p1]), *_xyz(V[p1]), *_xyz(P[p2]), *_xyz(V[p2]),
                                                          *_xyz(P[j]))
-                        W[l1], W[l2] = _stack(*out[:3]), _stack(*out[3:])
+                        W[l1], W[l2] = _stack(*out[:3]) + dead, _stack(*out[3:]) + dead
                     if order >= 2:
                         out = _g.spherical_dyad_acceleration(*_xyz(P[p1]), *_xyz(Acc[p1]), *_xyz(P[p2]),
                                                              *_xyz(Acc[p2]), *_xyz(P[j]), *_xyz(W[l1]), *_xyz(W[l2]))
