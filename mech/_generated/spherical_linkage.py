@@ -5,9 +5,9 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:460eeb1648dd39ec5c25ab45543b499fe9bad6a5492f3e64ad10a7b98c3e0704"
+INPUT_HASH = "sha256:cac7552dc38ac595710adc339c9752b2041b7a6c735424f03d54b928f3fc55ce"
 
-__all__ = ['spherical_link_point', 'spherical_dyad_position', 'spherical_dyad_velocity', 'spherical_dyad_acceleration']
+__all__ = ['spherical_link_point', 'spherical_dyad_radicand', 'spherical_dyad_position', 'spherical_dyad_velocity', 'spherical_dyad_acceleration']
 
 
 def spherical_link_point(Ox, Oy, Oz, Xx, Xy, Xz, r, gamma):
@@ -62,8 +62,46 @@ def spherical_link_point(Ox, Oy, Oz, Xx, Xy, Xz, r, gamma):
     )
 
 
-def spherical_dyad_position(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2, sigma):
-    """Joint J of the spherical RRR dyad pinned at P1, P2 with arcs b1, b2, eqs. (3)-(4).
+def spherical_dyad_radicand(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2):
+    """Radicand rho = A^2 - C^2 of the spherical RRR dyad in the product form (4).
+
+    Generated from ``derivations/spherical/linkage.md``, equations (1)-(8).
+
+    Parameters
+    ----------
+    P1x : array_like
+        pin P1 (unit), x
+    P1y : array_like
+        pin P1 (unit), y
+    P1z : array_like
+        pin P1 (unit), z
+    P2x : array_like
+        pin P2 (unit), x
+    P2y : array_like
+        pin P2 (unit), y
+    P2z : array_like
+        pin P2 (unit), z
+    b1 : array_like
+        arc P1J
+    b2 : array_like
+        arc P2J
+
+    Returns
+    -------
+    rho : ndarray
+        radicand; negative where the dyad cannot assemble, zero where its branches meet
+
+    Arguments broadcast against each other like a NumPy ufunc.
+    """
+    x0 = (1/2)*np.arctan2(np.sqrt((P1x*P2y - P1y*P2x)**2 + (-P1x*P2z + P1z*P2x)**2 + (P1y*P2z - P1z*P2y)**2), P1x*P2x + P1y*P2y + P1z*P2z)
+    x1 = (1/2)*b1
+    x2 = (1/2)*b2
+    x3 = x1 + x2
+    return -4*np.sin(x0 - x3)*np.sin(x0 + x3)*np.sin(x0 - x1 + x2)*np.sin(x0 + x1 - x2)
+
+
+def spherical_dyad_position(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2, sigma, rho):
+    """Joint J of the spherical RRR dyad pinned at P1, P2 with arcs b1, b2, eq. (3).
 
     Generated from ``derivations/spherical/linkage.md``, equations (1)-(8).
 
@@ -87,6 +125,8 @@ def spherical_dyad_position(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2, sigma):
         arc P2J
     sigma : array_like
         branch: +1 when det[P1, P2, J] > 0
+    rho : array_like
+        radicand from spherical_dyad_radicand
 
     Returns
     -------
@@ -104,18 +144,13 @@ def spherical_dyad_position(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2, sigma):
     x2 = P1x*P2y - P1y*P2x
     x3 = P1y*P2z - P1z*P2y
     x4 = -P1x*P2z + P1z*P2x
-    x5 = x2**2 + x3**2 + x4**2
-    x6 = x5**(-1.0)
-    x7 = x6*(-x0*x1 + np.cos(b2))
-    x8 = (1/2)*np.arctan2(np.sqrt(x5), x1)
-    x9 = (1/2)*b1
-    x10 = (1/2)*b2
-    x11 = x10 + x9
-    x12 = 2*sigma*x6*np.sqrt(np.sin(x11 - x8)*np.sin(x11 + x8)*np.sin(-x10 + x8 + x9)*np.sin(x10 + x8 - x9))
+    x5 = (x2**2 + x3**2 + x4**2)**(-1.0)
+    x6 = x5*(-x0*x1 + np.cos(b2))
+    x7 = np.sqrt(rho)*sigma*x5
     return (
-        P1x*x0 + x12*x3 + x7*(-P1x*x1 + P2x),
-        P1y*x0 + x12*x4 + x7*(-P1y*x1 + P2y),
-        P1z*x0 + x12*x2 + x7*(-P1z*x1 + P2z),
+        P1x*x0 + x3*x7 + x6*(-P1x*x1 + P2x),
+        P1y*x0 + x4*x7 + x6*(-P1y*x1 + P2y),
+        P1z*x0 + x2*x7 + x6*(-P1z*x1 + P2z),
     )
 
 

@@ -217,15 +217,40 @@ def test_builder_errors():
         lk.point("P", link="ground", at=(0.1, 0.1))
 
 
-def test_dead_point_rates_are_masked_not_huge():
-    # the spherical isogram (a = c, b = d) has its joints on one great circle at theta = pi
-    a, b = 0.4, 1.0
-    lk = (SphericalLinkage({"A": (0, 0, 1), "D": (np.sin(b), 0, np.cos(b))})
-          .crank("AB", pivot="A", tip="B", arc=a, reference="D")
-          .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(b, a)))
-    pose = lk.solve([0.0, np.pi, 1.0], order=2)
-    assert pose.assembled.all()
-    assert pose.valid.tolist() == [False, False, True]
-    assert np.isnan(pose.velocities["C"][:2]).all() and np.isfinite(pose.points["C"]).all()
-    ref = SphericalFourBar(a, b, a, b).solve(1.0, order=2)
-    np.testing.assert_allclose(pose.velocities["C"][2], ref.vC, atol=1e-13)
+def test_limit_position_rates_are_masked_not_huge():
+    # a triple-rocker: at the ends of its input range the dyad is stretched (J on the
+    # great circle BD, det[B, D, C] = 0); there the rates are masked, never a huge number
+    # passed as valid; just inside they are large and right
+    a, b, c, d = 0.5, 0.6, 0.7, 0.9
+    lk = _fourbar_linkage(a, b, c, d, 1)
+    fb = SphericalFourBar(a, b, c, d)
+    ends = fb.assembly_range().intervals[0]
+    pose = lk.solve(ends, order=2)
+    assert not pose.valid.any()
+    inside = ends + np.array([1e-9, -1e-9])
+    pose, ref = lk.solve(inside, order=1), fb.solve(inside, order=1)
+    assert pose.valid.all()
+    np.testing.assert_allclose(pose.velocities["C"], ref.vC, rtol=1e-5)
+
+
+def _fourbar_linkage(a, b, c, d, branch):
+    return (SphericalLinkage({"A": (0, 0, 1), "D": (np.sin(d), 0, np.cos(d))})
+            .crank("AB", pivot="A", tip="B", arc=a, reference="D")
+            .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(b, c), branch=branch))
+
+
+@pytest.mark.parametrize("arcs", [(0.4, 1.0, 0.4, 1.0), (0.5, 0.5, 0.8, 0.8), (0.6, 1.1, 0.6, 1.1),
+                                  (0.3, 0.8, 0.9, 0.4), (0.2, 1.0, 0.2, 1.0)])
+@pytest.mark.parametrize("branch", [1, -1])
+def test_change_point_fourbars_continue_as_the_spherical_fourbar(arcs, branch):
+    """Isograms, deltoids and any s + l = p + q: the branches meet and part again; the
+    solver carries the motion onto the other sign as `SphericalFourBar` does, over two
+    turns both ways, the meeting poses included."""
+    lk, fb = _fourbar_linkage(*arcs, branch), SphericalFourBar(*arcs, branch=branch)
+    th = np.concatenate((np.linspace(-4 * np.pi, 4 * np.pi, 4001), [0.0, np.pi, -np.pi, 2 * np.pi]))
+    p1, p2 = fb.solve(th, order=2, omega=1.3, alpha=-0.6), lk.solve(th, order=2, omega=1.3, alpha=-0.6)
+    np.testing.assert_array_equal(p1.valid, p2.valid)
+    assert p1.valid.all()
+    np.testing.assert_allclose(p2.points["C"], p1.C, rtol=0, atol=1e-13)
+    np.testing.assert_allclose(p2.velocities["C"], p1.vC, rtol=0, atol=1e-10)
+    np.testing.assert_allclose(p2.accelerations["C"], p1.aC, rtol=0, atol=1e-8)
