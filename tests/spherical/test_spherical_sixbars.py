@@ -254,3 +254,16 @@ def test_change_point_fourbars_continue_as_the_spherical_fourbar(arcs, branch):
     np.testing.assert_allclose(p2.points["C"], p1.C, rtol=0, atol=1e-13)
     np.testing.assert_allclose(p2.velocities["C"], p1.vC, rtol=0, atol=1e-10)
     np.testing.assert_allclose(p2.accelerations["C"], p1.aC, rtol=0, atol=1e-8)
+
+
+@pytest.mark.parametrize("arcs", [(0.4, 1.0, 0.4, 1.0), (0.3, 0.8, 0.9, 0.4)])
+def test_no_jump_through_change_points_at_1e5_steps(arcs):
+    lk = _fourbar_linkage(*arcs, 1).point("P", link="BC", at=(0.3, 0.7))
+    th = np.linspace(-2 * np.pi, 2 * np.pi, 100_001)
+    pose = lk.solve(th, order=1)
+    assert pose.valid.all()
+    step = th[1] - th[0]
+    for name, P in pose.points.items():
+        jump = np.linalg.norm(np.diff(P, axis=0), axis=-1)
+        speed = np.linalg.norm(pose.velocities[name], axis=-1)
+        assert np.all(jump <= 1.01 * np.maximum(speed[:-1], speed[1:]) * step + 1e-12), name
