@@ -226,6 +226,18 @@ def _polygon():
 
 
 _THETA = {"theta": "real"}
+def _sph_ground():
+    return sph.SphericalLinkage({"A": (0.0, 0.0, 1.0), "D": (np.sin(1.0), 0.0, np.cos(1.0))})
+
+
+def _sph_crank():
+    return _sph_ground().crank("AB", pivot="A", tip="B", arc=0.3, reference="D")
+
+
+def _sph_sixbar():
+    return sph.stephenson1(0.3, 0.9, 0.7, 1.0, E=(0.2, 0.8), F=(0.3, -1.0), arcs=(0.8, 0.7), coupler=(0.4, 0.5))
+
+
 _MOTION = {"theta": "real", "order": "order", "omega": "real", "alpha": "real", "strict": "bool"}
 _MOTION2 = dict(theta=[0.0, 1.0], order=2, omega=1.5, alpha=0.5, strict=False)
 _ABCD = {"a": "scalar", "b": "scalar", "c": "scalar", "d": "scalar"}
@@ -654,6 +666,26 @@ CASES = {
     "spherical.coupler_quartic": E(lambda: sph.coupler_quartic, {"linkage": "vec3", "points": "vec3"},
                                    linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
     "spherical.nine_parameters": E(lambda: sph.nine_parameters, {"linkage": "instance"}, linkage=_sfb()),
+    "spherical.SphericalLinkage": E(lambda: sph.SphericalLinkage, {"ground": ("vec3", lambda v: {"A": v})},
+                                    ground={"A": [0.0, 0.0, 1.0]}),
+    "spherical.SphericalLinkage.ground": E(lambda: sph.SphericalLinkage().ground, {"at": "vec3"},
+                                           name="A", at=[0.0, 0.0, 1.0]),
+    "spherical.SphericalLinkage.crank": E(lambda: _sph_ground().crank, {"arc": "scalar"},
+                                          link="AB", pivot="A", tip="B", arc=0.3, reference="D"),
+    "spherical.SphericalLinkage.point": E(lambda: _sph_crank().point, {"at": ("scalar", first)},
+                                          name="P", link="AB", at=(0.2, 0.5)),
+    "spherical.SphericalLinkage.rrr": E(lambda: _sph_crank().rrr, {"arcs": ("scalar", first), "branch": "branch"},
+                                        links=("BC", "DC"), pins=("B", "D"), joint="C", arcs=(0.9, 0.7), branch=1),
+    "spherical.SphericalLinkage.solve": E(lambda: _sph_sixbar().solve, _MOTION, **_MOTION2),
+    "spherical.SphericalLinkage.coupler_curve": E(lambda: _sph_sixbar().coupler_curve,
+                                                  {"theta": "real", "order": "order", "omega": "real", "alpha": "real"},
+                                                  theta=[0.0, 1.0], order=2, omega=1.5, alpha=0.5),
+    **{f"spherical.{name}": E(lambda name=name: getattr(sph, name),
+                              {**_ABCD, "E": ("scalar", first), "F": ("scalar", first), "arcs": ("scalar", first),
+                               "coupler": ("scalar", first), "branches": ("branch", first), "frame": "matrix?"},
+                              a=0.3, b=0.9, c=0.7, d=1.0, E=(0.2, 0.8), F=(0.3, -1.0), arcs=(0.8, 0.7),
+                              coupler=(0.4, 0.5), branches=(1, 1), frame=np.eye(3))
+       for name in ("stephenson1", "stephenson2", "watt1", "watt2")},
     "spherical.SphericalPolygon.relations": E(lambda: _polygon().relations),
     "spherical.angle_at": E(lambda: sph.angle_at, {"a": "vec3", "b": "vec3", "c": "vec3"},
                             a=[0, 0, 1], b=[1, 0, 0], c=[0, 1, 0]),
@@ -835,7 +867,7 @@ RECORDS = {
         "AssemblyRange", "ChainPose", "DoubleJointPose", "RCCCPose", "RSSRPose")},
     **{f"spherical.{n}": "result record built by the package" for n in (
         "Circle", "Collinearity", "FunctionGenerator", "Intersection", "PolygonRelations", "SliderStroke",
-        "SphericalFourBarPose", "SphericalPolygon", "SphericalType")},
+        "SphericalFourBarPose", "SphericalLinkagePose", "SphericalPolygon", "SphericalType")},
     **{f"exercises.{n}": "record of the exercise catalogue built by the package" for n in (
         "Exercise", "Interval", "Parameter", "Part", "Result", "Solution")},
 }
@@ -1723,6 +1755,7 @@ def _motion_calls():
         "Linkage": lambda t, w, a: _linkage().solve(t, order=2, omega=w, alpha=a),
         "RSSR": lambda t, w, a: _rssr().solve(t, order=2, omega=w, alpha=a),
         "SphericalFourBar": lambda t, w, a: _sfb().solve(t, order=2, omega=w, alpha=a),
+        "SphericalLinkage": lambda t, w, a: _sph_sixbar().solve(t, order=2, omega=w, alpha=a),
     }
 
 

@@ -1,7 +1,8 @@
 """Spherical mechanisms: the spherical calculus, the spherical four-bar and its types, the
-side-angle laws of spherical polygons, the transference principle, function generation and
-rigid-body guidance (the spherical monograph, chapters 1, 3, 5, 6 and 7), and in ``path`` the
-eighth-order coupler curve (chapter 2).
+side-angle laws of spherical polygons, the transference principle, function generation,
+rigid-body guidance, a general spherical linkage solver with the Stephenson and Watt
+six-bars, and in ``path`` the eighth-order coupler curve (the spherical monograph, chapters
+1, 2 (§§2.1, 2.3, 2.4), 3, 5, 6 and 7).
 
 Conventions (``CONVENTIONS.md``): the sphere has unit radius, arcs are radians in (0, pi),
 points are unit 3-vectors in arrays of shape ``(..., 3)``, and ``lon`` is 0 at the poles.
@@ -91,6 +92,7 @@ from mech.spherical.guidance import (
     slider_residual,
 )
 from mech.spherical.path import CouplerOctic, coupler_octic, coupler_quartic, nine_parameters
+from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
@@ -184,4 +186,10 @@ __all__ = [
     "turn",
     "universal_joint",
     "velocity",
+    "SphericalLinkage",
+    "SphericalLinkagePose",
+    "stephenson1",
+    "stephenson2",
+    "watt1",
+    "watt2",
 ]
