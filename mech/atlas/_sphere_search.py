@@ -36,10 +36,13 @@ _PHASES = 4
 _ROWS = 256
 #: Steps of the arc-length table of a closed curve used to place sub-arcs.
 _TABLE = 1024
-#: Rows given a coarse alignment of an open arc, per entry of the final short list.
-_ARC_WIDER = 4
+#: Rows given a coarse alignment of an open arc, per entry of the short list; rows given the
+#: fine alignment after it.
+_ARC_WIDER, _ARC_FINE = 1, 16
+#: Starts tried per row in the coarse alignment of an open arc.
+_ARC_TRIES = 2
 #: Halvings of the pattern search on the ends of a sub-arc (coarse, then fine).
-_ARC_COARSE, _ARC_LEVELS = 4, 8
+_ARC_COARSE, _ARC_LEVELS = 3, 8
 
 
 @dataclass(frozen=True)
@@ -397,7 +400,7 @@ def _arc_errors(tables, rows, targets, x0, x1, rotations=False):
     return np.where(tables.bad[rows], np.inf, np.sqrt(np.maximum(sq, 0.0) / targets.shape[1]))
 
 
-def _align_arcs(tables, t, x0, x1, step, levels):
+def _align_arcs(tables, t, x0, x1, step, levels, rounds=4):
     """Pattern search on the ends (arc-length fractions) of each row's sub-arc, target both ways."""
     rows = x0.size
     idx = np.concatenate([np.arange(rows), np.arange(rows)])
@@ -405,7 +408,7 @@ def _align_arcs(tables, t, x0, x1, step, levels):
     X0, X1 = np.concatenate([x0, x0]), np.concatenate([x1, x1])
     err = _arc_errors(tables, idx, targets, X0, X1)
     for _ in range(levels):
-        for _ in range(4):
+        for _ in range(rounds):
             moved = False
             for d0, d1 in ((1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1), (-1, 1), (1, -1)):
                 a, b = X0 + d0 * step, X1 + d1 * step
@@ -436,16 +439,28 @@ def _query_arc(atlas, x, k, shortlist, span, starts):
     m = min(_ARC_WIDER * shortlist, len(atlas))
     short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
     grid = starts * max(1, int(np.ceil(n / starts)))
-    u0 = 2 * np.pi * (where[short] / starts + 0.5 / grid)
-    tables = _Tables(atlas.linkages.take(short).columns())
+    # each row from its two best starts that are local minima over the starts (a rocking
+    # input's curve has look-alike parts, mirrored in the input angle, that trap one start)
+    d = dist[short]
+    local = (d <= np.roll(d, 1, axis=1)) & (d <= np.roll(d, -1, axis=1))
+    order = np.argsort(np.where(local, d, np.inf), axis=1, kind="stable")[:, :min(_ARC_TRIES, starts)]
+    tried = np.isfinite(np.take_along_axis(np.where(local, d, np.inf), order, axis=1))
+    tried[:, 0] = True
+    row = np.repeat(np.arange(short.size), order.shape[1])[tried.ravel()]
+    u0 = 2 * np.pi * (order.ravel()[tried.ravel()] / starts + 0.5 / grid)
+    tables = _Tables(atlas.linkages.take(short[row]).columns())
     x0 = tables.length_at(u0)
     x1 = tables.length_at(u0 + 2 * np.pi * span)
     step = 0.5 / starts
     err, _, _, x0, x1, _ = _align_arcs(tables, t, x0, x1, step, _ARC_COARSE)
-    keep = np.argsort(err, kind="stable")[:min(shortlist, m)]
+    # the better try of each row
+    first = np.lexsort((err, row))
+    first = first[np.r_[True, row[first][1:] != row[first][:-1]]]
+    short, err, x0, x1 = short[row[first]], err[first], x0[first], x1[first]
+    keep = np.argsort(err, kind="stable")[:min(max(2 * k, _ARC_FINE), m)]
     short, x0, x1 = short[keep], x0[keep], x1[keep]
     tables = _Tables(atlas.linkages.take(short).columns())
-    err, rot, pts, x0, x1, direction = _align_arcs(tables, t, x0, x1, step / 2**_ARC_COARSE, _ARC_LEVELS)
+    err, rot, pts, x0, x1, direction = _align_arcs(tables, t, x0, x1, step / 2**_ARC_COARSE, _ARC_LEVELS, rounds=2)
     u0, u1 = tables.u_at(x0), tables.u_at(x1)
     radius = _radius(t)
     rows = atlas.linkages.take(short)
