@@ -26,7 +26,7 @@ from mech.atlas._sphere_sampling import describe_sphere, sphere_curves, sphere_p
 from mech.atlas._sphere_signature import (
     _interpolate, _resample_closed, _resample_open, _signature_rows, _sphere_curves, _there_and_back,
 )
-from mech.atlas._sphere_store import SphereAtlas
+from mech.atlas._sphere_store import SphereAtlas, spectra
 
 __all__ = ["SphereMatch", "find_sphere_linkages", "query_sphere", "refine_sphere"]
 
@@ -310,6 +310,13 @@ def query_sphere(atlas, target, *, k=5, shortlist=64, resampled=False, closed=Tr
     dist = np.sqrt(np.sum((atlas.signatures - sig) ** 2, axis=1))
     m = min(shortlist, len(atlas))
     short = np.argpartition(dist, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    if m < len(atlas):
+        # a few more by the rotation spectrum, which needs no principal frame: a curve with two
+        # nearly equal moments has an unsteady frame, and noise can move its signature far
+        power = np.sqrt(np.sum((atlas._spectra - spectra(sig)) ** 2, axis=1))
+        extra = min(max(m // 4, 1), len(atlas) - m)
+        power[short] = np.inf
+        short = np.concatenate([short, np.argpartition(power, extra - 1)[:extra]])
     err, rot, direction, turned = _closed_fits(atlas.curves(short, 4 * t.shape[0]), t, keep=max(k, 8))
     radius = _radius(t)
     rows = atlas.linkages.take(short)

@@ -86,6 +86,15 @@ class SphereAtlas:
         return int(self.settings["samples"])
 
     @cached_property
+    def _spectra(self):
+        """Rotation spectra of the curves, ``|C_k|`` over the three coordinates (n, K + 1).
+
+        Any orthonormal frame keeps ``sum_i |c_k,i|^2``, so this part of the signature does
+        not depend on the principal frame at all, even where two moments are nearly equal.
+        """
+        return spectra(self.signatures)
+
+    @cached_property
     def _arc_cache(self):
         """Sub-arc signatures by (span, starts), for open targets (filled by `query_sphere`)."""
         return {}
@@ -151,6 +160,12 @@ class SphereAtlas:
         sig = np.concatenate([t.column("signature").combine_chunks().flatten().to_numpy() for t in tables])
         seeds = np.concatenate([t.column("seed").to_numpy() for t in tables])
         return cls(SphereSamples(**cols), sig.reshape(-1, width), seeds, settings)
+
+
+def spectra(signatures):
+    """``sqrt(sum_i |c_k,i|^2)`` from signatures laid out as three blocks of K + 1 moduli."""
+    sig = np.asarray(signatures)
+    return np.sqrt(np.sum(sig.reshape(*sig.shape[:-1], 3, -1) ** 2, axis=-2))
 
 
 def write_part(target, linkages, signatures, seeds, settings, chunk=None):

@@ -197,3 +197,14 @@ def test_sphere_signature_derivation_checks_pass():
     page = next(p for p in runner.notebooks() if p.stem == "sphere_signature")
     namespace = runner.run(page)
     assert namespace["worst"] < 1e-12 and namespace["apart"] > 1e-4
+
+
+def test_rotation_spectrum_needs_no_frame():
+    """The spectra the search adds to its short list, ``|C_k|`` over the three coordinates, read
+    from the signature, equal the DFT of the raw coordinates (no principal frame), turned or not."""
+    from mech.atlas._sphere_store import spectra
+
+    rng = np.random.default_rng(8)
+    x = _curve(rng, 256)
+    direct = np.linalg.norm(np.fft.rfft(x @ _rotation(rng).T, axis=0)[:9], axis=1) / 256
+    assert np.max(np.abs(spectra(sphere_signature(x, resampled=True)) - direct)) < 1e-12
