@@ -43,6 +43,8 @@ _ARC_WIDER, _ARC_FINE = 1, 16
 _ARC_TRIES = 2
 #: Halvings of the pattern search on the ends of a sub-arc (coarse, then fine).
 _ARC_COARSE, _ARC_LEVELS = 3, 8
+#: Fresh starts of the simplex of `refine_sphere` after the first search stops.
+_RESTARTS = 3
 
 
 @dataclass(frozen=True)
@@ -546,12 +548,25 @@ def refine_sphere(match, target, *, samples=96, iterations=600):
     start = objective(p0)
     if not np.isfinite(start):
         return match
-    simplex = np.vstack([p0, p0 + 0.05 * np.eye(6)])
-    result = minimize(objective, p0, method="Nelder-Mead",
-                      options={"maxiter": iterations, "initial_simplex": simplex, "xatol": 1e-7, "fatol": 1e-10})
-    if not result.fun < start:
+    # Nelder-Mead restarted with a fresh simplex from where it stopped, while that helps: a
+    # collapsed simplex often stops short on this objective (it has ridges where the type
+    # or the best start of the alignment changes)
+    best_x, best_f, left, size = p0, start, iterations, 0.05
+    for _ in range(_RESTARTS + 1):
+        simplex = np.vstack([best_x, best_x + size * np.eye(6)])
+        result = minimize(objective, best_x, method="Nelder-Mead",
+                          options={"maxiter": left, "initial_simplex": simplex, "xatol": 1e-7, "fatol": 1e-10})
+        left -= int(result.nit)
+        improved = result.fun < best_f
+        if improved:
+            gain = (best_f - result.fun) / best_f
+            best_x, best_f = result.x, float(result.fun)
+        if left <= 0 or not improved or gain < 1e-2:
+            break
+        size *= 0.5
+    if not best_f < start:
         return match
-    a, b, c, d, r, gamma = result.x
+    a, b, c, d, r, gamma = best_x
     row = describe_sphere([a], [b], [c], [d], [r], [np.angle(np.exp(1j * gamma))], [f.branch])
     err, rot, direction, turned = _closed_fits(sphere_curves(row.columns(), 4 * samples), t)
     return _match(match.rank, match.index, row, rot[0], direction[0], err[0], _radius(t), match.distance,
