@@ -40,7 +40,7 @@ _TABLE = 1024
 #: fine alignment after it.
 _ARC_WIDER, _ARC_FINE = 1, 16
 #: Starts tried per row in the coarse alignment of an open arc.
-_ARC_TRIES = 2
+_ARC_TRIES = 3
 #: Halvings of the pattern search on the ends of a sub-arc (coarse, then fine).
 _ARC_COARSE, _ARC_LEVELS = 3, 8
 #: Fresh starts of the simplex of `refine_sphere` after the first search stops.
