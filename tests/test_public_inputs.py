@@ -1267,6 +1267,18 @@ _SPHERE_CURVE = [[0.6, 0.0, 0.8], [0.0, 0.6, 0.8], [-0.6, 0.0, 0.8], [0.0, -0.5,
 
 def _small_sphere_atlas():
     return at.build_sphere_atlas(8, seed=1, harmonics=3, samples=16)
+
+
+def _sphere_match():
+    return at.query_sphere(_small_sphere_atlas(), _SPHERE_CURVE, k=1, shortlist=4)[0]
+
+
+def _sphere_atlas_dir():
+    import tempfile
+
+    folder = tempfile.mkdtemp(prefix="mech-sphere-atlas-")
+    _small_sphere_atlas().to_parquet(folder)
+    return folder
 CASES.update({
     "atlas.curve_signature": E(lambda: at.curve_signature,
                                {"points": "point", "closed": "bool", "harmonics": "count", "samples": "count",
@@ -1309,16 +1321,41 @@ CASES.update({
                               "iterations": "count"},
                              target=_SQUARE, starts=2, goal=0.5, samples=32, iterations=3),
     "atlas.sphere_signature": E(lambda: at.sphere_signature,
-                                {"points": "vec3", "harmonics": "count", "samples": "count", "resampled": "bool"},
-                                points=_SPHERE_CURVE, harmonics=3, samples=16, resampled=False),
+                                {"points": "vec3", "harmonics": "count", "samples": "count", "resampled": "bool",
+                                 "closed": "bool"},
+                                points=_SPHERE_CURVE, harmonics=3, samples=16, resampled=False, closed=True),
     "atlas.build_sphere_atlas": E(lambda: at.build_sphere_atlas,
                                   {"n": "count", "seed": "seed", "harmonics": "count", "samples": "count",
                                    "arcs": ("scalar", lambda v: (v, 1.4)),
-                                   "coupler_arc": ("scalar", lambda v: (v, 1.2))},
-                                  n=3, seed=1, harmonics=3, samples=16, arcs=(0.15, 1.4), coupler_arc=(0.1, 1.2)),
+                                   "coupler_arc": ("scalar", lambda v: (v, 1.2)), "min_transmission": "scalar",
+                                   "block": "count", "progress": "bool", "resume": "bool"},
+                                  n=3, seed=1, harmonics=3, samples=16, arcs=(0.15, 1.4), coupler_arc=(0.1, 1.2),
+                                  min_transmission=0.0, block=64, progress=False, resume=False),
     "atlas.query_sphere": E(lambda: functools.partial(at.query_sphere, _small_sphere_atlas()),
-                            {"target": "vec3", "k": "count", "shortlist": "count", "resampled": "bool"},
-                            target=_SPHERE_CURVE, k=1, shortlist=4, resampled=False),
+                            {"target": "vec3", "k": "count", "shortlist": "count", "resampled": "bool",
+                             "closed": "bool", "span": "scalar", "starts": "count"},
+                            target=_SPHERE_CURVE, k=1, shortlist=4, resampled=False, closed=True, span=0.5, starts=4),
+    "atlas.refine_sphere": E(lambda: functools.partial(at.refine_sphere, _sphere_match()),
+                             {"target": "vec3", "samples": "count", "iterations": "count"},
+                             target=_SPHERE_CURVE, samples=16, iterations=2),
+    "atlas.find_sphere_linkages": E(lambda: functools.partial(at.find_sphere_linkages, _small_sphere_atlas()),
+                                    {"target": "vec3", "starts": "count", "goal": "scalar?", "samples": "count",
+                                     "iterations": "count"},
+                                    target=_SPHERE_CURVE, starts=1, goal=0.5, samples=16, iterations=2),
+    "atlas.sample_sphere_fourbars": E(lambda: at.sample_sphere_fourbars,
+                                      {"n": "count", "seed": "seed", "arcs": ("scalar", lambda v: (v, 1.4)),
+                                       "coupler_arc": ("scalar", lambda v: (v, 1.2)), "branch": "branch?",
+                                       "min_transmission": "scalar"},
+                                      n=10, seed=3, arcs=(0.15, 1.4), coupler_arc=(0.1, 1.2), branch=None,
+                                      min_transmission=0.1),
+    "atlas.SphereSamples.take": E(lambda: at.sample_sphere_fourbars(10).take, {"index": "int"}, index=[1, 2]),
+    "atlas.SphereSamples.columns": E(lambda: at.sample_sphere_fourbars(10).columns),
+    "atlas.SphereSamples.fourbar": E(lambda: _small_sphere_atlas().linkages.fourbar, {"i": "int", "frame": "matrix?"},
+                                     i=1, frame=None),
+    "atlas.SphereSamples.curves": E(lambda: _small_sphere_atlas().linkages.curves, {"samples": "count"}, samples=16),
+    "atlas.SphereAtlas.to_parquet": E(lambda: functools.partial(_small_sphere_atlas().to_parquet, _new_dir()),
+                                      {"append": "bool"}, append=False),
+    "atlas.SphereAtlas.from_parquet": E(lambda: functools.partial(at.SphereAtlas.from_parquet, _sphere_atlas_dir())),
     "atlas.SphereAtlas.fourbar": E(lambda: _small_sphere_atlas().fourbar, {"i": "int"}, i=1),
     "atlas.SphereAtlas.curves": E(lambda: _small_sphere_atlas().curves, {"samples": "count?"},
                                   index=[0, 1], samples=None),
@@ -1326,7 +1363,8 @@ CASES.update({
                                    {"z": "point"}, z=[0.0, 1 + 1j]),
 })
 RECORDS.update({f"atlas.{n}": "result record built by the package"
-                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "SphereAtlas", "SphereMatch")})
+                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "SphereAtlas", "SphereMatch",
+                          "SphereSamples")})
 
 
 # ----------------------------------------------------------------------------- spherical guidance (issue 15)
