@@ -19,8 +19,10 @@ Layers, each usable alone:
 - builds in blocks (`build_atlas`), on a Dask cluster if asked, written part by part to a
   folder and resumable;
 - on the sphere: `sphere_signature` (invariant to rotations of the sphere, start and
-  direction; :ref:`deriv-sphere-signature`), `build_sphere_atlas` and `query_sphere` for
-  spherical four-bars whose crank turns fully.
+  direction; :ref:`deriv-sphere-signature`), `sample_sphere_fourbars` (full-turn and
+  rocking inputs, type, branch, minimum transmission angle), `build_sphere_atlas` (blocks,
+  Dask, Parquet, resumable), `SphereAtlas`, `query_sphere` (closed curves and open arcs),
+  `refine_sphere` and `find_sphere_linkages`.
 
 ``import mech.atlas`` loads NumPy only: pyarrow is imported when an atlas is saved or
 loaded, tqdm when a build shows a progress bar, Dask only by the code that makes a client.
@@ -33,7 +35,11 @@ from mech.atlas._build import build_atlas
 from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query, refine
 from mech.atlas._slider import SliderCrankSamples, sample_slider_cranks
 from mech.atlas._multistart import find_linkages
-from mech.atlas._sphere import SphereAtlas, SphereMatch, build_sphere_atlas, query_sphere, sphere_signature
+from mech.atlas._sphere_signature import sphere_signature
+from mech.atlas._sphere_sampling import SphereSamples, sample_sphere_fourbars
+from mech.atlas._sphere_store import SPHERE_ATLAS_VERSION, SphereAtlas
+from mech.atlas._sphere_build import build_sphere_atlas
+from mech.atlas._sphere_search import SphereMatch, find_sphere_linkages, query_sphere, refine_sphere
 
 __all__ = [
     "ATLAS_VERSION",
@@ -42,19 +48,24 @@ __all__ = [
     "Match",
     "PlacedLinkage",
     "PlacedSliderCrank",
+    "SPHERE_ATLAS_VERSION",
     "SliderCrankSamples",
     "SphereAtlas",
     "SphereMatch",
+    "SphereSamples",
     "build_atlas",
     "build_sphere_atlas",
     "curve_signature",
     "find_linkages",
+    "find_sphere_linkages",
     "query",
     "query_sphere",
     "read_points",
     "refine",
+    "refine_sphere",
     "resample",
     "sample_fourbars",
     "sample_slider_cranks",
+    "sample_sphere_fourbars",
     "sphere_signature",
 ]
