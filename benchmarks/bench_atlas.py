@@ -224,7 +224,7 @@ def _dask_build(n, single):
 
     logging.getLogger("distributed").setLevel(logging.ERROR)
     t = time.perf_counter()
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster, \
             Client(cluster) as client:
         start_s = time.perf_counter() - t
         client.run(lambda: __import__("mech.atlas._build"))     # warm the workers (imports)

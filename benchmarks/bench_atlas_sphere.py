@@ -132,7 +132,7 @@ def _dask_build(n, single):
 
     logging.getLogger("distributed").setLevel(logging.ERROR)
     env = {"PYTHONPATH": os.environ.get("PYTHONPATH", "")}
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0",
                       env=env) as cluster, Client(cluster) as client:
         build_sphere_atlas(4000, seed=1, client=client)                # warm the workers
         t = time.perf_counter()

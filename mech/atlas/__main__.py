@@ -59,7 +59,7 @@ def _client(spec):
         _, _, count = spec.partition(":")
         if not (count or "2").isdigit() or int(count or "2") < 1:
             raise ValueError(f"Expected --dask local:N with N >= 1 workers, got {spec!r}")
-        with LocalCluster(n_workers=int(count or "2"), threads_per_worker=1, dashboard_address=None) as cluster, \
+        with LocalCluster(n_workers=int(count or "2"), threads_per_worker=1, dashboard_address=":0") as cluster, \
                 Client(cluster) as client:
             yield client
     else:
