@@ -44,6 +44,7 @@ def _clean_env():
     return env
 
 
+@pytest.mark.slow  # 15 s on a quiet machine, over a minute on a busy one (build, venv, pip)
 def test_wheel_holds_mech_alone_and_imports_in_a_fresh_venv(tmp_path):
     wheel = _build_wheel(tmp_path)
     names = zipfile.ZipFile(wheel).namelist()
