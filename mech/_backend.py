@@ -26,7 +26,7 @@ BACKENDS = ("auto", "numpy", "numba")
 NUMBA_MIN_SIZE = 4096
 #: Points per block of the NumPy kernels: their temporaries (a few tens of rows of this
 #: length) stay in the L2 cache and are reused from block to block and call to call.
-BLOCK = 2048
+BLOCK = 4096
 
 _state = {"backend": None, "numba": None}
 _local = threading.local()
