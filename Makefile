@@ -19,15 +19,15 @@ setup: $(STAMP)
 
 ## Set everything up and build the book (fails on any warning or failing cell).
 book: $(STAMP)
-	set -o pipefail; $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
+	set -o pipefail; PYTHONPATH=$(CURDIR) $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
 	$(BIN)/python book/_check_offline.py book/_build/html
 
 ## Regenerate mech/_generated from the derivation notebooks.
 generate: $(STAMP)
-	$(BIN)/python -m derivations
+	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations
 
 check-generated: $(STAMP)
-	$(BIN)/python -m derivations --check
+	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check
 
 ## System packages of the browser test (tests/browser): Debian's chromium and a CJK font,
 ## installed with apt-get only when missing (as root, or with password-less sudo).

@@ -26,6 +26,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import datetime as _dt
+import importlib
 import importlib.metadata
 import json
 import os
@@ -138,8 +139,12 @@ def mech_available():
 
 
 def mech_runner(order):
-    """Return ``theta -> (P, vP, aP)`` through ``FourBar.solve``."""
+    """Return ``theta -> (P, vP, aP)`` through ``FourBar.solve`` (NumPy backend, as installed
+    without the ``fast`` extra; ``bench_speed.py`` times the numba backend)."""
+    import mech
     from mech.planar import FourBar
+
+    mech.set_backend("numpy")
 
     linkage = FourBar(**GEOMETRY, branch=BRANCH, coupler=COUPLER)
 
@@ -213,8 +218,26 @@ def naive_modules():
             exprs = f.exprs()
             target = exprs[0] if len(exprs) == 1 else tuple(exprs)
             setattr(plain, f.name, sm.lambdify(f.symbols(), target, modules="numpy", cse=False))
+        generated = importlib.import_module(f"mech._generated.{stem}")
+        for module in (rendered, plain):
+            # the solver calls the out= kernels: here they run the naive functions and copy
+            module.WORK_ROWS = getattr(generated, "WORK_ROWS", {})
+            for f in functions:
+                if f.vector:
+                    setattr(module, f"{f.name}_into", _into_from(getattr(module, f.name)))
         out[stem] = (rendered, plain, text)
     return out
+
+
+def _into_from(function):
+    """An ``<name>_into(*args, out, work)`` kernel that calls `function` and copies its outputs."""
+
+    def into(*args):
+        *args, out, _work = args
+        for target, value in zip(out, function(*args)):
+            target[...] = value
+
+    return into
 
 
 @contextlib.contextmanager

@@ -13,9 +13,11 @@ Subpackages are imported on first use, so ``import mech`` stays light:
 
 import importlib as _importlib
 
+from mech._backend import get_backend, set_backend
 from mech._errors import AssemblyError, InputTypeError
 
-__all__ = ["AssemblyError", "InputTypeError", "atlas", "exercises", "planar", "spatial", "spherical"]
+__all__ = ["AssemblyError", "InputTypeError", "atlas", "exercises", "get_backend", "planar", "set_backend",
+           "spatial", "spherical"]
 __version__ = "0.1.0"
 
 _SUBPACKAGES = {"atlas", "exercises", "planar", "spatial", "spherical"}

@@ -78,6 +78,19 @@ def quiet_overflow(solve):
     return quiet
 
 
+def _all_finite(value):
+    """True if no element of a float or complex array is NaN or infinite (no temporaries)."""
+    if value.size == 0:
+        return True
+    if value.dtype.kind == "c":
+        contiguous = value.ndim > 0 and value.flags.c_contiguous
+        parts = (value.view(value.real.dtype),) if contiguous else (value.real, value.imag)
+    else:
+        parts = (value,)
+    with np.errstate(invalid="ignore"):
+        return all(np.isfinite(p.min()) and np.isfinite(p.max()) for p in parts)
+
+
 def _keep_promise(fields):
     """Make ``valid`` False wherever a solved field is not finite, whatever the cause.
 
@@ -91,6 +104,10 @@ def _keep_promise(fields):
     if valid is None or np.asarray(valid).dtype != bool:
         return fields
     valid = np.asarray(valid)
+    solved = [np.asarray(v) for n, v in fields.items() if n not in ("valid", "assembled", "theta")]
+    solved = [v for v in solved if v.dtype.kind in "fc" and v.shape[: valid.ndim] == valid.shape]
+    if all(_all_finite(v) for v in solved):
+        return fields                       # the common case: two reductions per field, no copy
     ok = valid.copy()
     checked = {}
     for name, value in fields.items():

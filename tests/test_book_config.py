@@ -113,7 +113,7 @@ def test_config_no_mathjax_path_or_intersphinx():
     assert "mathjax_path" not in keys
     assert "intersphinx_mapping" not in keys
     sphinx = _config().get("sphinx", {})
-    extensions = (sphinx.get("extra_extensions") or []) + list(sphinx.get("local_extensions") or {})
+    extensions = list(sphinx.get("extra_extensions") or []) + list(sphinx.get("local_extensions") or {})
     assert "sphinx.ext.intersphinx" not in extensions
 
 

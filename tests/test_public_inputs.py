@@ -250,6 +250,10 @@ def _dual_slot(name):
 
 
 CASES = {
+    # ------------------------------------------------------------------------- backend
+    # the valid call sets the backend in force when the tests started (no numeric slot)
+    "mech.set_backend": E(lambda: mech.set_backend, name=mech.get_backend()),
+    "mech.get_backend": E(lambda: mech.get_backend),
     # ------------------------------------------------------------------------- planar
     "planar.Cognate.place": E(lambda: pl.cognates(_fourbar()).aegk.place, {"z": "point"}, z=1 + 1j),
     "planar.Cognate.solve": E(lambda: pl.cognates(_fourbar()).aegk.solve,

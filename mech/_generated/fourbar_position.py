@@ -5,9 +5,9 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:eb24d191df2aa38932cda40c5153c500fac3ec7e25eae8e67bcd15e56cabb071"
+INPUT_HASH = "sha256:42a68bf423eac3889e0ff986d46dfce2688330ebf1af38f47beabdf7e83df163"
 
-__all__ = ['fourbar_assembly_gaps', 'fourbar_position', 'fourbar_position_signed', 'fourbar_velocity', 'fourbar_acceleration']
+__all__ = ['fourbar_assembly_gaps', 'fourbar_position', 'fourbar_position_signed', 'fourbar_velocity', 'fourbar_acceleration', 'fourbar_position_into', 'fourbar_position_signed_into', 'fourbar_velocity_into', 'fourbar_acceleration_into']
 
 
 def fourbar_assembly_gaps(a, b, c, d):
@@ -129,6 +129,73 @@ def fourbar_position(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4):
     )
 
 
+def fourbar_position_into(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, out, work):
+    """`fourbar_position` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (11, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
+    x8 = (a - d)
+    x9 = (4*a*d)
+    x21 = (b**(-1.0))
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10 = work[:11]
+    np.multiply(theta, 1/2, out=w0)
+    np.sin(w0, out=w1)
+    np.square(w1, out=w2)
+    np.multiply(w2, 2, out=w3)
+    np.negative(w3, out=w4)
+    np.add(w4, 1, out=w4)
+    np.multiply(w4, a, out=w4)
+    np.cos(w0, out=w5)
+    np.multiply(w1, w5, out=w0)
+    np.multiply(w0, (2*a), out=w0)
+    np.multiply(w3, a, out=w1)
+    np.add(w1, (-a + d), out=w1)
+    np.multiply(w2, x9, out=w3)
+    np.add(w3, (x8**2), out=w2)
+    np.add(w2, (b**2 - c**2), out=w6)
+    np.sqrt(w2, out=w7)
+    np.add(w7, (abs(x8)), out=w8)
+    np.divide(w3, w8, out=w8)
+    np.add(w8, gap2, out=w3)
+    np.add(w8, gap3, out=w9)
+    np.multiply(w3, w9, out=w3)
+    np.square(w5, out=w9)
+    np.multiply(w9, x9, out=w9)
+    np.add(w7, (a + d), out=w10)
+    np.divide(w9, w10, out=w9)
+    np.add(w9, gap4, out=w9)
+    np.multiply(w3, w9, out=w3)
+    np.sqrt(w3, out=w3)
+    np.add(w7, (b + c), out=w8)
+    np.sqrt(w8, out=w8)
+    np.multiply(w3, w8, out=w7)
+    np.divide(1/2, w2, out=w5)
+    np.multiply(w6, w1, out=w2)
+    np.multiply(w7, w0, out=w9)
+    np.multiply(w9, branch, out=w9)
+    np.add(w2, w9, out=w2)
+    np.multiply(w5, w2, out=w2)
+    np.multiply(w3, w8, out=w9)
+    np.multiply(w9, w1, out=w9)
+    np.multiply(w9, branch, out=w9)
+    np.multiply(w6, w0, out=w10)
+    np.subtract(w9, w10, out=w9)
+    np.multiply(w5, w9, out=w9)
+    np.copyto(out[0], w4)
+    np.copyto(out[1], w0)
+    np.add(w2, w4, out=out[2])
+    np.add(w9, w0, out=out[3])
+    np.multiply(w2, p, out=w5)
+    np.multiply(w9, q, out=w8)
+    np.subtract(w5, w8, out=w5)
+    np.multiply(w5, x21, out=w5)
+    np.add(w4, w5, out=out[4])
+    np.multiply(w2, q, out=w5)
+    np.multiply(w9, p, out=w8)
+    np.add(w5, w8, out=w5)
+    np.multiply(w5, x21, out=w5)
+    np.add(w0, w5, out=out[5])
+    np.copyto(out[6], w7)
+
+
 def fourbar_position_signed(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4):
     """B, C, P and S of a change-point linkage, S signed so that it stays smooth.
 
@@ -159,7 +226,7 @@ def fourbar_position_signed(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m
     gap4 : array_like
         assembly gap (b + c) - (d + a)
     m23 : array_like
-        number of zero gaps among gap2, gap3
+        1 if gap2 or gap3 is zero else 0
     m4 : array_like
         1 if gap4 is zero else 0
 
@@ -215,6 +282,81 @@ def fourbar_position_signed(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m
         x23*(p*x22 + q*x21) + x6,
         x19,
     )
+
+
+def fourbar_position_signed_into(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4, out, work):
+    """`fourbar_position_signed` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (13, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
+    x8 = (a - d)
+    x9 = (4*a*d)
+    x23 = (b**(-1.0))
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11, w12 = work[:13]
+    np.multiply(theta, 1/2, out=w0)
+    np.sin(w0, out=w1)
+    np.square(w1, out=w2)
+    np.multiply(w2, 2, out=w3)
+    np.negative(w3, out=w4)
+    np.add(w4, 1, out=w4)
+    np.multiply(w4, a, out=w4)
+    np.cos(w0, out=w5)
+    np.multiply(w1, w5, out=w0)
+    np.multiply(w0, (2*a), out=w0)
+    np.multiply(w3, a, out=w6)
+    np.add(w6, (-a + d), out=w6)
+    np.multiply(w2, x9, out=w3)
+    np.add(w3, (x8**2), out=w2)
+    np.add(w2, (b**2 - c**2), out=w7)
+    np.sqrt(w2, out=w8)
+    np.add(w8, (abs(x8)), out=w9)
+    np.divide(w3, w9, out=w9)
+    np.add(w9, gap2, out=w3)
+    np.add(w9, gap3, out=w10)
+    np.multiply(w3, w10, out=w3)
+    np.square(w5, out=w10)
+    np.multiply(w10, x9, out=w10)
+    np.add(w8, (a + d), out=w11)
+    np.divide(w10, w11, out=w10)
+    np.add(w10, gap4, out=w10)
+    np.multiply(w3, w10, out=w3)
+    np.sqrt(w3, out=w3)
+    np.add(w8, (b + c), out=w9)
+    np.sqrt(w9, out=w9)
+    np.sign(w5, out=w8)
+    np.power(w8, m4, out=w8)
+    np.sign(w1, out=w5)
+    np.power(w5, m23, out=w5)
+    np.multiply(w3, w9, out=w1)
+    np.multiply(w1, w8, out=w1)
+    np.multiply(w1, w5, out=w1)
+    np.divide(1/2, w2, out=w10)
+    np.multiply(w7, w6, out=w2)
+    np.multiply(w1, w0, out=w11)
+    np.multiply(w11, branch, out=w11)
+    np.add(w2, w11, out=w2)
+    np.multiply(w10, w2, out=w2)
+    np.multiply(w3, w9, out=w11)
+    np.multiply(w11, w8, out=w11)
+    np.multiply(w11, w5, out=w11)
+    np.multiply(w11, w6, out=w11)
+    np.multiply(w11, branch, out=w11)
+    np.multiply(w7, w0, out=w12)
+    np.subtract(w11, w12, out=w11)
+    np.multiply(w10, w11, out=w11)
+    np.copyto(out[0], w4)
+    np.copyto(out[1], w0)
+    np.add(w2, w4, out=out[2])
+    np.add(w11, w0, out=out[3])
+    np.multiply(w2, p, out=w10)
+    np.multiply(w11, q, out=w5)
+    np.subtract(w10, w5, out=w10)
+    np.multiply(w10, x23, out=w10)
+    np.add(w4, w10, out=out[4])
+    np.multiply(w2, q, out=w10)
+    np.multiply(w11, p, out=w5)
+    np.add(w10, w5, out=w10)
+    np.multiply(w10, x23, out=w10)
+    np.add(w0, w10, out=out[5])
+    np.copyto(out[6], w1)
 
 
 def fourbar_velocity(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega):
@@ -287,6 +429,47 @@ def fourbar_velocity(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega):
         -x4 - x8*(p*x6 + q*x7),
         x5 + x8*(p*x7 - q*x6),
     )
+
+
+def fourbar_velocity_into(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, out, work):
+    """`fourbar_velocity` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (10, n)) for temporaries; per-point arguments: ``B_x``, ``B_y``, ``C_x``, ``C_y``, ``S``, ``omega`` (length n)."""
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9 = work[:10]
+    np.multiply(B_x, C_y, out=w0)
+    np.multiply(B_y, C_x, out=w1)
+    np.subtract(w0, w1, out=w0)
+    np.multiply(omega, (2/branch), out=w1)
+    np.divide(w1, S, out=w1)
+    np.negative(w0, out=w2)
+    np.multiply(B_y, d, out=w3)
+    np.subtract(w2, w3, out=w2)
+    np.multiply(w1, w2, out=w2)
+    np.multiply(w0, w1, out=w3)
+    np.multiply(w3, (-1), out=w3)
+    np.multiply(B_y, omega, out=w1)
+    np.multiply(B_x, omega, out=w0)
+    np.subtract(C_y, B_y, out=w4)
+    np.subtract(C_x, B_x, out=w5)
+    np.multiply(w2, (b**(-1.0)), out=w6)
+    np.copyto(out[0], w2)
+    np.copyto(out[1], w3)
+    np.negative(w1, out=out[2])
+    np.copyto(out[3], w0)
+    np.multiply(w3, C_y, out=w7)
+    np.multiply(w7, (-1), out=out[4])
+    np.add(C_x, (-d), out=w7)
+    np.multiply(w3, w7, out=out[5])
+    np.negative(w1, out=w7)
+    np.multiply(w4, p, out=w8)
+    np.multiply(w5, q, out=w9)
+    np.add(w8, w9, out=w8)
+    np.multiply(w6, w8, out=w8)
+    np.subtract(w7, w8, out=out[6])
+    np.multiply(w5, p, out=w8)
+    np.multiply(w4, q, out=w7)
+    np.subtract(w8, w7, out=w8)
+    np.multiply(w6, w8, out=w8)
+    np.add(w0, w8, out=out[7])
 
 
 def fourbar_acceleration(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, alpha, omega_coupler, omega_output):
@@ -385,3 +568,120 @@ def fourbar_acceleration(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, alpha
         -x22 - x24*x26 - x27*x28,
         x23 + x24*x28 - x26*x27,
     )
+
+
+def fourbar_acceleration_into(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, alpha, omega_coupler, omega_output, out, work):
+    """`fourbar_acceleration` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (21, n)) for temporaries; per-point arguments: ``B_x``, ``B_y``, ``C_x``, ``C_y``, ``S``, ``omega``, ``alpha``, ``omega_coupler``, ``omega_output`` (length n)."""
+    x17 = (branch**(-1.0))
+    x25 = (b**(-1.0))
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w20 = work[:21]
+    np.square(omega_output, out=w0)
+    np.square(C_y, out=w1)
+    np.multiply(w0, w1, out=w1)
+    np.square(omega, out=w2)
+    np.multiply(w2, B_x, out=w3)
+    np.multiply(B_y, alpha, out=w4)
+    np.multiply(w2, B_y, out=w5)
+    np.subtract(C_x, B_x, out=w6)
+    np.square(omega_coupler, out=w7)
+    np.multiply(w6, w7, out=w8)
+    np.subtract(C_y, B_y, out=w9)
+    np.multiply(w7, w9, out=w10)
+    np.add(C_x, (-d), out=w11)
+    np.multiply(w0, w11, out=w12)
+    np.multiply(B_x, alpha, out=w13)
+    np.multiply(w13, C_y, out=w14)
+    np.multiply(w12, C_x, out=w15)
+    np.divide(1.0, S, out=w16)
+    np.multiply(w16, (2*x17), out=w17)
+    np.multiply(w10, C_y, out=w18)
+    np.multiply(w12, d, out=w19)
+    np.add(w18, w19, out=w18)
+    np.multiply(w3, C_x, out=w19)
+    np.add(w18, w19, out=w18)
+    np.multiply(w4, C_x, out=w19)
+    np.add(w18, w19, out=w18)
+    np.multiply(w5, C_y, out=w19)
+    np.add(w18, w19, out=w18)
+    np.multiply(w8, C_x, out=w19)
+    np.add(w18, w19, out=w18)
+    np.subtract(w18, w1, out=w18)
+    np.subtract(w18, w14, out=w18)
+    np.subtract(w18, w15, out=w18)
+    np.multiply(w3, d, out=w19)
+    np.subtract(w18, w19, out=w18)
+    np.multiply(w4, d, out=w19)
+    np.subtract(w18, w19, out=w18)
+    np.multiply(w8, d, out=w19)
+    np.subtract(w18, w19, out=w18)
+    np.multiply(w17, w18, out=w18)
+    np.multiply(w0, w11, out=w19)
+    np.multiply(w19, B_x, out=w19)
+    np.multiply(w0, B_y, out=w20)
+    np.multiply(w20, C_y, out=w20)
+    np.add(w19, w20, out=w19)
+    np.multiply(w2, B_x, out=w20)
+    np.multiply(w20, C_x, out=w20)
+    np.add(w19, w20, out=w19)
+    np.multiply(w2, B_y, out=w20)
+    np.multiply(w20, C_y, out=w20)
+    np.add(w19, w20, out=w19)
+    np.multiply(w6, w7, out=w20)
+    np.multiply(w20, C_x, out=w20)
+    np.add(w19, w20, out=w19)
+    np.multiply(w7, w9, out=w20)
+    np.multiply(w20, C_y, out=w20)
+    np.add(w19, w20, out=w19)
+    np.multiply(B_y, C_x, out=w20)
+    np.multiply(w20, alpha, out=w20)
+    np.add(w19, w20, out=w19)
+    np.subtract(w19, w1, out=w19)
+    np.subtract(w19, w14, out=w19)
+    np.subtract(w19, w15, out=w19)
+    np.multiply(w10, B_y, out=w20)
+    np.subtract(w19, w20, out=w19)
+    np.square(B_x, out=w20)
+    np.multiply(w2, w20, out=w20)
+    np.subtract(w19, w20, out=w19)
+    np.square(B_y, out=w20)
+    np.multiply(w2, w20, out=w20)
+    np.subtract(w19, w20, out=w19)
+    np.multiply(w8, B_x, out=w20)
+    np.subtract(w19, w20, out=w19)
+    np.multiply(w17, w19, out=w15)
+    np.add(w3, w4, out=w17)
+    np.subtract(w13, w5, out=w4)
+    np.multiply(w6, p, out=w13)
+    np.multiply(w9, q, out=w5)
+    np.subtract(w13, w5, out=w13)
+    np.multiply(w7, x25, out=w5)
+    np.multiply(w6, q, out=w7)
+    np.multiply(w9, p, out=w3)
+    np.add(w7, w3, out=w7)
+    np.multiply(w18, x25, out=w9)
+    np.copyto(out[0], w18)
+    np.copyto(out[1], w15)
+    np.negative(w17, out=out[2])
+    np.copyto(out[3], w4)
+    np.negative(w12, out=w6)
+    np.multiply(w15, C_y, out=w3)
+    np.subtract(w6, w3, out=out[4])
+    np.multiply(w11, w16, out=w3)
+    np.multiply(w3, w19, out=w3)
+    np.multiply(w3, (2*x17), out=w3)
+    np.multiply(w0, C_y, out=w6)
+    np.subtract(w3, w6, out=out[5])
+    np.negative(w17, out=w6)
+    np.multiply(w13, w5, out=w3)
+    np.subtract(w6, w3, out=w6)
+    np.multiply(w7, w9, out=w3)
+    np.subtract(w6, w3, out=out[6])
+    np.multiply(w13, w9, out=w3)
+    np.add(w4, w3, out=w3)
+    np.multiply(w5, w7, out=w6)
+    np.subtract(w3, w6, out=out[7])
+
+
+#: Rows of the ``work`` array each ``*_into`` kernel needs.
+WORK_ROWS = {'fourbar_position': 11, 'fourbar_position_signed': 13, 'fourbar_velocity': 10, 'fourbar_acceleration': 21}

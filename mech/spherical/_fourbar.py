@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from mech import _backend
 from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
 from mech.spherical._fourbar_branch import change_gaps, solve_change_point
@@ -13,7 +14,9 @@ from mech.spatial import AssemblyRange
 
 __all__ = ["SphericalFourBar", "SphericalFourBarPose", "ground_frame"]
 
-_BLOCK = 1 << 14
+# rows of the reused work array (NumPy backend): the coupler's relative spin, then the
+# largest kernel's temporaries
+_WORK_ROWS = 1 + max(_gen.WORK_ROWS.values())
 _VECTORS = {0: ("B", "C", "P"),
             1: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP"),
             2: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP",
@@ -249,9 +252,12 @@ class SphericalFourBar:
                 flat[2] = flat[2] / m / m
         out = {name: np.empty((size, 3)) for name in _VECTORS[order]}
         out.update({name: np.empty(size) for name in _SCALARS[order]})
-        for start in range(0, max(size, 1), _BLOCK):
-            block = slice(start, start + _BLOCK)
-            self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()})
+        # numba: one fused loop over all points; NumPy: cache-sized blocks with reused work rows
+        numba = _backend.use_numba(size) and not self.change_point
+        step = max(size, 1) if numba else _backend.BLOCK
+        for start in range(0, max(size, 1), step):
+            block = slice(start, start + step)
+            self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()}, numba)
         if order >= 1:
             with np.errstate(over="ignore"):
                 for name, value in out.items():
@@ -272,47 +278,53 @@ class SphericalFourBar:
         fields["theta"] = np.broadcast_to(theta, shape)[()]
         return SphericalFourBarPose(order, fields)
 
-    def _solve_block(self, inputs, order, out):
-        """Solve one block of flat inputs in the default frame, writing into `out`."""
+    def _solve_block(self, inputs, order, out, numba=False):
+        """Solve one block of flat inputs in the default frame, writing into `out`.
+
+        The generated kernels write straight into the columns of the output arrays; the
+        NumPy ones keep their temporaries in one work array reused by every block.
+        """
         a, b, c, d, (r, gamma) = self._a, self._b, self._c, self._d, self._coupler
         theta = inputs[0]
         if self.change_point:
             self._solve_change_block(inputs, order, out)
             return
+        n = theta.shape[0]
+        kernels = _backend.numba_kernels("spherical_fourbar") if numba else None
+        work = None if numba else _backend.workspace("spherical", _WORK_ROWS, n)
+
+        def run(name, args, outs):
+            if numba:
+                getattr(kernels, f"{name}_kernel")(*args, *outs)
+            else:
+                getattr(_gen, f"{name}_into")(*args, outs, work[1:1 + _gen.WORK_ROWS[name]])
+
         # over: 1 / |B x D|^2 where B all but meets D (a = d, theta ~ 1e-160) cannot assemble
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            psi, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz = _gen.spherical_fourbar_position(
-                a, b, c, d, r, gamma, theta, -self._branch)
-            out["psi"][...] = psi
-            for name, comps in (("B", (Bx, By, Bz)), ("C", (Cx, Cy, Cz)), ("P", (Px, Py, Pz))):
-                target = out[name]
-                for k in range(3):
-                    target[:, k] = comps[k]
+            points = tuple(out[name][:, k] for name in "BCP" for k in range(3))
+            run("spherical_fourbar_position", (a, b, c, d, r, gamma, theta, -self._branch),
+                (out["psi"],) + points)
             if order < 1:
                 return
-            points = (Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz)
             omega = inputs[1]
-            dpsi, lam, *vectors = _gen.spherical_fourbar_velocity(d, *points, omega)
-            out["omega_output"][...] = dpsi
+            lam = np.empty(n) if numba else work[0]       # row 0: the coupler's relative spin
+            run("spherical_fourbar_velocity", (d, *points, omega),
+                (out["omega_output"], lam) + tuple(out[name][:, k] for name in ("w_coupler", "w_output", "vB", "vC", "vP")
+                                                   for k in range(3)))
             win = out["w_input"]
             win[:, 0] = 0.0
             win[:, 1] = 0.0
             win[:, 2] = omega
-            for i, name in enumerate(("w_coupler", "w_output", "vB", "vC", "vP")):
-                for k in range(3):
-                    out[name][:, k] = vectors[3 * i + k]
             if order < 2:
                 return
             alpha = inputs[2]
-            ddpsi, *vectors = _gen.spherical_fourbar_acceleration(d, *points, omega, alpha, dpsi, lam)
-            out["alpha_output"][...] = ddpsi
+            run("spherical_fourbar_acceleration", (d, *points, omega, alpha, out["omega_output"], lam),
+                (out["alpha_output"],) + tuple(out[name][:, k] for name in ("dw_coupler", "dw_output", "aB", "aC", "aP")
+                                               for k in range(3)))
             dwin = out["dw_input"]
             dwin[:, 0] = 0.0
             dwin[:, 1] = 0.0
             dwin[:, 2] = alpha
-            for i, name in enumerate(("dw_coupler", "dw_output", "aB", "aC", "aP")):
-                for k in range(3):
-                    out[name][:, k] = vectors[3 * i + k]
 
     def _solve_change_block(self, inputs, order, out):
         """`_solve_block` for a change-point linkage: the smooth closed form, whose exact

@@ -4,6 +4,7 @@ agree with mpmath at 50 digits (``_codegen.check_fresh``, run by each notebook's
 differs between machines."""
 
 import importlib
+import importlib.util
 import re
 from pathlib import Path
 
@@ -39,6 +40,9 @@ def test_generated_module_is_fresh(notebook):
 def test_every_generated_module_has_a_notebook():
     stems = {s for nb in NOTEBOOKS for s in _written_stems(nb)}
     modules = {p.stem for p in _codegen.GENERATED_DIR.glob("*.py") if p.stem != "__init__"}
+    # the numba kernels of a module with kernels: <stem>_numba.py beside <stem>.py
+    kernels = {m for m in modules if m.endswith("_numba") and m[: -len("_numba")] in stems}
+    modules -= kernels
     assert modules <= stems, f"generated modules without a notebook: {sorted(modules - stems)}"
     for stem in modules:
         text = (_codegen.GENERATED_DIR / f"{stem}.py").read_text()
@@ -62,6 +66,42 @@ def test_stale_module_is_detected(tmp_path, monkeypatch):
     text = (tmp_path / "probe.py").read_text().replace("return x**2", "return x**2 + 1e-6")
     (tmp_path / "probe.py").write_text(text)
     with pytest.raises(AssertionError, match="disagrees with mpmath"):
+        _codegen.check_fresh("probe", "derivations/probe.md", "(0-0)", [f])
+
+
+def test_kernels_of_vector_functions(tmp_path, monkeypatch):
+    """A function with `vector` arguments gets a NumPy out= kernel and a numba loop; both are
+    checked against mpmath, a wrong kernel is caught, and a stale numba module is refused."""
+    import sympy as sm
+
+    x, a = sm.symbols("x a", real=True)
+    expr = (a * sm.sin(x) ** 2 - sm.sqrt(a + x**2)) / (1 + x**2)
+    f = _codegen.Function("probe", "A probe.", ((a, "scalar"), (x, "per point")),
+                          (("y", expr, "value"), ("z", -x * a + 2, "second")),
+                          {a: (1, 2), x: (-1, 1)}, vector=(x,))
+    monkeypatch.setattr(_codegen, "GENERATED_DIR", tmp_path)
+    monkeypatch.delenv("MECH_CODEGEN")
+    _codegen.write("probe", "derivations/probe.md", "(0-0)", [f])
+    assert (tmp_path / "probe_numba.py").exists()
+    spec = importlib.util.spec_from_file_location("_probe_kernels", tmp_path / "probe.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    xs = np.linspace(-1, 1, 7)
+    out, work = (np.empty(7), np.empty(7)), np.empty((module.WORK_ROWS["probe"], 7))
+    module.probe_into(1.5, xs, out, work)
+    want = module.probe(1.5, xs)
+    np.testing.assert_allclose(out[0], want[0], rtol=1e-15, atol=1e-15)
+    np.testing.assert_allclose(out[1], want[1], rtol=1e-15, atol=1e-15)
+    # a wrong NumPy kernel is caught numerically
+    good = (tmp_path / "probe.py").read_text()
+    (tmp_path / "probe.py").write_text(good.replace("np.sin(x, out=", "np.cos(x, out=", 1))
+    with pytest.raises(AssertionError, match="probe_into.y disagrees with mpmath"):
+        _codegen.check_fresh("probe", "derivations/probe.md", "(0-0)", [f])
+    (tmp_path / "probe.py").write_text(good)
+    # a numba module of other inputs is stale
+    numba_text = (tmp_path / "probe_numba.py").read_text()
+    (tmp_path / "probe_numba.py").write_text(numba_text.replace("INPUT_HASH = \"sha256:", "INPUT_HASH = \"sha256:0"))
+    with pytest.raises(AssertionError, match="probe_numba.py is missing or stale"):
         _codegen.check_fresh("probe", "derivations/probe.md", "(0-0)", [f])
 
 

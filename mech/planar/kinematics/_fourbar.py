@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 
+from mech import _backend
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
 from mech._validate import bool_flag, branch_sign, motion_inputs, nonnegative_number, positive_length, real_tuple
@@ -14,7 +15,14 @@ from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
 __all__ = ["FourBar", "FourBarPose", "fourbar_lengths"]
 
 
-_BLOCK = 1 << 14
+# rows of the reused work array of a block (NumPy backend): the position kernel's, then S,
+# then the rate kernels'
+_POSITION_ROWS = max(_gen.WORK_ROWS["fourbar_position"], _gen.WORK_ROWS["fourbar_position_signed"])
+_RATE_ROWS = max(_gen.WORK_ROWS["fourbar_velocity"], _gen.WORK_ROWS["fourbar_acceleration"])
+_WORK_ROWS = _POSITION_ROWS + 1 + _RATE_ROWS
+# scaling a point of the scaled linkage (|x| < 4) by 2**e, 0 <= e <= this, neither
+# overflows nor loses a bit: it scales back exactly
+_EXACT_EXPONENT = 1000
 _FIELDS = ("B", "C", "P", "omega_coupler", "omega_output", "vB", "vC", "vP",
            "alpha_coupler", "alpha_output", "aB", "aC", "aP")
 _FIELD_COUNT = {0: 3, 1: 8, 2: 13}
@@ -90,16 +98,23 @@ def dead_points_near(a, b, c, d, theta, gaps):
     return near_far, near_close, k
 
 
-def _unscale(z, exponent):
+def _unscale(z, exponent, copy=True):
     """A complex array times ``2**exponent``, rounded once (exact unless subnormal).
 
     A point beyond the float range (links near 1e308) becomes inf, as IEEE arithmetic
-    would give it; the angles, read from the scaled points, stay exact.
+    would give it; the angles, read from the scaled points, stay exact. With
+    ``copy=False`` the array is scaled in place (and returned).
     """
-    out = np.empty_like(z)
+    if exponent == 0 and not copy:
+        return z
+    out = np.empty_like(z) if copy else z
     with np.errstate(over="ignore"):
-        np.ldexp(z.real, exponent, out=out.real)
-        np.ldexp(z.imag, exponent, out=out.imag)
+        if -1000 <= exponent <= 1000 and z.ndim > 0 and z.flags.c_contiguous:
+            # a product by a normal power of two rounds once, as ldexp: one pass over both parts
+            np.multiply(z.view(float), 2.0**exponent, out=out.view(float))
+        else:
+            np.ldexp(z.real, exponent, out=out.real)
+            np.ldexp(z.imag, exponent, out=out.imag)
     return out
 
 
@@ -140,7 +155,11 @@ class FourBarPose(Pose):
         object.__setattr__(self, "_unit", unit)
 
     def _derive(self, name):
-        B, C, d = self._unit
+        B, C, d, exponent = self._unit
+        if exponent:
+            # B and C were scaled in place by 2**exponent, 0 < exponent <= _EXACT_EXPONENT:
+            # scaling back is exact, so the angles keep every bit in any unit of length
+            B, C = (_unscale(z, -exponent) for z in (B, C))
         return np.angle(C - (B if name == "phi" else d))[()]
 
 
@@ -220,6 +239,12 @@ class FourBar:
         self._m4 = int(zero[2])
         # the kite a = d, b = c: the crank pin passes through D
         self._kite = zero[0] and zero[1]
+        # |BD| sweeps [|d - a|, d + a]: a dead point (|BD| = b + c or |b - c|, gap not zero)
+        # is within reach only if its gap is below the tolerance (twice, for rounding)
+        tol = 2.0 * DEAD_POINT_RTOL * (a_ + b_ + c_ + d_)
+        close_gap = self._gaps[0] if c_ > b_ else self._gaps[1]  # as in dead_points_near
+        self._may_meet_dead_point = (self._gaps[2] != 0.0 and self._gaps[2] <= tol) or (
+            close_gap != 0.0 and close_gap <= tol)
 
     a = property(lambda self: self._a, doc="Crank length AB.")
     b = property(lambda self: self._b, doc="Coupler length BC.")
@@ -286,43 +311,59 @@ class FourBar:
         out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float)
                for name in _FIELDS[: _FIELD_COUNT[order]]}
         out["valid"] = np.empty(size, dtype=bool)
-        # Blocks that fit in cache: the generated code makes many temporaries per step.
-        for start in range(0, max(size, 1), _BLOCK):
-            block = slice(start, start + _BLOCK)
-            self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()})
+        # numba: one fused loop per field group over all points; NumPy: blocks that fit in
+        # cache, every temporary in one reused work array (no allocation per block)
+        numba = _backend.use_numba(size) and not self._kite
+        step = max(size, 1) if numba else _backend.BLOCK
+        for start in range(0, max(size, 1), step):
+            block = slice(start, start + step)
+            self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()}, numba)
         valid = out["valid"]
         if strict and not np.all(valid):
             bad = float(flat[0][~valid][0])
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
-        unit = (out["B"].reshape(shape), out["C"].reshape(shape), self._unit[3])
+        # B and C in the scaled lengths are kept for the angles phi and psi (FourBarPose):
+        # as they are, or (exponent in 0 .. _EXACT_EXPONENT) as the points in the user's
+        # unit, which scale back exactly: then every field is scaled in place, no copy
+        exact = 0 <= self._exponent <= _EXACT_EXPONENT
+        unit = (out["B"].reshape(shape), out["C"].reshape(shape), self._unit[3], self._exponent if exact else 0)
         for name in _COMPLEX.intersection(out):
-            out[name] = _unscale(out[name], self._exponent)
+            out[name] = _unscale(out[name], self._exponent, copy=not exact and name in ("B", "C"))
         fields = {name: value.reshape(shape)[()] for name, value in out.items()}
         fields["theta"] = np.broadcast_to(theta, shape)[()]
         return FourBarPose(unit, order, fields)
 
-    def _solve_block(self, inputs, order, out):
+    def _solve_block(self, inputs, order, out, numba=False):
         """Solve one block of flat inputs, writing into the views in `out`."""
         a, b, c, d, p, q = self._unit
         branch, theta = self._branch, inputs[0]
+        n = theta.shape[0]
         # over: 1 / |BD|^2 where B all but meets D (theta ~ 1e-160 with a = d) cannot assemble
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             if self._kite:
                 B, C, P, S, ratios = kite_pose(a, b, self._gaps[2], self._m4, p, q, theta, branch)
                 out["B"][...], out["C"][...], out["P"][...] = B, C, P
+                position = None
             else:
-                solver = _gen.fourbar_position_signed if self.change_point else _gen.fourbar_position
+                name = "fourbar_position_signed" if self.change_point else "fourbar_position"
                 flags = (self._m23, self._m4) if self.change_point else ()
-                Bx, By, Cx, Cy, Px, Py, S = solver(a, b, c, d, p, q, theta, branch, *self._gaps, *flags)
-                _store(out, "B", Bx, By)
-                _store(out, "C", Cx, Cy)
-                _store(out, "P", Px, Py)
-            np.isnan(S, out=out["valid"])
-            np.logical_not(out["valid"], out=out["valid"])
+                args = (a, b, c, d, p, q, theta, branch, *self._gaps, *flags)
+                B, C, P = out["B"], out["C"], out["P"]
+                if numba:
+                    S = np.empty(n)
+                    kernel = getattr(_backend.numba_kernels("fourbar_position"), f"{name}_kernel")
+                    kernel(*args, B.real, B.imag, C.real, C.imag, P.real, P.imag, S)
+                else:
+                    work = _backend.workspace("fourbar", _WORK_ROWS, n)
+                    S = work[_POSITION_ROWS]
+                    getattr(_gen, f"{name}_into")(*args, (B.real, B.imag, C.real, C.imag, P.real, P.imag, S),
+                                                  work[:_gen.WORK_ROWS[name]])
+                position = (B.real, B.imag, C.real, C.imag, S)
+            np.equal(S, S, out=out["valid"])             # False where S is NaN
             if order >= 1 and (self._kite or self.change_point):
                 self._change_point_rates(inputs, order, out, ratios if self._kite else None)
             elif order >= 1:
-                self._rates(inputs, order, out, (Bx, By, Cx, Cy, S))
+                self._rates(inputs, order, out, position, numba)
             self._dead_points(theta, order, out)
 
     def _dead_points(self, theta, order, out):
@@ -332,6 +373,8 @@ class FourBar:
         (infinite there), so `valid` agrees in every unit of length: True for positions,
         False with rates, and `assembled` True.
         """
+        if not self._may_meet_dead_point:
+            return
         a, b, c, d, p, q = self._unit
         near_far, near_close, k = dead_points_near(a, b, c, d, theta, self._gaps)
         near = near_far | near_close
@@ -349,29 +392,29 @@ class FourBar:
             if name in out:
                 out[name][near] = np.nan + 1j * np.nan if name in _COMPLEX else np.nan
 
-    def _rates(self, inputs, order, out, position):
+    def _rates(self, inputs, order, out, position, numba=False):
         """Rates of a linkage without change points, by the generated velocity loop."""
         a, b, c, d, p, q = self._unit
-        Bx, By, Cx, Cy, S = position
-        omega = inputs[1]
-        w2, w3, vBx, vBy, vCx, vCy, vPx, vPy = _gen.fourbar_velocity(
-            b, d, p, q, Bx, By, Cx, Cy, S, self._branch, omega
-        )
-        out["omega_coupler"][...] = w2
-        out["omega_output"][...] = w3
-        _store(out, "vB", vBx, vBy)
-        _store(out, "vC", vCx, vCy)
-        _store(out, "vP", vPx, vPy)
+        omega, branch = inputs[1], self._branch
+        w2, w3, vB, vC, vP = (out[k] for k in ("omega_coupler", "omega_output", "vB", "vC", "vP"))
+        args = (b, d, p, q, *position, branch, omega)
+        outs = (w2, w3, vB.real, vB.imag, vC.real, vC.imag, vP.real, vP.imag)
+        if numba:
+            kernels = _backend.numba_kernels("fourbar_position")
+            kernels.fourbar_velocity_kernel(*args, *outs)
+        else:
+            # the rows after S in the block's work array (S is an input here)
+            work = _backend.workspace("fourbar", _WORK_ROWS, w2.shape[0])[_POSITION_ROWS + 1:]
+            _gen.fourbar_velocity_into(*args, outs, work[:_gen.WORK_ROWS["fourbar_velocity"]])
         if order < 2:
             return
-        a2, a3, aBx, aBy, aCx, aCy, aPx, aPy = _gen.fourbar_acceleration(
-            b, d, p, q, Bx, By, Cx, Cy, S, self._branch, omega, inputs[2], w2, w3
-        )
-        out["alpha_coupler"][...] = a2
-        out["alpha_output"][...] = a3
-        _store(out, "aB", aBx, aBy)
-        _store(out, "aC", aCx, aCy)
-        _store(out, "aP", aPx, aPy)
+        a2, a3, aB, aC, aP = (out[k] for k in ("alpha_coupler", "alpha_output", "aB", "aC", "aP"))
+        args = (*args, inputs[2], w2, w3)
+        outs = (a2, a3, aB.real, aB.imag, aC.real, aC.imag, aP.real, aP.imag)
+        if numba:
+            kernels.fourbar_acceleration_kernel(*args, *outs)
+        else:
+            _gen.fourbar_acceleration_into(*args, outs, work[:_gen.WORK_ROWS["fourbar_acceleration"]])
 
     def _change_point_rates(self, inputs, order, out, ratios):
         """Rates of a change-point linkage as limits along the branch (`_fourbar_change`)."""
