@@ -39,7 +39,7 @@ def run_note(docname):
         "Download this page as a notebook (the download button at the top of the page, then ",
         "`.ipynb`", "). In a clone of the repository, ", "`make setup`",
         " creates ", "`.venv`", " with the pinned SymPy and installs ", "`mech`",
-        " with its ", "`derivations`", " helpers; then run the notebook from any folder with ",
+        " with the repository's ", "`derivations`", " helpers on its path; then run the notebook from any folder with ",
         f"`.venv/bin/jupyter execute {stem}.ipynb`",
         ", or open it in Jupyter with that environment's kernel.",
     )
