@@ -113,8 +113,12 @@ def _u_to_length(cum, u):
     return _lerp(cum, g, 1.0)
 
 
-def arc_signatures(atlas, span, starts):
+def arc_signatures(atlas, span, starts, base=1):
     """Window signatures of every atlas curve; cached on the atlas.
+
+    `base` is the harmonic the windows are normalised on (`normal_form`): 1, or 2 for the
+    second set that `query` compares arcs with a small first harmonic against (built on
+    the first such query; as large again).
 
     Returns ``(sigs, norms, gaps)``: ``sigs`` (rows, starts + 1, 4 * ARC_HARMONICS)
     float16, window ``j`` covering the curve parameter from ``u_0 + 2 pi j / starts`` to
@@ -124,7 +128,7 @@ def arc_signatures(atlas, span, starts):
     from window j's signature to window j + 1's (the segment's length).
     """
     cache = atlas._arc_cache
-    key = (float(span), int(starts))
+    key = (float(span), int(starts)) if base == 1 else (float(span), int(starts), int(base))
     if key in cache:
         return cache[key]
     n = atlas.samples
@@ -151,8 +155,8 @@ def arc_signatures(atlas, span, starts):
         arcs = np.where(still[:, None], np.arange(points)[None, :], arcs)
         # the first harmonics only (the normalisation uses all of them, so these are the
         # first entries of the full signature)
-        form = normal_form(_close_arc(arcs), width // 4)
-        cands = form.candidates.reshape(rows.size, windows, 4, width)
+        form = normal_form(_close_arc(arcs), width // 4, base)
+        cands = form.candidates.reshape(rows.size, windows, form.candidates.shape[1], width)
         out = np.empty((rows.size, windows, width))
         out[:, 0] = cands[np.arange(rows.size), 0, form.chosen.reshape(rows.size, windows)[:, 0]]
         for j in range(1, windows):
@@ -168,7 +172,7 @@ def arc_signatures(atlas, span, starts):
 
 
 def window_distances(sigs, norms, gaps, candidates):
-    """Per row: the least distance from any of the target's `candidates` (4, D) to the
+    """Per row: the least distance from any of the target's `candidates` (4 or 8, D) to the
     polyline through its window signatures, the window j of that segment and the fraction
     (0..1) along it towards window j + 1."""
     rows, windows, width = sigs.shape
