@@ -171,16 +171,26 @@ def arc_signatures(atlas, span, starts, base=1):
     return cache[key]
 
 
-def window_distances(sigs, norms, gaps, candidates):
+def window_distances(sigs, norms, gaps, candidates, second=False):
     """Per row: the least distance from any of the target's `candidates` (4 or 8, D) to the
     polyline through its window signatures, the window j of that segment and the fraction
-    (0..1) along it towards window j + 1."""
+    (0..1) along it towards window j + 1.
+
+    With `second`, also the window and fraction of the best segment at least an eighth of
+    the cycle away from the first (a second start for the alignment: a folded arc, traced
+    out and back, can look alike from two starts, and the path of its windows' signatures
+    bends sharply near the true one, so a grid segment may miss it by more than a wrong
+    start's)."""
     rows, windows, width = sigs.shape
     c = np.asarray(candidates, dtype=np.float32)
     cc = np.sum(c.astype(np.float64) ** 2, axis=1).astype(np.float32)
     best = np.empty(rows)
     where = np.empty(rows, dtype=np.int64)
     frac = np.empty(rows)
+    where2, frac2 = np.empty(rows, dtype=np.int64), np.empty(rows)
+    steps = windows - 1
+    apart = np.abs(np.arange(steps)[:, None] - np.arange(steps)[None, :])
+    near = np.minimum(apart, steps - apart) < max(1, steps // 8)
     for lo in range(0, rows, _BLOCK):
         block = slice(lo, min(lo + _BLOCK, rows))
         s = sigs[block].astype(np.float32)
@@ -198,6 +208,15 @@ def window_distances(sigs, norms, gaps, candidates):
         best[block] = flat[np.arange(b), k]
         where[block] = k // seg.shape[2]
         frac[block] = lam.reshape(b, -1)[np.arange(b), k]
+        if second:
+            pick = np.argmin(seg, axis=2)                           # best candidate per segment
+            per = np.take_along_axis(seg, pick[:, :, None], 2)[:, :, 0]
+            per = np.where(near[where[block]], np.inf, per)
+            j2 = np.argmin(per, axis=1)
+            where2[block] = j2
+            frac2[block] = lam[np.arange(b), j2, pick[np.arange(b), j2]]
+    if second:
+        return np.sqrt(np.maximum(best, 0.0)), where, frac, where2, frac2
     return np.sqrt(np.maximum(best, 0.0)), where, frac
 
 

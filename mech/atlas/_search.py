@@ -340,18 +340,20 @@ def _query_arc(atlas, z, k, shortlist, span, starts):
     # the arc's first harmonic, which is often small): a longer list gets a coarse
     # alignment, the best `shortlist` of it the full one
     m = min(_ARC_WIDER * shortlist, len(atlas))
-    short, u0, dist = _arc_shortlist(atlas, closed, 1, span, starts, m)
     c = np.abs(np.fft.fft(closed[0]) / closed.shape[1])
-    if min(c[1], c[-1]) < _ARC_SMALL_FIRST * np.sqrt(np.sum(c[1:] ** 2)):
+    small = min(c[1], c[-1]) < _ARC_SMALL_FIRST * np.sqrt(np.sum(c[1:] ** 2))
+    short, u0, dist = _arc_shortlist(atlas, closed, 1, span, starts, m, small)
+    if small:
         # a small first harmonic: the normalisation on it is ill-conditioned, so the windows
-        # normalised on c_2 give a second list; both are aligned
-        more, v0, e = _arc_shortlist(atlas, closed, 2, span, starts, m)
-        new = ~np.isin(more, short)
-        short, u0, dist = (np.concatenate([x, y[new]]) for x, y in ((short, more), (u0, v0), (dist, e)))
+        # normalised on c_2 give a second list; both lists, each row from two starts, are aligned
+        more = _arc_shortlist(atlas, closed, 2, span, starts, m, True)
+        short, u0, dist = (np.concatenate([x, y]) for x, y in zip((short, u0, dist), more))
     step = 0.5 / starts
     err, *_, u0, u1, _ = align_arcs(t[0], atlas.linkages.take(short), u0, u0 + 2 * np.pi * span, step,
                                     levels=_ARC_COARSE, size=_COARSE_TABLE)
-    keep = np.argsort(err, kind="stable")[:min(shortlist, m)]
+    order = np.argsort(err, kind="stable")
+    order = order[np.sort(np.unique(short[order], return_index=True)[1])]      # each row once, its best
+    keep = order[:min(shortlist, m)]
     short, u0, u1, dist = short[keep], u0[keep], u1[keep], dist[keep]
     rows = atlas.linkages.take(short)
     err, w, centroid, points, u0, u1, direction = align_arcs(t[0], rows, u0, u1, step / 2**_ARC_COARSE)
@@ -361,17 +363,24 @@ def _query_arc(atlas, z, k, shortlist, span, starts):
             for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
 
 
-def _arc_shortlist(atlas, closed, base, span, starts, m):
+def _arc_shortlist(atlas, closed, base, span, starts, m, second=False):
     """The `m` rows whose windows (normalised on harmonic `base`) lie nearest the open
     target run forward and back (`closed`, (1, N)); the start of the best-fitting window of
-    each (with the fraction of a step towards the next) and the signature distance."""
+    each (with the fraction of a step towards the next) and the signature distance. With
+    `second`, each row comes twice: from its best start and from its best start an eighth
+    of a cycle or more away (`window_distances`)."""
     from mech.atlas._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
 
     form = normal_form(closed, atlas.harmonics, base)
     sigs, norms, gaps = arc_signatures(atlas, span, starts, base)
-    best, where, frac = window_distances(sigs, norms, gaps, _truncate(form.candidates[0], atlas.harmonics))
+    best, where, frac, *other = window_distances(sigs, norms, gaps, _truncate(form.candidates[0], atlas.harmonics),
+                                                 second)
     short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
     u0 = 2 * np.pi * (where[short] + frac[short]) / starts + np.pi / _WINDOW_TABLE
+    if second:
+        where2, frac2 = other
+        u0 = np.concatenate([u0, 2 * np.pi * (where2[short] + frac2[short]) / starts + np.pi / _WINDOW_TABLE])
+        short = np.concatenate([short, short])
     return short, u0, best[short]
 
 
