@@ -257,8 +257,11 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     signatures of windows of each closed curve (the arc run forward and back), through
     the distance to the segment between neighbouring windows' signatures, then aligned
     by a pattern search on the two ends of the sub-arc; its matches carry `arc`. When
-    the arc's first harmonic is small (below about a tenth of its RMS radius) the
-    normalisation is ill-conditioned and the right linkage may be missed.
+    the arc's first harmonic is small (|c_1| below a quarter of its RMS radius: an arc that
+    folds back on itself), the normalisation on c_1 is ill-conditioned: such an arc is also
+    compared with a second set of window signatures, normalised on c_2 (built on the first
+    such query, as large as the first set), and every row of both short lists is aligned
+    from two starts (:ref:`deriv-shape-signature`).
 
     Examples
     --------
