@@ -260,8 +260,8 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     the arc's first harmonic is small (|c_1| below a quarter of its RMS radius: an arc that
     folds back on itself), the normalisation on c_1 is ill-conditioned: such an arc is also
     compared with a second set of window signatures, normalised on c_2 (built on the first
-    such query, as large as the first set), and every row of both short lists is aligned
-    from two starts (:ref:`deriv-shape-signature`).
+    such query, as large as the first set), whose short list is aligned from two starts
+    per row (:ref:`deriv-shape-signature`).
 
     Examples
     --------
@@ -345,10 +345,10 @@ def _query_arc(atlas, z, k, shortlist, span, starts):
     m = min(_ARC_WIDER * shortlist, len(atlas))
     c = np.abs(np.fft.fft(closed[0]) / closed.shape[1])
     small = min(c[1], c[-1]) < _ARC_SMALL_FIRST * np.sqrt(np.sum(c[1:] ** 2))
-    short, u0, dist = _arc_shortlist(atlas, closed, 1, span, starts, m, small)
+    short, u0, dist = _arc_shortlist(atlas, closed, 1, span, starts, m)
     if small:
         # a small first harmonic: the normalisation on it is ill-conditioned, so the windows
-        # normalised on c_2 give a second list; both lists, each row from two starts, are aligned
+        # normalised on c_2 give a second list, each row from two starts; both lists are aligned
         more = _arc_shortlist(atlas, closed, 2, span, starts, m, True)
         short, u0, dist = (np.concatenate([x, y]) for x, y in zip((short, u0, dist), more))
     step = 0.5 / starts
