@@ -24,6 +24,9 @@
   (one thread each), its throughput beside the single-process build's, and whether its
   signatures are identical to the single-process build's (they must be: every block is a
   pure function of the seed and its index);
+- slider-cranks (``--only slider``, run apart, written to ``results/atlas_slider.json``):
+  build and query times of slider-crank atlases of 10^4 and 10^5 entries and the recovery
+  of noisy targets from random rows, full-turn and rocking cranks counted apart;
 - invariance: the largest signature change over random band-limited curves under random
   similarities, fractional restarts and reversals (exact resampling), as in the tests.
 
@@ -31,7 +34,10 @@ Times are on a shared machine (its load average is recorded).
 
     python benchmarks/bench_atlas.py            # writes results/atlas.json
     python benchmarks/bench_atlas.py --quick    # smaller, nothing written
-    python benchmarks/bench_atlas.py --open-arcs-only   # the open arcs on 10^4 only, same draws; updates that part
+    python benchmarks/bench_atlas.py --only slider   # the slider-crank atlas alone:
+                                                     # writes results/atlas_slider.json
+    python benchmarks/bench_atlas.py --open-arcs-only   # the open arcs on 10^4 only, same draws;
+                                                        # updates that part of results/atlas.json
 """
 
 from __future__ import annotations
@@ -59,6 +65,7 @@ GOAL_QUERY_S = 0.050
 #: An open-arc miss whose first match fits within this many times the noise counts as an equivalent fit.
 NOISE_FIT = 1.5
 OUTPUT = HERE / "results" / "atlas.json"
+SLIDER_OUTPUT = HERE / "results" / "atlas_slider.json"
 
 
 def _target(atlas, i, rng, points=300):
@@ -260,7 +267,7 @@ def _dask_build(n, single):
 
     logging.getLogger("distributed").setLevel(logging.ERROR)
     t = time.perf_counter()
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster, \
             Client(cluster) as client:
         start_s = time.perf_counter() - t
         client.run(lambda: __import__("mech.atlas._build"))     # warm the workers (imports)
@@ -278,14 +285,68 @@ def _dask_build(n, single):
             "cluster_start_s": start_s, "identical": same}
 
 
+def _slider(sizes, trials, rng, quick):
+    """The slider-crank atlas: build time, query time and recovery of noisy atlas curves.
+
+    Targets are made like the four-bar ones (`_target`) from random rows, full-turn cranks
+    and rocking ones counted apart; a trial succeeds when the first match is that row
+    (slider-crank matches have no cognates).
+    """
+    results = {}
+    for n in sizes:
+        t = time.perf_counter()
+        atlas = build_atlas(n, seed=0, mechanism="slider-crank")
+        build = time.perf_counter() - t
+        query(atlas, _target(atlas, 0, rng))                # warm
+        times, hits, counts, misses = [], {"crank-slider": 0, "rocker-slider": 0}, {"crank-slider": 0,
+                                                                                   "rocker-slider": 0}, []
+        for _ in range(trials):
+            i = int(rng.integers(n))
+            kind = str(atlas.linkages.kind[i])
+            target = _target(atlas, i, rng)
+            t = time.perf_counter()
+            matches = query(atlas, target, k=5)
+            times.append(time.perf_counter() - t)
+            counts[kind] += 1
+            if matches[0].index == i:
+                hits[kind] += 1
+                continue
+            own = [m for m in matches if m.index == i]
+            misses.append({"row": i, "kind": kind, "first_relative_error": matches[0].relative_error,
+                           "row_relative_error": own[0].relative_error if own else None,
+                           "row_rank": own[0].rank if own else None})
+        results[str(n)] = {"build_s": build, "build_s_per_1e4": build / n * 1e4,
+                           "full_turn_fraction": float(np.mean(atlas.linkages.full_turn)),
+                           "query_median_s": float(np.median(times)), "query_max_s": float(np.max(times)),
+                           "recovered": hits, "trials": counts, "misses": misses}
+        print(f"slider-crank n = {n:>7}: build {build:6.2f} s ({build / n * 1e4:.2f} s per 10^4), query median "
+              f"{1e3 * np.median(times):6.1f} ms (max {1e3 * np.max(times):.1f}), recovered "
+              + ", ".join(f"{hits[k]}/{counts[k]} {k}" for k in hits))
+        for miss in misses:
+            print(f"    miss: row {miss['row']} ({miss['kind']}) first match error {miss['first_relative_error']:.2e}, "
+                  f"the row itself at rank {miss['row_rank']} with error {miss['row_relative_error']}")
+    return {"date": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"), "goal_query_s": GOAL_QUERY_S,
+            "machine": machine(), "versions": versions(), "quick": quick, "results": results}
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--output", type=Path, default=None)
+    parser.add_argument("--only", choices=["slider"], default=None,
+                        help="run one part alone: 'slider' writes results/atlas_slider.json")
     parser.add_argument("--open-arcs-only", action="store_true",
                         help="rerun only the open arcs on 10^4 linkages (the same draws) and update that "
                              "part of the results file")
     args = parser.parse_args(argv)
+    if args.only == "slider":
+        rng = np.random.default_rng(2027)
+        report = _slider((10_000,) if args.quick else (10_000, 100_000), 20 if args.quick else 200, rng, args.quick)
+        output = args.output or (None if args.quick else SLIDER_OUTPUT)
+        if output is not None:
+            output.write_text(json.dumps(report, indent=2) + "\n")
+            print(f"written {output}")
+        return 0
     if args.open_arcs_only:
         rng = np.random.default_rng(2026)
         _replay_to_open_arcs(rng)

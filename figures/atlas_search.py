@@ -80,3 +80,37 @@ def arc_figure(target, matches, wholes, ax=None):
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     return ax
+
+
+def slider_figure(target, match, ax=None, poses=4):
+    """Draw a slider-crank match: the target, the placed coupler curve, the guide line and
+    the linkage at `poses` crank angles."""
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        _, ax = plt.subplots(figsize=(7.0, 5.5), layout="constrained")
+    placed = match.linkage
+    sc = placed.slider
+    p, q = placed.coupler
+    ax.plot(target.real, target.imag, ".", color="0.3", ms=3, label="target (noisy)")
+    curve = np.append(match.curve, match.curve[0])
+    ax.plot(curve.real, curve.imag, color="tab:blue", lw=1.5,
+            label=f"row {match.index}, {match.kind}, error {100 * match.relative_error:.2g} %")
+    theta = np.linspace(0.0, 2.0 * np.pi, poses, endpoint=False) + 0.3
+    pose = sc.solve(theta)
+    P = pose.B + (p + 1j * q) * np.exp(1j * pose.phi)
+    A = placed.origin
+    B, C, P = placed.place(pose.B), placed.place(pose.C), placed.place(P)
+    xs = np.concatenate([[0.0], pose.C.real])
+    ends = placed.place(np.array([xs.min() - 0.3 * sc.b, xs.max() + 0.3 * sc.b]) + 1j * sc.e)
+    ax.plot(ends.real, ends.imag, "--", color="0.5", lw=1.0, label="guide line")
+    for b, c, pt in zip(B, C, P):
+        ax.plot([A.real, b.real, c.real], [A.imag, b.imag, c.imag], "-o", color="black", lw=1.2, ms=3)
+        ax.fill([b.real, c.real, pt.real], [b.imag, c.imag, pt.imag], color="tab:orange", alpha=0.3)
+        ax.plot(pt.real, pt.imag, "o", color="tab:red", ms=4)
+    ax.plot(A.real, A.imag, "k^", ms=9, label="crank pivot A")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12))
+    return ax

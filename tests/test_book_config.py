@@ -260,3 +260,41 @@ def test_derivation_and_worked_use_titles_differ_beyond_prefix():
 def test_title_checks_can_fail():
     assert _topic("Derivation: the RSSR spatial four-bar (eqs. 2-67 to 2-71)") == "the rssr spatial four-bar"
     assert _topic("Worked examples: the RSSR (§2.4)") == "the rssr"
+
+
+def test_png_palette_shrinks_a_figure_faithfully(tmp_path):
+    """book/_ext/png_palette.py: a Matplotlib figure gets smaller and stays within 0.5/255 on average."""
+    import importlib.util
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from PIL import Image
+
+    spec = importlib.util.spec_from_file_location("png_palette", ROOT / "book" / "_ext" / "png_palette.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+
+    fig, ax = plt.subplots(figsize=(5, 4))
+    t = np.linspace(0, 2 * np.pi, 400)
+    for k in range(1, 5):
+        ax.plot(np.cos(k * t), np.sin((k + 1) * t), lw=1.5)
+    ax.fill_between(t / 7 - 0.5, -0.2, 0.2, alpha=0.3)
+    ax.set_title("coupler curves")
+    path = tmp_path / "figure.png"
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    before = np.asarray(Image.open(path).convert("RGB"), dtype=float)
+    size = path.stat().st_size
+    assert module.palette_png(path)
+    after = np.asarray(Image.open(path).convert("RGB"), dtype=float)
+    assert path.stat().st_size < 0.7 * size
+    assert np.abs(after - before).mean() < 0.5
+    assert not module.palette_png(path)  # already a palette image
+
+    transparent = tmp_path / "transparent.png"
+    Image.new("RGBA", (8, 8), (255, 0, 0, 10)).save(transparent)
+    raw = transparent.read_bytes()
+    assert not module.palette_png(transparent) and transparent.read_bytes() == raw

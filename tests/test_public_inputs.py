@@ -226,6 +226,18 @@ def _polygon():
 
 
 _THETA = {"theta": "real"}
+def _sph_ground():
+    return sph.SphericalLinkage({"A": (0.0, 0.0, 1.0), "D": (np.sin(1.0), 0.0, np.cos(1.0))})
+
+
+def _sph_crank():
+    return _sph_ground().crank("AB", pivot="A", tip="B", arc=0.3, reference="D")
+
+
+def _sph_sixbar():
+    return sph.stephenson1(0.3, 0.9, 0.7, 1.0, E=(0.2, 0.8), F=(0.3, -1.0), arcs=(0.8, 0.7), coupler=(0.4, 0.5))
+
+
 _MOTION = {"theta": "real", "order": "order", "omega": "real", "alpha": "real", "strict": "bool"}
 _MOTION2 = dict(theta=[0.0, 1.0], order=2, omega=1.5, alpha=0.5, strict=False)
 _ABCD = {"a": "scalar", "b": "scalar", "c": "scalar", "d": "scalar"}
@@ -654,6 +666,26 @@ CASES = {
     "spherical.coupler_quartic": E(lambda: sph.coupler_quartic, {"linkage": "vec3", "points": "vec3"},
                                    linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
     "spherical.nine_parameters": E(lambda: sph.nine_parameters, {"linkage": "instance"}, linkage=_sfb()),
+    "spherical.SphericalLinkage": E(lambda: sph.SphericalLinkage, {"ground": ("vec3", lambda v: {"A": v})},
+                                    ground={"A": [0.0, 0.0, 1.0]}),
+    "spherical.SphericalLinkage.ground": E(lambda: sph.SphericalLinkage().ground, {"at": "vec3"},
+                                           name="A", at=[0.0, 0.0, 1.0]),
+    "spherical.SphericalLinkage.crank": E(lambda: _sph_ground().crank, {"arc": "scalar"},
+                                          link="AB", pivot="A", tip="B", arc=0.3, reference="D"),
+    "spherical.SphericalLinkage.point": E(lambda: _sph_crank().point, {"at": ("scalar", first)},
+                                          name="P", link="AB", at=(0.2, 0.5)),
+    "spherical.SphericalLinkage.rrr": E(lambda: _sph_crank().rrr, {"arcs": ("scalar", first), "branch": "branch"},
+                                        links=("BC", "DC"), pins=("B", "D"), joint="C", arcs=(0.9, 0.7), branch=1),
+    "spherical.SphericalLinkage.solve": E(lambda: _sph_sixbar().solve, _MOTION, **_MOTION2),
+    "spherical.SphericalLinkage.coupler_curve": E(lambda: _sph_sixbar().coupler_curve,
+                                                  {"theta": "real", "order": "order", "omega": "real", "alpha": "real"},
+                                                  theta=[0.0, 1.0], order=2, omega=1.5, alpha=0.5),
+    **{f"spherical.{name}": E(lambda name=name: getattr(sph, name),
+                              {**_ABCD, "E": ("scalar", first), "F": ("scalar", first), "arcs": ("scalar", first),
+                               "coupler": ("scalar", first), "branches": ("branch", first), "frame": "matrix?"},
+                              a=0.3, b=0.9, c=0.7, d=1.0, E=(0.2, 0.8), F=(0.3, -1.0), arcs=(0.8, 0.7),
+                              coupler=(0.4, 0.5), branches=(1, 1), frame=np.eye(3))
+       for name in ("stephenson1", "stephenson2", "watt1", "watt2")},
     "spherical.SphericalPolygon.relations": E(lambda: _polygon().relations),
     "spherical.angle_at": E(lambda: sph.angle_at, {"a": "vec3", "b": "vec3", "c": "vec3"},
                             a=[0, 0, 1], b=[1, 0, 0], c=[0, 1, 0]),
@@ -835,7 +867,7 @@ RECORDS = {
         "AssemblyRange", "ChainPose", "DoubleJointPose", "RCCCPose", "RSSRPose")},
     **{f"spherical.{n}": "result record built by the package" for n in (
         "Circle", "Collinearity", "FunctionGenerator", "Intersection", "PolygonRelations", "SliderStroke",
-        "SphericalFourBarPose", "SphericalPolygon", "SphericalType")},
+        "SphericalFourBarPose", "SphericalLinkagePose", "SphericalPolygon", "SphericalType")},
     **{f"exercises.{n}": "record of the exercise catalogue built by the package" for n in (
         "Exercise", "Interval", "Parameter", "Part", "Result", "Solution")},
 }
@@ -1233,8 +1265,24 @@ _SQUARE = [0, 1, 1 + 1j, 1j]
 _SPHERE_CURVE = [[0.6, 0.0, 0.8], [0.0, 0.6, 0.8], [-0.6, 0.0, 0.8], [0.0, -0.5, 0.8], [0.3, -0.3, 0.9]]
 
 
+def _small_slider_atlas():
+    return at.build_atlas(40, seed=1, mechanism="slider-crank")
+
+
 def _small_sphere_atlas():
     return at.build_sphere_atlas(8, seed=1, harmonics=3, samples=16)
+
+
+def _sphere_match():
+    return at.query_sphere(_small_sphere_atlas(), _SPHERE_CURVE, k=1, shortlist=4)[0]
+
+
+def _sphere_atlas_dir():
+    import tempfile
+
+    folder = tempfile.mkdtemp(prefix="mech-sphere-atlas-")
+    _small_sphere_atlas().to_parquet(folder)
+    return folder
 CASES.update({
     "atlas.curve_signature": E(lambda: at.curve_signature,
                                {"points": "point", "closed": "bool", "harmonics": "count", "samples": "count",
@@ -1260,6 +1308,26 @@ CASES.update({
                             "block": "count", "progress": "bool", "resume": "bool"},
                            n=30, seed=2, harmonics=4, samples=32, lengths=(0.2, 5.0), coupler=(-1.0, 2.0, -1.0, 1.0),
                            min_transmission=0.0, block=64, progress=False, resume=False),
+    "atlas.build_atlas#slider-crank": E(lambda: at.build_atlas,
+                                         {"n": "count", "lengths": ("scalar", lambda v: (v, 5.0)),
+                                          "offsets": ("scalar", lambda v: (v, 2.0)), "mechanism": "option"},
+                                         n=20, lengths=(0.3, 5.0), offsets=(-2.0, 2.0), mechanism="slider-crank",
+                                         block=64),
+    "atlas.sample_slider_cranks": E(lambda: at.sample_slider_cranks,
+                                    {"n": "count", "seed": "seed", "rods": ("scalar", lambda v: (v, 5.0)),
+                                     "offsets": ("scalar", lambda v: (v, 2.0)),
+                                     "coupler": ("scalar", lambda v: (v, 2.0, -1.0, 1.0)), "branch": "branch?",
+                                     "min_transmission": "scalar"},
+                                    n=20, seed=3, rods=(0.3, 5.0), offsets=(-2.0, 2.0), coupler=(-1.0, 2.0, -1.0, 1.0),
+                                    branch=None, min_transmission=0.1),
+    "atlas.SliderCrankSamples.take": E(lambda: at.sample_slider_cranks(10).take, {"index": "int"}, index=[1, 2]),
+    "atlas.SliderCrankSamples.columns": E(lambda: at.sample_slider_cranks(10).columns),
+    "atlas.SliderCrankSamples.slider_crank": E(lambda: _small_slider_atlas().linkages.slider_crank,
+                                               {"i": "int"}, i=3),
+    "atlas.SliderCrankSamples.curves": E(lambda: at.sample_slider_cranks(10).curves, {"samples": "count"},
+                                         samples=16),
+    "atlas.PlacedSliderCrank.place": E(lambda: at.query(_small_slider_atlas(), _SQUARE, k=1)[0].linkage.place,
+                                       {"z": "point"}, z=[0.0, 1 + 1j]),
     "atlas.Atlas.curves": E(lambda: _small_atlas().curves, {"index": "int", "samples": "count?"},
                             index=[0, 3], samples=None),
     "atlas.Atlas.to_parquet": E(lambda: functools.partial(_small_atlas().to_parquet, _new_dir()),
@@ -1277,16 +1345,41 @@ CASES.update({
                               "iterations": "count"},
                              target=_SQUARE, starts=2, goal=0.5, samples=32, iterations=3),
     "atlas.sphere_signature": E(lambda: at.sphere_signature,
-                                {"points": "vec3", "harmonics": "count", "samples": "count", "resampled": "bool"},
-                                points=_SPHERE_CURVE, harmonics=3, samples=16, resampled=False),
+                                {"points": "vec3", "harmonics": "count", "samples": "count", "resampled": "bool",
+                                 "closed": "bool"},
+                                points=_SPHERE_CURVE, harmonics=3, samples=16, resampled=False, closed=True),
     "atlas.build_sphere_atlas": E(lambda: at.build_sphere_atlas,
                                   {"n": "count", "seed": "seed", "harmonics": "count", "samples": "count",
                                    "arcs": ("scalar", lambda v: (v, 1.4)),
-                                   "coupler_arc": ("scalar", lambda v: (v, 1.2))},
-                                  n=3, seed=1, harmonics=3, samples=16, arcs=(0.15, 1.4), coupler_arc=(0.1, 1.2)),
+                                   "coupler_arc": ("scalar", lambda v: (v, 1.2)), "min_transmission": "scalar",
+                                   "block": "count", "progress": "bool", "resume": "bool"},
+                                  n=3, seed=1, harmonics=3, samples=16, arcs=(0.15, 1.4), coupler_arc=(0.1, 1.2),
+                                  min_transmission=0.0, block=64, progress=False, resume=False),
     "atlas.query_sphere": E(lambda: functools.partial(at.query_sphere, _small_sphere_atlas()),
-                            {"target": "vec3", "k": "count", "shortlist": "count", "resampled": "bool"},
-                            target=_SPHERE_CURVE, k=1, shortlist=4, resampled=False),
+                            {"target": "vec3", "k": "count", "shortlist": "count", "resampled": "bool",
+                             "closed": "bool", "span": "scalar", "starts": "count"},
+                            target=_SPHERE_CURVE, k=1, shortlist=4, resampled=False, closed=True, span=0.5, starts=4),
+    "atlas.refine_sphere": E(lambda: functools.partial(at.refine_sphere, _sphere_match()),
+                             {"target": "vec3", "samples": "count", "iterations": "count"},
+                             target=_SPHERE_CURVE, samples=16, iterations=2),
+    "atlas.find_sphere_linkages": E(lambda: functools.partial(at.find_sphere_linkages, _small_sphere_atlas()),
+                                    {"target": "vec3", "starts": "count", "goal": "scalar?", "samples": "count",
+                                     "iterations": "count"},
+                                    target=_SPHERE_CURVE, starts=1, goal=0.5, samples=16, iterations=2),
+    "atlas.sample_sphere_fourbars": E(lambda: at.sample_sphere_fourbars,
+                                      {"n": "count", "seed": "seed", "arcs": ("scalar", lambda v: (v, 1.4)),
+                                       "coupler_arc": ("scalar", lambda v: (v, 1.2)), "branch": "branch?",
+                                       "min_transmission": "scalar"},
+                                      n=10, seed=3, arcs=(0.15, 1.4), coupler_arc=(0.1, 1.2), branch=None,
+                                      min_transmission=0.1),
+    "atlas.SphereSamples.take": E(lambda: at.sample_sphere_fourbars(10).take, {"index": "int"}, index=[1, 2]),
+    "atlas.SphereSamples.columns": E(lambda: at.sample_sphere_fourbars(10).columns),
+    "atlas.SphereSamples.fourbar": E(lambda: _small_sphere_atlas().linkages.fourbar, {"i": "int", "frame": "matrix?"},
+                                     i=1, frame=None),
+    "atlas.SphereSamples.curves": E(lambda: _small_sphere_atlas().linkages.curves, {"samples": "count"}, samples=16),
+    "atlas.SphereAtlas.to_parquet": E(lambda: functools.partial(_small_sphere_atlas().to_parquet, _new_dir()),
+                                      {"append": "bool"}, append=False),
+    "atlas.SphereAtlas.from_parquet": E(lambda: functools.partial(at.SphereAtlas.from_parquet, _sphere_atlas_dir())),
     "atlas.SphereAtlas.fourbar": E(lambda: _small_sphere_atlas().fourbar, {"i": "int"}, i=1),
     "atlas.SphereAtlas.curves": E(lambda: _small_sphere_atlas().curves, {"samples": "count?"},
                                   index=[0, 1], samples=None),
@@ -1294,7 +1387,110 @@ CASES.update({
                                    {"z": "point"}, z=[0.0, 1 + 1j]),
 })
 RECORDS.update({f"atlas.{n}": "result record built by the package"
-                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "SphereAtlas", "SphereMatch")})
+                for n in ("Atlas", "FourBarSamples", "Match", "PlacedLinkage", "PlacedSliderCrank",
+                          "SliderCrankSamples", "SphereAtlas", "SphereMatch", "SphereSamples")})
+
+
+# ----------------------------------------------------------------------------- spherical guidance (issue 15)
+def _sg_set(n):
+    axes = [[0, 0, 1], [0.2, 0.1, 1], [-0.3, 0.2, 1], [0.1, -0.4, 1], [0.5, 0.3, 1]]
+    angles = [0.0, 0.5, 1.0, 1.4, 1.9]
+    return np.stack([sph.rotation_matrix(a, t) for a, t in zip(axes[:n], angles[:n])])
+
+
+def _sg_five():
+    rng = np.random.default_rng(3)
+    return np.stack([sph.rotation_matrix(rng.normal(size=3), rng.uniform(0.1, 1.2)) for _ in range(5)])
+
+
+def _sg_slider():
+    curve = sph.slider_point_curve(_sg_set(3), samples=12)
+    return curve.dyad(*np.argwhere(curve.valid)[0])
+
+
+def _sg_crank():
+    return sph.dyad_for_circle_point(_sg_set(3), [0.3, 0.2, 0.93])
+
+
+_SGZ = [0.3, 0.2, 0.93]
+CASES.update({
+    "spherical.relative_rotation": E(lambda: sph.relative_rotation, {"R_1": "matrix", "R_j": "matrix"},
+                                     R_1=np.eye(3), R_j=_sg_set(2)[1]),
+    "spherical.rotation_pole": E(lambda: sph.rotation_pole, {"R_1": "matrix", "R_j": "matrix"},
+                                 R_1=np.eye(3), R_j=_sg_set(2)[1]),
+    "spherical.pole_triangle": E(lambda: sph.pole_triangle, {"R": "matrix"}, R=_sg_set(3)),
+    "spherical.crank_residual": E(lambda: sph.crank_residual,
+                                  {"R_1": "matrix", "R_j": "matrix", "circle_point": "vec3", "centre_point": "vec3"},
+                                  R_1=np.eye(3), R_j=_sg_set(2)[1], circle_point=_SGZ, centre_point=[0, 0, 1]),
+    "spherical.slider_residual": E(lambda: sph.slider_residual,
+                                   {"R_j": "matrix", "slider_point": "vec3", "guide_pole": "vec3"},
+                                   R_j=_sg_set(2)[1], slider_point=_SGZ, guide_pole=[0, 0, 1]),
+    "spherical.planar_orientations": E(lambda: sph.planar_orientations,
+                                       {"theta": "real", "d": "point", "scale": "scalar"},
+                                       theta=[0.0, 0.5], d=[0.0, 2 + 1j], scale=1e-3),
+    "spherical.dyad_for_circle_point": E(lambda: sph.dyad_for_circle_point,
+                                         {"R": "matrix", "circle_point": "vec3", "along": "scalar"},
+                                         R=_sg_set(3), circle_point=_SGZ, along=0.0),
+    "spherical.dyad_for_centre_point": E(lambda: sph.dyad_for_centre_point,
+                                         {"R": "matrix", "centre_point": "vec3", "along": "scalar"},
+                                         R=_sg_set(2), centre_point=[0.1, -0.2, 0.97], along=0.3),
+    "spherical.slider_dyad_for_point": E(lambda: sph.slider_dyad_for_point,
+                                         {"R": "matrix", "slider_point": "vec3", "rtol": "scalar"},
+                                         R=_sg_set(2), slider_point=_SGZ, rtol=1e-9),
+    "spherical.circle_point_curve": E(lambda: sph.circle_point_curve,
+                                      {"R": "matrix", "samples": "count", "phi": "real?"},
+                                      R=_sg_set(4), samples=24, phi=None),
+    "spherical.slider_point_curve": E(lambda: sph.slider_point_curve,
+                                      {"R": "matrix", "samples": "count", "phi": "real?"},
+                                      R=_sg_set(3), samples=24, phi=None),
+    "spherical.SphericalBurmesterCurve.dyad": E(lambda: sph.circle_point_curve(_sg_set(4), samples=24).dyad,
+                                                {"i": "int", "k": "int"}, i=0, k=0),
+    "spherical.slider_dyads": E(lambda: sph.slider_dyads, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_set(4),
+                                imag_tol=1e-6),
+    "spherical.burmester": E(lambda: sph.burmester, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_five(),
+                             imag_tol=1e-6),
+    "spherical.guidance_fourbars": E(lambda: sph.guidance_fourbars,
+                                     {"R": "matrix", "rtol": "scalar", "dyads": "instance?"},
+                                     R=_sg_five(), rtol=1e-9, dyads=None),
+    "spherical.guidance_slider_crank": E(lambda: sph.guidance_slider_crank,
+                                         {"R": "matrix", "crank": "instance", "slider": "instance", "rtol": "scalar"},
+                                         R=_sg_set(3), crank=_sg_crank(), slider=_sg_slider(), rtol=1e-9),
+    "spherical.SphericalGuidanceFourBar.coupler_orientations": E(
+        lambda: sph.guidance_fourbars(_sg_five()).candidates[0].coupler_orientations, {"theta_input": "real"},
+        theta_input=[0.1, 0.4]),
+})
+
+
+def _sg_nine():
+    """Nine coupler orientations of a crank-rocker (as in tests/spherical/test_spherical_optimal.py)."""
+    lk = sph.SphericalFourBar(0.35, 0.75, 0.6, 0.8)
+    pose = lk.solve(np.linspace(0.3, 2.6, 9))
+    zB, zC = np.array([0.0, 0.0, 1.0]), np.array([np.sin(0.75), 0.0, np.cos(0.75)])
+
+    def frame(p, q):
+        t = q - np.sum(p * q, axis=-1, keepdims=True) * p
+        t = t / np.linalg.norm(t, axis=-1, keepdims=True)
+        return np.stack([p, t, np.cross(p, t)], axis=-1)
+    return frame(pose.B, pose.C) @ frame(zB, zC).T
+
+
+CASES.update({
+    "spherical.guidance_motion": E(lambda: sph.guidance_motion, {"design": "instance", "theta_input": "real"},
+                                   design=sph.guidance_fourbars(_sg_five()).candidates[0], theta_input=[0.1, 0.4]),
+    "spherical.optimal_guidance": E(lambda: sph.optimal_guidance,
+                                    {"R": "matrix", "start": "instance?", "objective": "option",
+                                     "theta_input": "real?", "rtol": "scalar"},
+                                    R=_sg_nine(), start=None, objective="orientation",
+                                    theta_input=np.linspace(0.0, 2.3, 9), rtol=1e-2),
+    "spherical.minimax": E(lambda: sph.minimax,
+                           {"x": "real", "y": "real", "theta0": "scalar", "psi0": "scalar", "start": "instance?",
+                            "tol": "scalar", "max_iter": "count"},
+                           x=np.linspace(0.0, 1.0, 41), y=0.5 * np.sin(np.linspace(0.0, 1.0, 41)),
+                           theta0=0.7, psi0=1.4, start=None, tol=1e-10, max_iter=40),
+})
+RECORDS.update({f"spherical.{n}": "result record built by the package" for n in (
+    "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar",
+    "SphericalGuidanceMotion", "SphericalOptimalGuidance")})
 
 
 # ----------------------------------------------------------------------------- the walk
@@ -1621,6 +1817,7 @@ def _motion_calls():
         "Linkage": lambda t, w, a: _linkage().solve(t, order=2, omega=w, alpha=a),
         "RSSR": lambda t, w, a: _rssr().solve(t, order=2, omega=w, alpha=a),
         "SphericalFourBar": lambda t, w, a: _sfb().solve(t, order=2, omega=w, alpha=a),
+        "SphericalLinkage": lambda t, w, a: _sph_sixbar().solve(t, order=2, omega=w, alpha=a),
     }
 
 
@@ -1716,75 +1913,3 @@ def test_hooke_acceleration_huge_speed_at_a_stationary_angle():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert sp.hooke_acceleration(0.0, 0.5, omega=1e200) == 0.0
-
-
-# ----------------------------------------------------------------------------- spherical guidance (issue 15)
-def _sg_set(n):
-    axes = [[0, 0, 1], [0.2, 0.1, 1], [-0.3, 0.2, 1], [0.1, -0.4, 1], [0.5, 0.3, 1]]
-    angles = [0.0, 0.5, 1.0, 1.4, 1.9]
-    return np.stack([sph.rotation_matrix(a, t) for a, t in zip(axes[:n], angles[:n])])
-
-
-def _sg_five():
-    rng = np.random.default_rng(3)
-    return np.stack([sph.rotation_matrix(rng.normal(size=3), rng.uniform(0.1, 1.2)) for _ in range(5)])
-
-
-def _sg_slider():
-    curve = sph.slider_point_curve(_sg_set(3), samples=12)
-    return curve.dyad(*np.argwhere(curve.valid)[0])
-
-
-def _sg_crank():
-    return sph.dyad_for_circle_point(_sg_set(3), [0.3, 0.2, 0.93])
-
-
-_SGZ = [0.3, 0.2, 0.93]
-CASES.update({
-    "spherical.relative_rotation": E(lambda: sph.relative_rotation, {"R_1": "matrix", "R_j": "matrix"},
-                                     R_1=np.eye(3), R_j=_sg_set(2)[1]),
-    "spherical.rotation_pole": E(lambda: sph.rotation_pole, {"R_1": "matrix", "R_j": "matrix"},
-                                 R_1=np.eye(3), R_j=_sg_set(2)[1]),
-    "spherical.pole_triangle": E(lambda: sph.pole_triangle, {"R": "matrix"}, R=_sg_set(3)),
-    "spherical.crank_residual": E(lambda: sph.crank_residual,
-                                  {"R_1": "matrix", "R_j": "matrix", "circle_point": "vec3", "centre_point": "vec3"},
-                                  R_1=np.eye(3), R_j=_sg_set(2)[1], circle_point=_SGZ, centre_point=[0, 0, 1]),
-    "spherical.slider_residual": E(lambda: sph.slider_residual,
-                                   {"R_j": "matrix", "slider_point": "vec3", "guide_pole": "vec3"},
-                                   R_j=_sg_set(2)[1], slider_point=_SGZ, guide_pole=[0, 0, 1]),
-    "spherical.planar_orientations": E(lambda: sph.planar_orientations,
-                                       {"theta": "real", "d": "point", "scale": "scalar"},
-                                       theta=[0.0, 0.5], d=[0.0, 2 + 1j], scale=1e-3),
-    "spherical.dyad_for_circle_point": E(lambda: sph.dyad_for_circle_point,
-                                         {"R": "matrix", "circle_point": "vec3", "along": "scalar"},
-                                         R=_sg_set(3), circle_point=_SGZ, along=0.0),
-    "spherical.dyad_for_centre_point": E(lambda: sph.dyad_for_centre_point,
-                                         {"R": "matrix", "centre_point": "vec3", "along": "scalar"},
-                                         R=_sg_set(2), centre_point=[0.1, -0.2, 0.97], along=0.3),
-    "spherical.slider_dyad_for_point": E(lambda: sph.slider_dyad_for_point,
-                                         {"R": "matrix", "slider_point": "vec3", "rtol": "scalar"},
-                                         R=_sg_set(2), slider_point=_SGZ, rtol=1e-9),
-    "spherical.circle_point_curve": E(lambda: sph.circle_point_curve,
-                                      {"R": "matrix", "samples": "count", "phi": "real?"},
-                                      R=_sg_set(4), samples=24, phi=None),
-    "spherical.slider_point_curve": E(lambda: sph.slider_point_curve,
-                                      {"R": "matrix", "samples": "count", "phi": "real?"},
-                                      R=_sg_set(3), samples=24, phi=None),
-    "spherical.SphericalBurmesterCurve.dyad": E(lambda: sph.circle_point_curve(_sg_set(4), samples=24).dyad,
-                                                {"i": "int", "k": "int"}, i=0, k=0),
-    "spherical.slider_dyads": E(lambda: sph.slider_dyads, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_set(4),
-                                imag_tol=1e-6),
-    "spherical.burmester": E(lambda: sph.burmester, {"R": "matrix", "imag_tol": "scalar"}, R=_sg_five(),
-                             imag_tol=1e-6),
-    "spherical.guidance_fourbars": E(lambda: sph.guidance_fourbars,
-                                     {"R": "matrix", "rtol": "scalar", "dyads": "instance?"},
-                                     R=_sg_five(), rtol=1e-9, dyads=None),
-    "spherical.guidance_slider_crank": E(lambda: sph.guidance_slider_crank,
-                                         {"R": "matrix", "crank": "instance", "slider": "instance", "rtol": "scalar"},
-                                         R=_sg_set(3), crank=_sg_crank(), slider=_sg_slider(), rtol=1e-9),
-    "spherical.SphericalGuidanceFourBar.coupler_orientations": E(
-        lambda: sph.guidance_fourbars(_sg_five()).candidates[0].coupler_orientations, {"theta_input": "real"},
-        theta_input=[0.1, 0.4]),
-})
-RECORDS.update({f"spherical.{n}": "result record built by the package" for n in (
-    "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar")})

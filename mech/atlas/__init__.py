@@ -6,7 +6,11 @@ Layers, each usable alone:
   that does not depend on where a curve lies, its size, its turn, its start or its direction
   (derivation page :ref:`deriv-shape-signature`);
 - a sampled design space of planar four-bars (`sample_fourbars`, `FourBarSamples`) with
-  the Grashof type, assembly branch, input range and minimum transmission angle of each;
+  the Grashof type, assembly branch, input range and minimum transmission angle of each,
+  and one of slider-cranks with a coupler point on the rod (`sample_slider_cranks`,
+  `SliderCrankSamples`; ``build_atlas(..., mechanism="slider-crank")``, searched by the
+  same `query`, whose matches then carry a `PlacedSliderCrank` and its one cognate
+  slider-crank);
 - the atlas itself (`build_atlas`, `Atlas`, stored as Parquet through pyarrow) and its
   search (`query`, returning `Match` records placed on the target, with the two
   Roberts-Chebyshev cognates of each match; an open arc is matched against parts of
@@ -15,8 +19,10 @@ Layers, each usable alone:
 - builds in blocks (`build_atlas`), on a Dask cluster if asked, written part by part to a
   folder and resumable;
 - on the sphere: `sphere_signature` (invariant to rotations of the sphere, start and
-  direction; :ref:`deriv-sphere-signature`), `build_sphere_atlas` and `query_sphere` for
-  spherical four-bars whose crank turns fully.
+  direction; :ref:`deriv-sphere-signature`), `sample_sphere_fourbars` (full-turn and
+  rocking inputs, type, branch, minimum transmission angle), `build_sphere_atlas` (blocks,
+  Dask, Parquet, resumable), `SphereAtlas`, `query_sphere` (closed curves and open arcs),
+  `refine_sphere` and `find_sphere_linkages`.
 
 ``import mech.atlas`` loads NumPy only: pyarrow is imported when an atlas is saved or
 loaded, tqdm when a build shows a progress bar, Dask only by the code that makes a client.
@@ -26,9 +32,14 @@ from mech.atlas._signature import curve_signature, read_points, resample
 from mech.atlas._sampling import FourBarSamples, sample_fourbars
 from mech.atlas._store import ATLAS_VERSION, Atlas
 from mech.atlas._build import build_atlas
-from mech.atlas._search import Match, PlacedLinkage, query, refine
+from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query, refine
+from mech.atlas._slider import SliderCrankSamples, sample_slider_cranks
 from mech.atlas._multistart import find_linkages
-from mech.atlas._sphere import SphereAtlas, SphereMatch, build_sphere_atlas, query_sphere, sphere_signature
+from mech.atlas._sphere_signature import sphere_signature
+from mech.atlas._sphere_sampling import SphereSamples, sample_sphere_fourbars
+from mech.atlas._sphere_store import SPHERE_ATLAS_VERSION, SphereAtlas
+from mech.atlas._sphere_build import build_sphere_atlas
+from mech.atlas._sphere_search import SphereMatch, find_sphere_linkages, query_sphere, refine_sphere
 
 __all__ = [
     "ATLAS_VERSION",
@@ -36,17 +47,25 @@ __all__ = [
     "FourBarSamples",
     "Match",
     "PlacedLinkage",
+    "PlacedSliderCrank",
+    "SPHERE_ATLAS_VERSION",
+    "SliderCrankSamples",
     "SphereAtlas",
     "SphereMatch",
+    "SphereSamples",
     "build_atlas",
     "build_sphere_atlas",
     "curve_signature",
     "find_linkages",
+    "find_sphere_linkages",
     "query",
     "query_sphere",
     "read_points",
     "refine",
+    "refine_sphere",
     "resample",
     "sample_fourbars",
+    "sample_slider_cranks",
+    "sample_sphere_fourbars",
     "sphere_signature",
 ]

@@ -2,12 +2,14 @@
 
     python -m mech.atlas build ATLAS_DIR -n 10000 [--seed 0] [--min-transmission DEG]
                                           [--resume | --append] [--dask local:2 | --dask tcp://host:8786]
+                                          [--mechanism four-bar | --mechanism slider-crank]
     python -m mech.atlas query ATLAS_DIR points.csv [-k 5] [--open] [--plot out.png]
 
 ``build`` samples four-bars in blocks and computes their signatures with a progress bar,
 writing each block as a Parquet part (``--resume`` continues a stopped build; ``--append``
 adds one part built with another seed to an atlas); ``--dask`` computes the blocks on a
-Dask cluster, with the same result. ``query`` reads a target curve (closed, or an open arc
+Dask cluster, with the same result; ``--mechanism slider-crank`` samples slider-cranks with
+a coupler point on the rod instead. ``query`` reads a target curve (closed, or an open arc
 with ``--open``) from a CSV file of ``x, y`` rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
 draws them over the target (Matplotlib).
 """
@@ -28,7 +30,8 @@ def _build(args):
         raise ValueError("Expected one of --append and --resume, got both")
     started = time.perf_counter()
     options = dict(seed=args.seed, harmonics=args.harmonics, samples=args.samples, block=args.block,
-                   min_transmission=math.radians(args.min_transmission), progress=not args.quiet)
+                   min_transmission=math.radians(args.min_transmission), progress=not args.quiet,
+                   mechanism=args.mechanism)
     with _client(args.dask) as client:
         if args.append:
             atlas = build_atlas(args.n, client=client, **options)
@@ -56,7 +59,7 @@ def _client(spec):
         _, _, count = spec.partition(":")
         if not (count or "2").isdigit() or int(count or "2") < 1:
             raise ValueError(f"Expected --dask local:N with N >= 1 workers, got {spec!r}")
-        with LocalCluster(n_workers=int(count or "2"), threads_per_worker=1, dashboard_address=None) as cluster, \
+        with LocalCluster(n_workers=int(count or "2"), threads_per_worker=1, dashboard_address=":0") as cluster, \
                 Client(cluster) as client:
             yield client
     else:
@@ -65,6 +68,19 @@ def _client(spec):
 
 
 def _describe(m):
+    if hasattr(m.linkage, "slider"):
+        sc, (p, q) = m.linkage.slider, m.linkage.coupler
+        (A,), (G, u) = m.linkage.pivots, m.linkage.guide
+        return "\n".join([
+            f"#{m.rank}  row {m.index}  {m.kind}  error {m.error:.4g} ({100 * m.relative_error:.3g} %)  "
+            f"gamma_min {math.degrees(m.gamma_min):.1f} deg  "
+            f"{'full turn' if m.full_turn else 'rocking %.1f..%.1f deg' % tuple(map(math.degrees, m.theta_range))}",
+            f"    slider-crank  a={sc.a:.5g} b={sc.b:.5g} e={sc.e:.5g} p={p:.5g} q={q:.5g} branch={sc.branch:+d}  "
+            f"A=({A.real:.5g}, {A.imag:.5g})  guide through ({G.real:.5g}, {G.imag:.5g}) "
+            f"along ({u.real:.5g}, {u.imag:.5g})"]
+            + [f"    cognate  a={c.slider.a:.5g} b={c.slider.b:.5g} e={c.slider.e:.5g} p={c.coupler[0]:.5g} "
+               f"q={c.coupler[1]:.5g}  guide through ({c.guide[0].real:.5g}, {c.guide[0].imag:.5g}) "
+               f"along ({c.guide[1].real:.5g}, {c.guide[1].imag:.5g})" for c in m.cognates])
     f = m.linkage.fourbar
     A, D = m.linkage.pivots
     lines = [f"#{m.rank}  row {m.index}  {m.kind}  error {m.error:.4g} ({100 * m.relative_error:.3g} %)  "
@@ -107,9 +123,9 @@ def _plot(target, matches, path):
     ax.plot(target.real, target.imag, "k.", ms=3, label="target")
     for m in matches:
         curve = m.curve if m.arc is not None else np.append(m.curve, m.curve[0])
-        A, D = m.linkage.pivots
+        pivots = np.asarray(m.linkage.pivots)
         line, = ax.plot(curve.real, curve.imag, lw=1, label=f"#{m.rank} ({m.kind})")
-        ax.plot([A.real, D.real], [A.imag, D.imag], "^", color=line.get_color())
+        ax.plot(pivots.real, pivots.imag, "^", color=line.get_color())
     ax.set_aspect("equal")
     ax.legend(fontsize=8)
     fig.savefig(path, dpi=120)
@@ -127,6 +143,8 @@ def main(argv=None):
     b.add_argument("--samples", type=int, default=128)
     b.add_argument("--min-transmission", type=float, default=0.0, help="degrees")
     b.add_argument("--block", type=int, default=4096, help="linkages drawn per block (default 4096)")
+    b.add_argument("--mechanism", choices=["four-bar", "slider-crank"], default="four-bar",
+                   help="linkages of the atlas (default four-bar)")
     b.add_argument("--append", action="store_true", help="add a part to an existing atlas")
     b.add_argument("--resume", action="store_true", help="continue a stopped build (same settings)")
     b.add_argument("--dask", metavar="CLUSTER",

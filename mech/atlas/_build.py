@@ -18,9 +18,10 @@ from contextlib import closing
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
-from mech.atlas._sampling import COUPLER, LENGTHS, FourBarSamples, coupler_curves, sample_fourbars
+from mech.atlas._sampling import COUPLER, LENGTHS, coupler_curves, sample_fourbars
 from mech.atlas._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
-from mech.atlas._store import _COLUMNS, ATLAS_VERSION, Atlas, _folder, read_chunk, write_part
+from mech.atlas._slider import OFFSETS, RODS, check_mechanism, sample_slider_cranks
+from mech.atlas._store import ATLAS_VERSION, Atlas, _folder, columns_of, read_chunk, write_part
 
 __all__ = ["build_atlas"]
 
@@ -40,13 +41,18 @@ def block_seed(seed, index):
     return int(np.random.SeedSequence([seed, index]).generate_state(1, dtype=np.uint64)[0] >> 1)
 
 
-def build_block(seed, index, block, harmonics, samples, lengths, coupler, min_transmission):
+def build_block(seed, index, block, harmonics, samples, lengths, coupler, min_transmission, mechanism="four-bar",
+                offsets=OFFSETS):
     """Block `index` of a build: its usable linkages (as a dict of columns) and their signatures.
 
     A pure function of its arguments (the unit of work of a Dask build).
     """
-    drawn = sample_fourbars(block, seed=block_seed(seed, index), lengths=lengths, coupler=coupler,
-                            min_transmission=min_transmission)
+    if mechanism == "slider-crank":
+        drawn = sample_slider_cranks(block, seed=block_seed(seed, index), rods=lengths, offsets=offsets,
+                                     coupler=coupler, min_transmission=min_transmission)
+    else:
+        drawn = sample_fourbars(block, seed=block_seed(seed, index), lengths=lengths, coupler=coupler,
+                                min_transmission=min_transmission)
     good = drawn.take(drawn.usable)
     sig, _ = signatures_of(good, harmonics, samples)
     finite = np.all(np.isfinite(sig), axis=1)          # a pose that did not assemble
@@ -84,9 +90,10 @@ def _blocks(start, work, client):
         pending.clear()
 
 
-def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENGTHS, coupler=COUPLER,
-                min_transmission=0.0, block=4096, progress=False, client=None, path=None, resume=False):
-    """Build an atlas of `n` usable four-bars with the signatures of their coupler curves.
+def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None, coupler=COUPLER,
+                min_transmission=0.0, block=4096, progress=False, client=None, path=None, resume=False,
+                mechanism="four-bar", offsets=OFFSETS):
+    """Build an atlas of `n` usable four-bars (or slider-cranks) with the signatures of their coupler curves.
 
     Samples are drawn by `sample_fourbars` in blocks of `block`, block ``i`` with a seed
     derived from ``(seed, i)``; those that cannot move or whose minimum transmission angle is
@@ -104,7 +111,9 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENG
         Signature settings (see `curve_signature`); `samples` is also the number of input
         steps along each coupler curve.
     lengths, coupler : tuple, optional
-        The design space (see `sample_fourbars`).
+        The design space (see `sample_fourbars`); for slider-cranks `lengths` is the range
+        of the rod over the crank (`sample_slider_cranks`'s `rods`). By default
+        ``(0.2, 5.0)`` for four-bars, ``(0.3, 5.0)`` for slider-cranks.
     min_transmission : float, optional
         Keep only linkages whose `gamma_min` is at least this, radians in [0, pi/2]; any
         value above 0 keeps only linkages whose crank turns fully.
@@ -120,6 +129,11 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENG
     resume : bool, optional
         With `path`: continue a stopped build of the same settings, skipping the blocks on
         disk. Without it the folder must not hold an atlas yet.
+    mechanism : {"four-bar", "slider-crank"}, optional
+        The linkages of the atlas: four-bars (`sample_fourbars`) or slider-cranks with a
+        coupler point on the rod (`sample_slider_cranks`); `query` searches either.
+    offsets : (float, float), optional
+        For slider-cranks: the range of the guide's offset over the crank.
 
     Returns
     -------
@@ -146,6 +160,9 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENG
     (200, (200, 32), 1)
     >>> bool(atlas.linkages.usable.all())
     True
+    >>> sliders = build_atlas(100, seed=5, mechanism="slider-crank", min_transmission=0.3)
+    >>> sliders.settings["mechanism"], bool(sliders.linkages.full_turn.all())
+    ('slider-crank', True)
     """
     n = integer("n", n, minimum=1, maximum=10**7)
     seed = integer("seed", seed, minimum=0)
@@ -155,7 +172,19 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENG
     progress = bool_flag("progress", progress)
     resume = bool_flag("resume", resume)
     min_transmission = nonnegative_number("min_transmission", min_transmission)
-    sample_fourbars(0, lengths=lengths, coupler=coupler, min_transmission=min_transmission)  # checks
+    mechanism = check_mechanism(mechanism)
+    slider = mechanism == "slider-crank"
+    if lengths is None:
+        lengths = RODS if slider else LENGTHS
+    if slider:
+        from mech.atlas._sampling import _box
+
+        if not _box("lengths", lengths, 2)[0] > 0.0:
+            raise ValueError(f"Expected `lengths` > 0, got {_show(lengths)}")
+        sample_slider_cranks(0, rods=lengths, offsets=offsets, coupler=coupler,
+                             min_transmission=min_transmission)  # checks
+    else:
+        sample_fourbars(0, lengths=lengths, coupler=coupler, min_transmission=min_transmission)  # checks
     if client is not None and not (callable(getattr(client, "submit", None))
                                    and callable(getattr(client, "nthreads", None))):
         raise TypeError(f"Expected `client` to be a dask.distributed Client, got {_show(client)}")
@@ -164,19 +193,23 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENG
     lengths, coupler = list(map(float, lengths)), list(map(float, coupler))
     settings = {"version": ATLAS_VERSION, "harmonics": harmonics, "samples": samples, "lengths": lengths,
                 "coupler": coupler, "min_transmission": min_transmission, "block": block}
+    offsets = list(map(float, offsets)) if slider else None
+    if slider:
+        settings.update(mechanism=mechanism, offsets=offsets)
+    names, record = columns_of(mechanism)
     build = {"seed": seed, "n": n, "block": block}
     folder = None if path is None else _folder(path)
     done, total = (_done_blocks(folder, settings, build, resume) if folder is not None else (-1, 0))
 
     def work(index):
-        return seed, index, block, harmonics, samples, lengths, coupler, min_transmission
+        return seed, index, block, harmonics, samples, lengths, coupler, min_transmission, mechanism, offsets
 
     kept, sigs = [], []
     started = time.perf_counter()
     with _bar(progress, n, total) as bar, closing(_blocks(done + 1, work, client)) as blocks:
         for index, cols, sig in (blocks if total < n else ()):
             take = min(len(sig), n - total)
-            rows = FourBarSamples(**{k: v[:take] for k, v in cols.items()})
+            rows = record(**{k: v[:take] for k, v in cols.items()})
             if folder is not None and take:
                 folder.mkdir(parents=True, exist_ok=True)
                 write_part(folder / f"part-{index:05d}.parquet", rows, sig[:take], np.full(take, seed), settings,
@@ -194,9 +227,9 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=LENG
                                  f"min_transmission={min_transmission!r}: none in {index} blocks")
     if folder is not None:
         return Atlas.from_parquet(folder)
-    cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in _COLUMNS}
+    cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in names}
     settings["build_seconds"] = round(time.perf_counter() - started, 3)
-    return Atlas(FourBarSamples(**cols), np.concatenate(sigs), np.full(total, seed, dtype=np.int64), settings)
+    return Atlas(record(**cols), np.concatenate(sigs), np.full(total, seed, dtype=np.int64), settings)
 
 
 def _done_blocks(folder, settings, build, resume):

@@ -170,7 +170,12 @@ def coupler_points(cols, u):
 
     ``u`` runs over [0, 2 pi) once around each closed curve: the input angle for a full
     turn, ``theta = mid + half * sin(u)`` on ``branch * sign(cos u)`` for a rocking input.
+    Columns with an offset ``e`` are slider-cranks (`mech.atlas._slider.slider_points`).
     """
+    if "e" in cols:
+        from mech.atlas._slider import slider_points
+
+        return slider_points(cols, u)
     a, b, c, d, p, q = (np.asarray(cols[k], dtype=float)[:, None] for k in "abcdpq")
     branch = np.asarray(cols["branch"])[:, None]
     full = np.asarray(cols["full_turn"])[:, None]

@@ -18,7 +18,7 @@ from mech.atlas._signature import _close_arc, _curves, _resample_rows, _samples,
 from mech.atlas._store import Atlas
 from mech.planar.kinematics._fourbar import FourBar
 
-__all__ = ["Match", "PlacedLinkage", "query", "refine"]
+__all__ = ["Match", "PlacedLinkage", "PlacedSliderCrank", "query", "refine"]
 
 _BLOCK = 1 << 15
 _UPSAMPLE = 16
@@ -67,6 +67,49 @@ class PlacedLinkage:
 
 
 @dataclass(frozen=True)
+class PlacedSliderCrank:
+    """A slider-crank with a coupler point, in its standard frame, and the similarity that places it.
+
+    Attributes
+    ----------
+    name : str
+        "slider-crank" for the match itself, "cognate" for its Roberts cognate.
+    slider : SliderCrank
+        The linkage at the target's scale in its standard frame (crank pivot A = 0, guide
+        the line y = e run in +x), as `mech.planar.SliderCrank`.
+    coupler : (float, float)
+        The coupler point ``(p, q)`` on the rod at the target's scale,
+        ``P = B + (p + 1j*q) * exp(1j*phi)``.
+    origin : complex
+        Where the crank pivot A lies in the target's frame.
+    rotation : float
+        Angle of the guide's +x direction in the target's frame, radians.
+    """
+
+    name: str
+    slider: object
+    coupler: tuple
+    origin: complex
+    rotation: float
+
+    def place(self, z):
+        """Map standard-frame points `z` into the target's frame: ``origin + exp(1j*rotation)*z``."""
+        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
+
+    @property
+    def pivots(self):
+        """The crank pivot A in the target's frame (one ground pivot)."""
+        return (self.origin,)
+
+    @property
+    def guide(self):
+        """The guide line in the target's frame: ``(point, direction)``, the foot of the
+        perpendicular from A and a unit complex number along +x of the standard frame."""
+        turn = np.exp(1j * self.rotation)
+        return complex(self.origin + turn * 1j * self.slider.e), complex(turn)
+
+
+@dataclass(frozen=True)
 class Match:
     """One linkage found by `query`, placed on the target.
 
@@ -76,11 +119,14 @@ class Match:
         0 for the best match.
     index : int
         Its row in the atlas.
-    linkage : PlacedLinkage
-        The match, scaled and placed so that its coupler curve lies on the target.
+    linkage : PlacedLinkage or PlacedSliderCrank
+        The match, scaled and placed so that its coupler curve lies on the target (a
+        `PlacedSliderCrank` for an atlas of slider-cranks).
     cognates : tuple of PlacedLinkage
         Its two Roberts-Chebyshev cognates AEGK and DFHK, placed on the target (they trace
-        the same curve); empty if the coupler point lies on a pin (no cognates).
+        the same curve); empty if the coupler point lies on a pin (no cognates). For a
+        slider-crank, its one cognate slider-crank (Roberts' law), a `PlacedSliderCrank`
+        named "cognate"; the four-bar's second cognate degenerates there.
     direction : int
         +1 if the target is run in the direction of the stored curve (input angle
         increasing along the curve as sampled), -1 if against it.
@@ -126,6 +172,38 @@ class Match:
     curve: np.ndarray
     refined: bool = False
     arc: tuple = None
+
+
+def slider_cognate(placed):
+    """The Roberts cognate of a placed slider-crank: one slider-crank tracing the same curve.
+
+    With ``w = (p + i q) / b``, the coupler point is ``P = B + w (C - B)`` (standard frame).
+    The parallelogram A, B, P, E gives a crank ``E = w (C - B)`` about A, and the point
+    ``F = w C`` of the link EP runs on the line ``w (x + i e)``: the original guide turned
+    by ``arg w`` and scaled by ``|w|``. In its own frame (turned by ``arg w``) the cognate
+    has crank ``|w| b``, rod ``|w| a``, offset ``|w| e`` and coupler point
+    ``a conj(w) / |w|`` on its rod EF; driven at the original rod's angle ``phi`` it puts
+    its coupler point on P, pose by pose. Its rod turns with the original crank, so a
+    cognate of a crank that turns fully rocks (``|w| a < |w| b + |w e|``) and changes
+    assembly branch at its dead centres (branch ``sign(cos theta)``, theta the original
+    crank angle); the second four-bar cognate degenerates (both pivots at infinity).
+
+    Returns
+    -------
+    tuple of PlacedSliderCrank
+        One cognate named "cognate", placed on the same target; empty if P lies on the
+        crank pin B (``w = 0``).
+    """
+    from mech.planar.kinematics._slider_crank import SliderCrank
+
+    sc = placed.slider
+    w = complex(*placed.coupler) / sc.b
+    m = abs(w)
+    if m < 1e-12:
+        return ()
+    cog = SliderCrank(m * sc.b, m * sc.a, m * sc.e, branch=1)
+    coupler = (float(sc.a * w.real / m), float(-sc.a * w.imag / m))
+    return (PlacedSliderCrank("cognate", cog, coupler, placed.origin, float(placed.rotation + np.angle(w))),)
 
 
 def _signature_distances(signatures, norms, candidates):
@@ -417,15 +495,24 @@ def _best_fits(t, dense, keep, levels=None):
 
 
 def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, curve, refined=False, arc=None):
-    """The `Match` of one linkage (a one-row FourBarSamples) placed by ``z -> origin + w z``."""
-    a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
+    """The `Match` of one linkage (a one-row FourBarSamples or SliderCrankSamples) placed by
+    ``z -> origin + w z``."""
     branch = int(row.branch[0])
     origin = t.mean() - w * centroid
     s = abs(w)
-    unit = FourBar(a, b, c, d, branch=branch, coupler=(p, q))
-    return Match(rank, index, PlacedLinkage("ABCD", _scaled(a, b, c, d, p, q, branch, s), complex(origin),
-                                            float(np.angle(w))),
-                 _placed_cognates(unit, origin, w), int(direction), float(err), float(err / radius), distance,
+    if hasattr(row, "e"):
+        from mech.planar.kinematics._slider_crank import SliderCrank
+
+        a, b, e, p, q = (float(getattr(row, k)[0] * s) for k in "abepq")
+        placed = PlacedSliderCrank("slider-crank", SliderCrank(a, b, e, branch=branch), (p, q), complex(origin),
+                                   float(np.angle(w)))
+        cognates = slider_cognate(placed)
+    else:
+        a, b, c, d, p, q = (float(getattr(row, k)[0]) for k in "abcdpq")
+        unit = FourBar(a, b, c, d, branch=branch, coupler=(p, q))
+        placed = PlacedLinkage("ABCD", _scaled(a, b, c, d, p, q, branch, s), complex(origin), float(np.angle(w)))
+        cognates = _placed_cognates(unit, origin, w)
+    return Match(rank, index, placed, cognates, int(direction), float(err), float(err / radius), distance,
                  str(row.kind[0]), float(row.gamma_min[0]), bool(row.full_turn[0]),
                  (float(row.theta_lo[0]), float(row.theta_hi[0])), origin + w * curve, refined, arc)
 
@@ -495,6 +582,9 @@ def refine(match, target, *, samples=128, iterations=400):
     from mech.planar.synthesis import DesignModel, penalty_method
 
     instance("match", match, Match)
+    if not isinstance(match.linkage, PlacedLinkage):
+        raise ValueError(f"Expected `match` of a four-bar (refine does not move slider-cranks), got a match "
+                         f"of a {match.linkage.name}")
     samples = _samples(samples, harmonics=1)
     iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
     z, lead = _curves(target, True, "target")

@@ -27,6 +27,22 @@ _META_KEY = b"mech.atlas"
 _CHUNK_KEY = b"mech.atlas.chunk"
 _COLUMNS = ("a", "b", "c", "d", "p", "q", "branch", "kind", "full_turn", "theta_lo", "theta_hi",
             "gamma_min", "movable", "usable")
+_SLIDER_COLUMNS = ("a", "b", "e", "p", "q", "branch", "kind", "full_turn", "theta_lo", "theta_hi",
+                   "gamma_min", "movable", "usable")
+
+
+def mechanism_of(settings):
+    """The mechanism of an atlas's settings: "four-bar" (also when not recorded) or "slider-crank"."""
+    return settings.get("mechanism", "four-bar")
+
+
+def columns_of(mechanism):
+    """The linkage columns and their record class for a mechanism."""
+    if mechanism == "slider-crank":
+        from mech.atlas._slider import SliderCrankSamples
+
+        return _SLIDER_COLUMNS, SliderCrankSamples
+    return _COLUMNS, FourBarSamples
 
 
 @dataclass(frozen=True)
@@ -37,15 +53,18 @@ class Atlas:
 
     Attributes
     ----------
-    linkages : FourBarSamples
-        The linkages, one row each (normalised: ground d = 1).
+    linkages : FourBarSamples or SliderCrankSamples
+        The linkages, one row each (normalised: ground d = 1 for four-bars, crank a = 1
+        for slider-cranks).
     signatures : ndarray, shape (n, 4 * harmonics)
         The signature of each closed coupler curve (`curve_signature`).
     seeds : ndarray of int, shape (n,)
         The seed of the build that produced each row.
     settings : dict
         ``version``, ``harmonics``, ``samples`` (arc-length points per curve), ``lengths``,
-        ``coupler`` and ``min_transmission`` of the builds.
+        ``coupler`` and ``min_transmission`` of the builds; an atlas of slider-cranks also
+        records ``mechanism`` ("slider-crank") and ``offsets``, and keeps the rod range in
+        ``lengths`` (an atlas without ``mechanism`` holds four-bars).
 
     Notes
     -----
@@ -163,13 +182,14 @@ class Atlas:
         for part in parts:
             _check_settings(settings, _read_settings(part), str(part))
             tables.append(pq.read_table(part))
-        cols = {name: np.concatenate([t.column(name).to_numpy() for t in tables]) for name in _COLUMNS}
+        names, record = columns_of(mechanism_of(settings))
+        cols = {name: np.concatenate([t.column(name).to_numpy() for t in tables]) for name in names}
         cols["kind"] = cols["kind"].astype(str)
         cols["branch"] = cols["branch"].astype(np.int8)
         width = 4 * int(settings["harmonics"])
         sig = np.concatenate([t.column("signature").combine_chunks().flatten().to_numpy() for t in tables])
         seeds = np.concatenate([t.column("seed").to_numpy() for t in tables])
-        return cls(FourBarSamples(**cols), sig.reshape(-1, width), seeds, settings)
+        return cls(record(**cols), sig.reshape(-1, width), seeds, settings)
 
 
 def write_part(target, linkages, signatures, seeds, settings, chunk=None):
@@ -182,12 +202,13 @@ def write_part(target, linkages, signatures, seeds, settings, chunk=None):
     import pyarrow.parquet as pq
 
     cols = linkages.columns()
-    arrays = [pa.array(cols[name]) for name in _COLUMNS]
+    names = tuple(cols)
+    arrays = [pa.array(cols[name]) for name in names]
     arrays.append(pa.array(np.asarray(seeds).astype(np.int64)))
     width = signatures.shape[1]
     flat = pa.array(np.ascontiguousarray(signatures, dtype=np.float64).reshape(-1))
     arrays.append(pa.FixedSizeListArray.from_arrays(flat, width))
-    table = pa.Table.from_arrays(arrays, names=[*_COLUMNS, "seed", "signature"])
+    table = pa.Table.from_arrays(arrays, names=[*names, "seed", "signature"])
     meta = {_META_KEY: json.dumps(settings).encode()}
     if chunk is not None:
         meta[_CHUNK_KEY] = json.dumps(chunk).encode()
@@ -222,7 +243,7 @@ def _read_settings(part):
 
 
 def _check_settings(have, new, where):
-    keys = ("version", "harmonics", "samples", "lengths", "coupler", "min_transmission")
+    keys = ("version", "harmonics", "samples", "lengths", "coupler", "min_transmission", "mechanism", "offsets")
     diff = [k for k in keys if have.get(k) != new.get(k)]
     if diff:
         shown = ", ".join(f"{k}: {have.get(k)!r} vs {new.get(k)!r}" for k in diff)

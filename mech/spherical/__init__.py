@@ -1,7 +1,8 @@
 """Spherical mechanisms: the spherical calculus, the spherical four-bar and its types, the
-side-angle laws of spherical polygons, the transference principle, function generation and
-rigid-body guidance (the spherical monograph, chapters 1, 3, 5, 6 and 7), and in ``path`` the
-eighth-order coupler curve (chapter 2).
+side-angle laws of spherical polygons, the transference principle, function generation,
+rigid-body guidance, a general spherical linkage solver with the Stephenson and Watt
+six-bars, and in ``path`` the eighth-order coupler curve (the spherical monograph, chapters
+1, 2 (§§2.1, 2.3, 2.4), 3, 5, 6 and 7).
 
 Conventions (``CONVENTIONS.md``): the sphere has unit radius, arcs are radians in (0, pi),
 points are unit 3-vectors in arrays of shape ``(..., 3)``, and ``lon`` is 0 at the poles.
@@ -31,6 +32,7 @@ from mech.spherical._function_generation import (
     least_squares,
     precision_pairs,
 )
+from mech.spherical._minimax import minimax
 from mech.spherical._polygons import (
     PolygonRelations,
     SphericalPolygon,
@@ -69,13 +71,17 @@ from mech.spherical.guidance import (
     SphericalBurmesterPoints,
     SphericalDyad,
     SphericalGuidanceFourBar,
+    SphericalGuidanceMotion,
+    SphericalOptimalGuidance,
     burmester,
     circle_point_curve,
     crank_residual,
     dyad_for_centre_point,
     dyad_for_circle_point,
     guidance_fourbars,
+    guidance_motion,
     guidance_slider_crank,
+    optimal_guidance,
     planar_orientations,
     pole_triangle,
     relative_rotation,
@@ -86,6 +92,7 @@ from mech.spherical.guidance import (
     slider_residual,
 )
 from mech.spherical.path import CouplerOctic, coupler_octic, coupler_quartic, nine_parameters
+from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
@@ -106,13 +113,17 @@ __all__ = [
     "SphericalBurmesterPoints",
     "SphericalDyad",
     "SphericalGuidanceFourBar",
+    "SphericalGuidanceMotion",
+    "SphericalOptimalGuidance",
     "burmester",
     "circle_point_curve",
     "crank_residual",
     "dyad_for_centre_point",
     "dyad_for_circle_point",
     "guidance_fourbars",
+    "guidance_motion",
     "guidance_slider_crank",
+    "optimal_guidance",
     "planar_orientations",
     "pole_triangle",
     "relative_rotation",
@@ -155,6 +166,7 @@ __all__ = [
     "isogram_output",
     "law_count",
     "least_squares",
+    "minimax",
     "local_frame",
     "nine_parameters",
     "open_chain_axes",
@@ -174,4 +186,10 @@ __all__ = [
     "turn",
     "universal_joint",
     "velocity",
+    "SphericalLinkage",
+    "SphericalLinkagePose",
+    "stephenson1",
+    "stephenson2",
+    "watt1",
+    "watt2",
 ]

@@ -32,7 +32,7 @@ def client():
     distributed = pytest.importorskip("distributed")
     logging.getLogger("distributed").setLevel(logging.ERROR)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as c:
+                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as c:
         yield c
 
 

@@ -20,6 +20,12 @@ from mech.spherical.guidance._dyads import (
     slider_dyad_for_point,
 )
 from mech.spherical.guidance._fourbar import SphericalGuidanceFourBar, guidance_fourbars, guidance_slider_crank
+from mech.spherical.guidance._optimal import (
+    SphericalGuidanceMotion,
+    SphericalOptimalGuidance,
+    guidance_motion,
+    optimal_guidance,
+)
 from mech.spherical.guidance._orientations import (
     crank_residual,
     planar_orientations,
@@ -34,4 +40,5 @@ __all__ = [
     "SphericalDyad", "dyad_for_circle_point", "dyad_for_centre_point", "slider_dyad_for_point",
     "SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve", "burmester", "slider_dyads",
     "SphericalGuidanceFourBar", "guidance_fourbars", "guidance_slider_crank",
+    "SphericalGuidanceMotion", "SphericalOptimalGuidance", "guidance_motion", "optimal_guidance",
 ]

@@ -159,15 +159,18 @@ def _candidate(R, crank, rocker, rtol):
         passes=bool(in_order and pose_error <= rtol), gamma_at_poses=gamma_at, gamma_min=gamma_min)
 
 
-def _check_dyads(dyads):
+def _check_dyads(dyads, names=None):
+    """Check a list of dyads; `names` gives each its own argument name (else `dyads` at index k)."""
     if not isinstance(dyads, (list, tuple)):
         raise InputTypeError(f"Expected `dyads` to be a list or tuple of SphericalDyad records, got {_show(dyads)}")
     for k, dyad in enumerate(dyads):
+        where = f"`{names[k]}`" if names else "`dyads`"
+        at = "" if names else f" at index {k}"
         if not isinstance(dyad, SphericalDyad) or np.shape(dyad.circle_point) != (3,):
-            raise ValueError(f"Expected `dyads` of single SphericalDyad records, got {dyad!r} at index {k}")
+            raise ValueError(f"Expected {where} of single SphericalDyad records, got {_show(dyad)}{at}")
         fields = (dyad.circle_point, dyad.moving_pivot, dyad.centre_point, dyad.arc)
         if not all(np.all(np.isfinite(np.asarray(f, dtype=float))) for f in fields):
-            raise ValueError(f"Expected `dyads` with finite fields, got {dyad!r} at index {k}")
+            raise ValueError(f"Expected {where} with finite fields, got {dyad!r}{at}")
     return tuple(dyads)
 
 
@@ -287,7 +290,7 @@ def guidance_slider_crank(R, crank, slider, *, rtol=1e-9):
     """
     R = orientation_set("R", R, (2, 3, 4, 5))
     rtol = nonnegative_number("rtol", rtol)
-    crank, slider = _check_dyads([crank, slider])
+    crank, slider = _check_dyads([crank, slider], names=("crank", "slider"))
     if abs(float(slider.arc) - np.pi / 2) > 1e-9:
         raise ValueError(f"Expected `slider` of arc pi/2 (a slider dyad), got arc {float(slider.arc)!r}")
     return _candidate(R, crank, slider, rtol)

@@ -1,0 +1,621 @@
+"""Search a spherical atlas for the four-bars whose coupler curves look like a target on the sphere.
+
+Closed targets: the signature stage ranks every entry by the distance of its signature to the
+target's; the alignment stage takes a short list and finds, for every start and both
+directions, the best rotation of the sphere (the SVD solution of the orthogonal Procrustes
+problem, Kabsch's method), with all starts at once through FFT cross-correlations.
+
+Open arcs (say half a turn of the crank): every closed curve is cut into sub-arcs covering
+a fraction `span` of its curve parameter at `starts` places, with the signature of each
+sub-arc run there and back (cached on the atlas); the best rows then get their sub-arc's
+two ends freed by a pattern search on arc length, re-ranked by the real RMS distance after
+the best rotation, for both directions of travel.
+
+`refine_sphere` improves a match by optimisation (SciPy's Nelder-Mead, imported when called)
+of the four arcs and the coupler point on the real curve error; `find_sphere_linkages`
+refines the best few matches and keeps the best.
+"""
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from mech._validate import _show, bool_flag, instance, integer, nonnegative_number, real_number
+from mech.atlas._sphere_sampling import describe_sphere, sphere_curves, sphere_points
+from mech.atlas._sphere_signature import (
+    _interpolate, _resample_closed, _resample_open, _signature_rows, _sphere_curves, _there_and_back,
+)
+from mech.atlas._sphere_store import SphereAtlas, spectra
+
+__all__ = ["SphereMatch", "find_sphere_linkages", "query_sphere", "refine_sphere"]
+
+#: Sub-steps of the start tried by the exact alignment of a closed target.
+_PHASES = 4
+#: Rows of an atlas cut into sub-arcs at a time.
+_ROWS = 256
+#: Steps of the arc-length table of a closed curve used to place sub-arcs.
+_TABLE = 1024
+#: Rows given a coarse alignment of an open arc, per entry of the short list; rows given the
+#: fine alignment after it.
+_ARC_WIDER, _ARC_FINE = 1, 16
+#: Starts tried per row in the coarse alignment of an open arc.
+_ARC_TRIES = 3
+#: Halvings of the pattern search on the ends of a sub-arc (coarse, then fine).
+_ARC_COARSE, _ARC_LEVELS = 3, 8
+#: Fresh starts of the simplex of `refine_sphere` after the first search stops.
+_RESTARTS = 3
+
+
+@dataclass(frozen=True)
+class SphereMatch:
+    """One spherical four-bar found by `query_sphere` (or refined by `refine_sphere`).
+
+    Attributes
+    ----------
+    rank, index : int
+        Rank (0 best) and row in the atlas (the row a refinement started from).
+    fourbar : SphericalFourBar
+        The linkage in its standard frame (A at the north pole, D on the x-z plane).
+    rotation : ndarray, shape (3, 3)
+        The rotation of the sphere that carries its curve onto the target:
+        ``target ~ curve @ rotation.T``.
+    direction : int
+        +1 if the target runs with the curve parameter, -1 against it.
+    error : float
+        RMS distance (chord, about the arc in radians) between the target and the turned
+        curve at equal steps of length, best aligned.
+    kind : str
+        Type by `mech.spherical.classify`.
+    curve : ndarray, shape (m, 3)
+        The turned coupler curve (or sub-arc), point for point against the target's
+        resampled points.
+    placed : SphericalFourBar
+        The same linkage placed on the target: ``frame=rotation``, so that its coupler
+        point traces the target.
+    relative_error : float
+        `error` over the RMS distance of the target's points from their mean.
+    distance : float
+        Distance of the signatures (the first stage's ranking).
+    gamma_min : float
+        Smallest transmission angle over the input range, radians (0 for a rocking input).
+    full_turn : bool
+        True if the crank turns fully.
+    theta_range : (float, float)
+        The input range, radians.
+    refined : bool
+        True for a result of `refine_sphere`.
+    arc : (float, float) or None
+        For an open target, the curve parameter u at the two ends of the matching part of
+        the closed curve (the input angle for a crank that turns fully).
+    """
+
+    rank: int
+    index: int
+    fourbar: object
+    rotation: np.ndarray
+    direction: int
+    error: float
+    kind: str
+    curve: np.ndarray
+    placed: object = None
+    relative_error: float = float("nan")
+    distance: float = float("nan")
+    gamma_min: float = float("nan")
+    full_turn: bool = True
+    theta_range: tuple = (0.0, 2 * np.pi)
+    refined: bool = False
+    arc: tuple = None
+
+
+def _rotation_gain(H, bound, steps=24):
+    """``max over proper rotations R of trace(R H)`` for 3x3 matrices H (..., 3, 3).
+
+    The largest eigenvalue of Horn's quaternion matrix K of H, as a root of its characteristic
+    polynomial ``l^4 + c2 l^2 + c1 l + c0`` (``c2 = -2 |H|^2``, ``c1 = -8 det H``,
+    ``c0 = det K``) found by Newton's method from `bound`, an upper bound such as
+    ``(|a|^2 + |t|^2) / 2`` (Theobald's QCP method): no SVD per matrix.
+    """
+    Sxx, Sxy, Sxz = H[..., 0, 0], H[..., 0, 1], H[..., 0, 2]
+    Syx, Syy, Syz = H[..., 1, 0], H[..., 1, 1], H[..., 1, 2]
+    Szx, Szy, Szz = H[..., 2, 0], H[..., 2, 1], H[..., 2, 2]
+    K = np.stack([
+        np.stack([Sxx + Syy + Szz, Syz - Szy, Szx - Sxz, Sxy - Syx], axis=-1),
+        np.stack([Syz - Szy, Sxx - Syy - Szz, Sxy + Syx, Szx + Sxz], axis=-1),
+        np.stack([Szx - Sxz, Sxy + Syx, -Sxx + Syy - Szz, Syz + Szy], axis=-1),
+        np.stack([Sxy - Syx, Szx + Sxz, Syz + Szy, -Sxx - Syy + Szz], axis=-1)], axis=-2)
+    c2 = -2.0 * np.sum(H**2, axis=(-2, -1))
+    c1 = -8.0 * np.linalg.det(H)
+    c0 = np.linalg.det(K)
+    lam = np.array(bound, dtype=float, copy=True)
+    for _ in range(steps):
+        l2 = lam * lam
+        p = (l2 + c2) * l2 + c1 * lam + c0
+        dp = 4.0 * l2 * lam + 2.0 * c2 * lam + c1
+        lam = lam - np.divide(p, dp, out=np.zeros_like(p), where=dp != 0.0)
+    return lam
+
+
+def _kabsch_all_starts(a, t):
+    """For curves a (rows, N, 3) and target t (N, 3): the best rotation at every cyclic start.
+
+    Returns (squared error sum, rotation, start) of the best start per row.
+    """
+    A, T = np.fft.fft(a, axis=1), np.fft.fft(t, axis=0)
+    # H[r, s, p, q] = sum_j a[r, j + s, p] t[j, q]
+    H = np.fft.ifft(A[:, :, :, None] * np.conj(T)[None, :, None, :], axis=1).real
+    norms = np.sum(a**2, axis=(1, 2))[:, None] + np.sum(t**2)
+    gain = _rotation_gain(H, np.broadcast_to(norms / 2, H.shape[:2]))
+    s = np.argmin(norms - 2 * gain, axis=1)
+    r = np.arange(a.shape[0])
+    # the rotation at the chosen start, and its error, from the SVD (Kabsch)
+    u, sigma, vt = np.linalg.svd(H[r, s])
+    sign = np.sign(np.linalg.det(np.einsum("rij,rjk->rik", u, vt)))
+    fix = np.ones((a.shape[0], 3))
+    fix[:, 2] = sign
+    # the rotation R with R a_{j+s} ~ t_j: R = V diag(1, 1, det) U^T
+    rot = np.einsum("rji,rj,rkj->rik", vt, fix, u)
+    return norms[:, 0] - 2 * np.sum(sigma * fix, axis=1), rot, s
+
+
+def _kabsch(a, t):
+    """Best rotation of each row of points a (rows, m, 3) onto t (rows or 1, m, 3): (RMS, R)."""
+    H = np.einsum("rjp,rjq->rpq", a, np.broadcast_to(t, a.shape))
+    u, sigma, vt = np.linalg.svd(H)
+    sign = np.sign(np.linalg.det(np.einsum("rij,rjk->rik", u, vt)))
+    sigma = sigma.copy()
+    sigma[:, 2] *= sign
+    fix = np.ones((a.shape[0], 3))
+    fix[:, 2] = sign
+    rot = np.einsum("rji,rj,rkj->rik", vt, fix, u)
+    sq = np.sum(a**2, axis=(1, 2)) + np.sum(np.broadcast_to(t, a.shape) ** 2, axis=(1, 2)) - 2 * np.sum(sigma, axis=1)
+    return np.sqrt(np.maximum(sq, 0.0) / a.shape[1]), rot
+
+
+def _closed_fits(curves, t, keep=None, levels=8):
+    """Align closed curves (rows, M, 3, at equal steps of the curve parameter) with the target t.
+
+    The curves are resampled at `_PHASES` N equal steps of length; every start on that grid
+    and both directions are tried at once (FFT and `_rotation_gain`); then, for the best
+    `keep` rows (all by default), the start is refined by bisection between grid points on
+    the exact error. Returns (RMS error, rotation, direction, turned curve at the target's N
+    points) per row.
+    """
+    n = t.shape[0]
+    fine = _resample_closed(curves, _PHASES * n)
+    best = None
+    for direction in (1, -1):
+        way = fine if direction == 1 else fine[:, ::-1]
+        for phase in range(_PHASES):
+            sq, _, s = _kabsch_all_starts(way[:, phase::_PHASES], t)
+            cand = (sq, s * _PHASES + phase, np.full(sq.shape, direction))
+            if best is None:
+                best = cand
+                continue
+            better = sq < best[0]
+            best = tuple(np.where(better, x, y) for x, y in zip(cand, best))
+    sq, offset, direction = best
+    ways = np.where((direction == 1)[:, None, None], fine, fine[:, ::-1])
+    big = _PHASES * n
+    start = offset / big
+    steps = np.arange(n) / n
+
+    def fit(rows, f):
+        # between the resampled points by their index (they are at equal steps of length)
+        x = np.mod(f[:, None] + steps[None, :], 1.0) * big
+        j = np.minimum(x.astype(int), big - 1)
+        w = (x - j)[..., None]
+        r = rows[:, None]
+        pts = (1.0 - w) * ways[r, j] + w * ways[r, (j + 1) % big]
+        err, rot = _kabsch(pts, t[None])
+        return err, rot, pts
+
+    err = np.sqrt(np.maximum(sq, 0.0) / n)
+    top = np.argsort(err, kind="stable")[:len(err) if keep is None else keep]
+    step = 0.5 / (_PHASES * n)
+    for _ in range(levels):
+        for trial in (start[top] - step, start[top] + step):
+            e = fit(top, trial)[0]
+            better = e < err[top]
+            start[top] = np.where(better, trial, start[top])
+            err[top] = np.where(better, e, err[top])
+        step *= 0.5
+    err, rot, pts = fit(np.arange(len(err)), start)
+    return err, rot, direction, np.einsum("rjp,rqp->rjq", pts, rot)
+
+
+def _radius(t):
+    return float(np.sqrt(np.mean(np.sum((t - t.mean(axis=0)) ** 2, axis=1))))
+
+
+def _match(rank, index, row, rot, direction, err, radius, distance, curve, refined=False, arc=None):
+    """The `SphereMatch` of one linkage (a one-row SphereSamples) turned by `rot`."""
+    rot = np.asarray(rot, dtype=float)
+    # a rotation from an SVD is orthogonal to rounding; make it exactly proper for `frame`
+    u, _, vt = np.linalg.svd(rot)
+    rot = u @ vt
+    return SphereMatch(rank, index, row.fourbar(0), rot, int(direction), float(err), str(row.kind[0]), curve,
+                       row.fourbar(0, frame=rot), float(err / radius), float(distance), float(row.gamma_min[0]),
+                       bool(row.full_turn[0]), (float(row.theta_lo[0]), float(row.theta_hi[0])), refined, arc)
+
+
+def _target(target, closed):
+    x = _sphere_curves(target, "target")
+    if x.ndim != 2:
+        raise ValueError(f"Expected one curve in `target`, got shape {x.shape}")
+    return x
+
+
+def query_sphere(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, span=0.5, starts=64):
+    """Find the spherical four-bars of an atlas whose coupler curves best match a target on the sphere.
+
+    Parameters
+    ----------
+    atlas : SphereAtlas
+    target : array_like, shape (m, 3)
+        Points along a closed curve (or an open arc) on the sphere, any rotation of the
+        sphere, start and direction (nonzero vectors, scaled to unit length).
+    k, shortlist : int, optional
+        Matches returned, and entries aligned exactly after the signature stage.
+    resampled : bool, optional
+        True if a closed `target` is already at equal steps of length (used as given).
+    closed : bool, optional
+        False for an open arc, matched against parts of the atlas's closed curves.
+    span : float, optional
+        For an open arc: the fraction of a closed curve's parameter it is expected to
+        cover, in (0, 1] (the alignment frees both ends).
+    starts : int, optional
+        For an open arc: sub-arcs per closed curve in the signature stage (their
+        signatures are cached on the atlas: ``12 (K + 1) starts`` bytes per linkage, 69 MB
+        for 10^4 linkages at the defaults). Fewer starts are quicker but may miss the row.
+
+    Returns
+    -------
+    list of SphereMatch
+        Best first, by the RMS distance after the best rotation, start and direction.
+
+    Notes
+    -----
+    Signatures: :ref:`deriv-sphere-signature`. The rotation is Kabsch's SVD solution;
+    mirror images have equal signatures but are told apart by it (it is proper).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.atlas import build_sphere_atlas, query_sphere
+    >>> atlas = build_sphere_atlas(100, seed=2)
+    >>> q, _ = np.linalg.qr(np.random.default_rng(3).normal(size=(3, 3)))
+    >>> q *= np.linalg.det(q)                                           # a proper rotation
+    >>> target = np.roll(atlas.curves(7, 300)[0], 30, axis=0)[::-1] @ q.T
+    >>> best = query_sphere(atlas, target, k=2)[0]
+    >>> best.index, best.error < 1e-3, bool(np.allclose(best.rotation, q, atol=1e-2))
+    (7, True, True)
+    """
+    instance("atlas", atlas, SphereAtlas)
+    k = integer("k", k, minimum=1, maximum=10**4)
+    shortlist = integer("shortlist", shortlist, minimum=1, maximum=10**5)
+    resampled = bool_flag("resampled", resampled)
+    closed = bool_flag("closed", closed)
+    span = real_number("span", span)
+    if not 0.0 < span <= 1.0:
+        raise ValueError(f"Expected `span` in (0, 1], got {span!r}")
+    starts = integer("starts", starts, minimum=1, maximum=1024)
+    if k > shortlist:
+        raise ValueError(f"Expected `k` <= shortlist = {shortlist}, got {k}")
+    x = _target(target, closed)
+    if not closed:
+        return _query_arc(atlas, x, k, shortlist, span, starts)
+    n, harmonics = atlas.samples, atlas.harmonics
+    if resampled and x.shape[0] <= 2 * harmonics:
+        raise ValueError(f"Expected more than {2 * harmonics} points in a resampled `target`, got {x.shape[0]}")
+    t = x if resampled else _resample_closed(x[None], n)[0]
+    sig = _signature_rows(t[None], harmonics)[0]
+    dist = np.sqrt(np.sum((atlas.signatures - sig) ** 2, axis=1))
+    m = min(shortlist, len(atlas))
+    short = np.argpartition(dist, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    if m < len(atlas):
+        # a few more by the rotation spectrum, which needs no principal frame: a curve with two
+        # nearly equal moments has an unsteady frame, and noise can move its signature far
+        power = np.sqrt(np.sum((atlas._spectra - spectra(sig)) ** 2, axis=1))
+        extra = min(max(m // 4, 1), len(atlas) - m)
+        power[short] = np.inf
+        short = np.concatenate([short, np.argpartition(power, extra - 1)[:extra]])
+    err, rot, direction, turned = _closed_fits(atlas.curves(short, 4 * t.shape[0]), t, keep=max(k, 8))
+    radius = _radius(t)
+    rows = atlas.linkages.take(short)
+    return [_match(rank, int(short[j]), rows.take([j]), rot[j], direction[j], err[j], radius, dist[short[j]],
+                   turned[j])
+            for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+
+
+# ---------------------------------------------------------------------------- open arcs
+def arc_signatures(atlas, span, starts):
+    """Signatures of the sub-arcs of every atlas curve, shape (rows, starts, 3 (K + 1)), cached.
+
+    Sub-arc ``j`` covers the curve parameter from ``2 pi (j + 1/2) / grid`` (grid a multiple
+    of `starts`) over ``2 pi span``; float32 (entries are at most 1).
+    """
+    cache = atlas._arc_cache
+    key = (float(span), int(starts))
+    if key in cache:
+        return cache[key]
+    n = atlas.samples
+    grid = starts * max(1, int(np.ceil(n / starts)))
+    length = int(round(span * grid)) + 1
+    u = 2 * np.pi * (np.arange(grid) + 0.5) / grid
+    index = (np.arange(starts)[:, None] * (grid // starts) + np.arange(length)[None, :]) % grid
+    out = np.empty((len(atlas), starts, 3 * (atlas.harmonics + 1)), dtype=np.float32)
+    for lo in range(0, len(atlas), _ROWS):
+        rows = np.arange(lo, min(lo + _ROWS, len(atlas)))
+        curves = sphere_points(atlas.linkages.take(rows).columns(), u[None, :])
+        arcs = curves[:, index].reshape(-1, length, 3)
+        sig = _signature_rows(_there_and_back(_resample_open(arcs, n // 2 + 1)), atlas.harmonics)
+        out[rows] = sig.reshape(rows.size, starts, -1)
+    cache[key] = out
+    return out
+
+
+class _Tables:
+    """Closed curves of some rows as polylines of `_TABLE` steps of the curve parameter, with
+    the arc-length fraction at each vertex: sub-arcs are read off them by arc length.
+
+    The vertices sit half a step off ``u = k pi / 2`` (where a rocking input is at a limit
+    position, which rounding may put just out of reach).
+    """
+
+    def __init__(self, cols):
+        self.u = 2 * np.pi * (np.arange(_TABLE + 1) + 0.5) / _TABLE
+        z = sphere_points(cols, self.u[None, :])
+        self.bad = ~np.all(np.isfinite(z), axis=(1, 2))
+        self.z = np.where(self.bad[:, None, None], np.array([0.0, 0.0, 1.0]), z)
+        seg = np.linalg.norm(np.diff(self.z, axis=1), axis=2)
+        cum = np.concatenate([np.zeros((seg.shape[0], 1)), np.cumsum(seg, axis=1)], axis=1)
+        total = cum[:, -1:]
+        self.cum = np.where(total > 0.0, cum / np.where(total > 0.0, total, 1.0), np.linspace(0.0, 1.0, _TABLE + 1))
+        # the curves again at equal steps of length (closed: the first point repeated last)
+        even = _interpolate(self.z, np.broadcast_to(np.arange(_TABLE) / _TABLE, (self.z.shape[0], _TABLE)))
+        self.even = np.concatenate([even, even[:, :1]], axis=1)
+
+    def length_at(self, u):
+        """Arc-length fraction (in cycles, unwrapped) at curve parameters u (rows,)."""
+        v = u - self.u[0]
+        turns = np.floor(v / (2 * np.pi))
+        return turns + np.array([np.interp(w, self.u - self.u[0], c) for w, c in zip(v - 2 * np.pi * turns, self.cum)])
+
+    def u_at(self, x):
+        """Curve parameter (unwrapped) at arc-length fractions x (rows,)."""
+        turns = np.floor(x)
+        return 2 * np.pi * turns + np.array([np.interp(v, c, self.u) for v, c in zip(x - turns, self.cum)])
+
+    def arcs(self, rows, x0, x1, m):
+        """m points at equal steps of length from x0 to x1 on the given rows, (rows, m, 3)."""
+        frac = np.mod(x0[:, None] + (x1 - x0)[:, None] * np.linspace(0.0, 1.0, m)[None, :], 1.0)
+        x = frac * _TABLE
+        j = np.minimum(x.astype(int), _TABLE - 1)
+        w = (x - j)[..., None]
+        r = rows[:, None]
+        return (1.0 - w) * self.even[r, j] + w * self.even[r, j + 1]
+
+
+def _arc_errors(tables, rows, targets, x0, x1, rotations=False):
+    """RMS error after the best rotation of each sub-arc onto its target (one per row); with
+    `rotations`, also the rotations (by SVD) and the points."""
+    pts = tables.arcs(rows, x0, x1, targets.shape[1])
+    if rotations:
+        err, rot = _kabsch(pts, targets)
+        return np.where(tables.bad[rows], np.inf, err), rot, pts
+    H = np.einsum("rjp,rjq->rpq", pts, targets)
+    norms = np.sum(pts**2, axis=(1, 2)) + np.sum(targets**2, axis=(1, 2))
+    sq = norms - 2.0 * _rotation_gain(H, norms / 2)
+    return np.where(tables.bad[rows], np.inf, np.sqrt(np.maximum(sq, 0.0) / targets.shape[1]))
+
+
+def _align_arcs(tables, t, x0, x1, step, levels, rounds=4):
+    """Pattern search on the ends (arc-length fractions) of each row's sub-arc, target both ways."""
+    rows = x0.size
+    idx = np.concatenate([np.arange(rows), np.arange(rows)])
+    targets = np.concatenate([np.broadcast_to(t, (rows,) + t.shape), np.broadcast_to(t[::-1], (rows,) + t.shape)])
+    X0, X1 = np.concatenate([x0, x0]), np.concatenate([x1, x1])
+    err = _arc_errors(tables, idx, targets, X0, X1)
+    for _ in range(levels):
+        for _ in range(rounds):
+            moved = False
+            for d0, d1 in ((1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1), (-1, 1), (1, -1)):
+                a, b = X0 + d0 * step, X1 + d1 * step
+                ok = (b - a > 1e-6) & (b - a <= 1.0)
+                e = np.where(ok, _arc_errors(tables, idx, targets, a, b), np.inf)
+                better = e < err
+                moved = moved or bool(better.any())
+                X0, X1, err = np.where(better, a, X0), np.where(better, b, X1), np.where(better, e, err)
+            if not moved:
+                break
+        step *= 0.5
+    pick = err[:rows] <= err[rows:]
+    sel = np.where(pick, np.arange(rows), np.arange(rows) + rows)
+    e, rot, pts = _arc_errors(tables, idx[sel], targets[sel], X0[sel], X1[sel], rotations=True)
+    # the reversed target was fitted point for point reversed: turn the points back
+    pts = np.where(pick[:, None, None], pts, pts[:, ::-1])
+    return e, rot, pts, X0[sel], X1[sel], np.where(pick, 1, -1)
+
+
+def _query_arc(atlas, x, k, shortlist, span, starts):
+    n = atlas.samples
+    t = _resample_open(x[None], n // 2 + 1)[0]
+    sig = _signature_rows(_there_and_back(t[None]), atlas.harmonics)[0]
+    sigs = arc_signatures(atlas, span, starts)
+    dist = np.sqrt(np.sum((sigs.astype(np.float64) - sig) ** 2, axis=2))
+    where = np.argmin(dist, axis=1)
+    best = dist[np.arange(len(atlas)), where]
+    m = min(_ARC_WIDER * shortlist, len(atlas))
+    short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    grid = starts * max(1, int(np.ceil(n / starts)))
+    # each row from its two best starts that are local minima over the starts (a rocking
+    # input's curve has look-alike parts, mirrored in the input angle, that trap one start)
+    d = dist[short]
+    local = (d <= np.roll(d, 1, axis=1)) & (d <= np.roll(d, -1, axis=1))
+    order = np.argsort(np.where(local, d, np.inf), axis=1, kind="stable")[:, :min(_ARC_TRIES, starts)]
+    tried = np.isfinite(np.take_along_axis(np.where(local, d, np.inf), order, axis=1))
+    tried[:, 0] = True
+    row = np.repeat(np.arange(short.size), order.shape[1])[tried.ravel()]
+    u0 = 2 * np.pi * (order.ravel()[tried.ravel()] / starts + 0.5 / grid)
+    tables = _Tables(atlas.linkages.take(short[row]).columns())
+    x0 = tables.length_at(u0)
+    x1 = tables.length_at(u0 + 2 * np.pi * span)
+    step = 0.5 / starts
+    err, _, _, x0, x1, _ = _align_arcs(tables, t, x0, x1, step, _ARC_COARSE)
+    # the better try of each row
+    first = np.lexsort((err, row))
+    first = first[np.r_[True, row[first][1:] != row[first][:-1]]]
+    short, err, x0, x1 = short[row[first]], err[first], x0[first], x1[first]
+    keep = np.argsort(err, kind="stable")[:min(max(2 * k, _ARC_FINE), m)]
+    short, x0, x1 = short[keep], x0[keep], x1[keep]
+    tables = _Tables(atlas.linkages.take(short).columns())
+    err, rot, pts, x0, x1, direction = _align_arcs(tables, t, x0, x1, step / 2**_ARC_COARSE, _ARC_LEVELS, rounds=2)
+    u0, u1 = tables.u_at(x0), tables.u_at(x1)
+    radius = _radius(t)
+    rows = atlas.linkages.take(short)
+    return [_match(rank, int(short[j]), rows.take([j]), rot[j], direction[j], err[j], radius, best[short[j]],
+                   pts[j] @ rot[j].T, arc=(float(u0[j]), float(u1[j])))
+            for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+
+
+# ---------------------------------------------------------------------------- refinement
+def _objective(t, branch, samples):
+    def f(p):
+        a, b, c, d, r, gamma = p
+        if not (0.0 < min(a, b, c, d, r) and max(a, b, c, d, r) < np.pi):
+            return np.inf
+        row = describe_sphere([a], [b], [c], [d], [r], [gamma], [branch])
+        if not row.usable[0]:
+            return np.inf
+        curve = sphere_curves(row.columns(), 4 * samples)
+        if not np.all(np.isfinite(curve)):
+            return np.inf
+        return float(_closed_fits(curve, t, levels=4)[0][0])
+
+    return f
+
+
+def refine_sphere(match, target, *, samples=96, iterations=600):
+    """Refine a closed-curve match by optimisation on the real curve error.
+
+    The four arcs and the coupler point ``(r, gamma)`` of the matched linkage are moved by
+    SciPy's Nelder-Mead search (imported when called) to reduce the RMS distance between
+    the target and the coupler curve after the best rotation of the sphere, start and
+    direction (computed afresh at every step); the branch is kept.
+
+    Parameters
+    ----------
+    match : SphereMatch
+        A result of `query_sphere` for a closed target.
+    target : array_like, shape (m, 3)
+        The closed target given to `query_sphere`.
+    samples : int, optional
+        Equal steps of length at which the curves are compared.
+    iterations : int, optional
+        Largest number of simplex iterations.
+
+    Returns
+    -------
+    SphereMatch
+        ``refined=True``, with the refined linkage (`fourbar`), its placement on the target
+        (`placed`, ``frame=rotation``), its error, type and minimum transmission angle; the
+        starting match if no better linkage was found.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.atlas import build_sphere_atlas, query_sphere, refine_sphere
+    >>> from mech.spherical import SphericalFourBar
+    >>> t = np.linspace(0, 2 * np.pi, 300, endpoint=False)
+    >>> target = SphericalFourBar(0.4, 1.0, 0.8, 1.1, coupler=(0.5, 0.6)).solve(t).P    # not in the atlas
+    >>> first = query_sphere(build_sphere_atlas(1000, seed=3), target, k=1)[0]
+    >>> better = refine_sphere(first, target, iterations=200)
+    >>> better.refined, better.error < first.error
+    (True, True)
+    """
+    from scipy.optimize import minimize
+
+    instance("match", match, SphereMatch)
+    samples = integer("samples", samples, minimum=16, maximum=1 << 14)
+    iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
+    x = _target(target, True)
+    if match.arc is not None:
+        raise ValueError(f"Expected `match` of a closed target (arc None), got arc = {match.arc!r}")
+    t = _resample_closed(x[None], samples)[0]
+    f = match.fourbar
+    p0 = np.array([f.a, f.b, f.c, f.d, *f.coupler], dtype=float)
+    objective = _objective(t, f.branch, samples)
+    start = objective(p0)
+    if not np.isfinite(start):
+        return match
+    # Nelder-Mead restarted with a fresh simplex from where it stopped, while that helps: a
+    # collapsed simplex often stops short on this objective (it has ridges where the type
+    # or the best start of the alignment changes)
+    best_x, best_f, left, size = p0, start, iterations, 0.05
+    for _ in range(_RESTARTS + 1):
+        simplex = np.vstack([best_x, best_x + size * np.eye(6)])
+        result = minimize(objective, best_x, method="Nelder-Mead",
+                          options={"maxiter": left, "initial_simplex": simplex, "xatol": 1e-7, "fatol": 1e-10})
+        left -= int(result.nit)
+        improved = result.fun < best_f
+        if improved:
+            gain = (best_f - result.fun) / best_f
+            best_x, best_f = result.x, float(result.fun)
+        if left <= 0 or not improved or gain < 1e-2:
+            break
+        size *= 0.5
+    if not best_f < start:
+        return match
+    a, b, c, d, r, gamma = best_x
+    row = describe_sphere([a], [b], [c], [d], [r], [np.angle(np.exp(1j * gamma))], [f.branch])
+    err, rot, direction, turned = _closed_fits(sphere_curves(row.columns(), 4 * samples), t)
+    return _match(match.rank, match.index, row, rot[0], direction[0], err[0], _radius(t), match.distance,
+                  turned[0], refined=True)
+
+
+def find_sphere_linkages(atlas, target, *, starts=4, goal=None, samples=96, iterations=600):
+    """Find spherical four-bars tracing a closed target: query an atlas, refine from several starts.
+
+    The best `starts` matches of `query_sphere` are each refined by `refine_sphere` (until
+    one reaches `goal`, a `relative_error`, if given); the refined matches are returned
+    best first.
+
+    Parameters
+    ----------
+    atlas : SphereAtlas
+    target : array_like, shape (m, 3)
+        A closed curve on the sphere.
+    starts : int, optional
+        Matches refined, in [1, 64].
+    goal : float, optional
+        Stop once a refined match has a `relative_error` at most this.
+    samples, iterations : int, optional
+        Passed to `refine_sphere`.
+
+    Returns
+    -------
+    list of SphereMatch
+        Refined matches, best first, ranked again from 0.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.atlas import build_sphere_atlas, find_sphere_linkages
+    >>> from mech.spherical import SphericalFourBar
+    >>> t = np.linspace(0, 2 * np.pi, 300, endpoint=False)
+    >>> target = SphericalFourBar(0.4, 1.0, 0.8, 1.1, coupler=(0.5, 0.6)).solve(t).P
+    >>> best = find_sphere_linkages(build_sphere_atlas(1000, seed=3), target, starts=2, iterations=200)[0]
+    >>> best.rank, best.refined
+    (0, True)
+    """
+    starts = integer("starts", starts, minimum=1, maximum=64)
+    if goal is not None:
+        goal = nonnegative_number("goal", goal)
+    out = []
+    for match in query_sphere(atlas, target, k=starts, shortlist=max(64, starts)):
+        out.append(refine_sphere(match, target, samples=samples, iterations=iterations))
+        if goal is not None and out[-1].relative_error <= goal:
+            break
+    out.sort(key=lambda m: m.error)
+    return [dataclasses.replace(m, rank=r) for r, m in enumerate(out)]

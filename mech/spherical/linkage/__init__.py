@@ -1,0 +1,7 @@
+"""A general spherical linkage solver (a crank, then spherical RRR dyads) and the
+Stephenson-1, Stephenson-2, Watt-1 and Watt-2 six-bars on the sphere (monograph §2.4)."""
+
+from mech.spherical.linkage._linkage import SphericalLinkage, SphericalLinkagePose
+from mech.spherical.linkage._sixbars import stephenson1, stephenson2, watt1, watt2
+
+__all__ = ["SphericalLinkage", "SphericalLinkagePose", "stephenson1", "stephenson2", "watt1", "watt2"]
