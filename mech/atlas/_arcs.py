@@ -20,7 +20,9 @@ Three choices keep this sharp, fast and small:
 - windows keep the first `ARC_HARMONICS` harmonics per side only, in float16: 2 bytes *
   4 * 4 harmonics * 65 windows = 2 kB per linkage, 2.6 kB with the float32 squared norms
   and segment lengths (26 MB for 10^4 linkages, 260 MB for 10^5; built in blocks of
-  `_ROWS` linkages, so the build needs little more).
+  `_ROWS` linkages, so the build needs little more). Arcs whose first harmonic is small
+  are also compared with a second set normalised on c_2 (`arc_signatures` with
+  ``base=2``), built on the first such query: as large again, 52 MB for both sets at 10^4.
 
 The alignment stage then frees both ends of the sub-arc: a pattern search on the arc
 length at its two ends, each step fitting the best similarity (place, turn and scale) of the
@@ -113,8 +115,12 @@ def _u_to_length(cum, u):
     return _lerp(cum, g, 1.0)
 
 
-def arc_signatures(atlas, span, starts):
+def arc_signatures(atlas, span, starts, base=1):
     """Window signatures of every atlas curve; cached on the atlas.
+
+    `base` is the harmonic the windows are normalised on (`normal_form`): 1, or 2 for the
+    second set that `query` compares arcs with a small first harmonic against (built on
+    the first such query; as large again).
 
     Returns ``(sigs, norms, gaps)``: ``sigs`` (rows, starts + 1, 4 * ARC_HARMONICS)
     float16, window ``j`` covering the curve parameter from ``u_0 + 2 pi j / starts`` to
@@ -124,7 +130,7 @@ def arc_signatures(atlas, span, starts):
     from window j's signature to window j + 1's (the segment's length).
     """
     cache = atlas._arc_cache
-    key = (float(span), int(starts))
+    key = (float(span), int(starts)) if base == 1 else (float(span), int(starts), int(base))
     if key in cache:
         return cache[key]
     n = atlas.samples
@@ -151,8 +157,8 @@ def arc_signatures(atlas, span, starts):
         arcs = np.where(still[:, None], np.arange(points)[None, :], arcs)
         # the first harmonics only (the normalisation uses all of them, so these are the
         # first entries of the full signature)
-        form = normal_form(_close_arc(arcs), width // 4)
-        cands = form.candidates.reshape(rows.size, windows, 4, width)
+        form = normal_form(_close_arc(arcs), width // 4, base)
+        cands = form.candidates.reshape(rows.size, windows, form.candidates.shape[1], width)
         out = np.empty((rows.size, windows, width))
         out[:, 0] = cands[np.arange(rows.size), 0, form.chosen.reshape(rows.size, windows)[:, 0]]
         for j in range(1, windows):
@@ -167,16 +173,26 @@ def arc_signatures(atlas, span, starts):
     return cache[key]
 
 
-def window_distances(sigs, norms, gaps, candidates):
-    """Per row: the least distance from any of the target's `candidates` (4, D) to the
+def window_distances(sigs, norms, gaps, candidates, second=False):
+    """Per row: the least distance from any of the target's `candidates` (4 or 8, D) to the
     polyline through its window signatures, the window j of that segment and the fraction
-    (0..1) along it towards window j + 1."""
+    (0..1) along it towards window j + 1.
+
+    With `second`, also the window and fraction of the best segment at least an eighth of
+    the cycle away from the first (a second start for the alignment: a folded arc, traced
+    out and back, can look alike from two starts, and the path of its windows' signatures
+    bends sharply near the true one, so a grid segment may miss it by more than a wrong
+    start's)."""
     rows, windows, width = sigs.shape
     c = np.asarray(candidates, dtype=np.float32)
     cc = np.sum(c.astype(np.float64) ** 2, axis=1).astype(np.float32)
     best = np.empty(rows)
     where = np.empty(rows, dtype=np.int64)
     frac = np.empty(rows)
+    where2, frac2 = np.empty(rows, dtype=np.int64), np.empty(rows)
+    steps = windows - 1
+    apart = np.abs(np.arange(steps)[:, None] - np.arange(steps)[None, :])
+    near = np.minimum(apart, steps - apart) < max(1, steps // 8)
     for lo in range(0, rows, _BLOCK):
         block = slice(lo, min(lo + _BLOCK, rows))
         s = sigs[block].astype(np.float32)
@@ -194,6 +210,15 @@ def window_distances(sigs, norms, gaps, candidates):
         best[block] = flat[np.arange(b), k]
         where[block] = k // seg.shape[2]
         frac[block] = lam.reshape(b, -1)[np.arange(b), k]
+        if second:
+            pick = np.argmin(seg, axis=2)                           # best candidate per segment
+            per = np.take_along_axis(seg, pick[:, :, None], 2)[:, :, 0]
+            per = np.where(near[where[block]], np.inf, per)
+            j2 = np.argmin(per, axis=1)
+            where2[block] = j2
+            frac2[block] = lam[np.arange(b), j2, pick[np.arange(b), j2]]
+    if second:
+        return np.sqrt(np.maximum(best, 0.0)), where, frac, where2, frac2
     return np.sqrt(np.maximum(best, 0.0)), where, frac
 
 

@@ -27,6 +27,9 @@ _REFINE = 8
 #: An open arc: rows given a coarse alignment, per row of the short list, and its halvings.
 _ARC_WIDER = 4
 _ARC_COARSE = 4
+#: An open arc whose |c_1| is below this fraction of its RMS radius is also compared with
+#: the window signatures normalised on c_2.
+_ARC_SMALL_FIRST = 0.25
 #: Points per cycle of the curve tables of the coarse alignment.
 _COARSE_TABLE = 512
 _LEVELS = 6
@@ -332,8 +335,11 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     signatures of windows of each closed curve (the arc run forward and back), through
     the distance to the segment between neighbouring windows' signatures, then aligned
     by a pattern search on the two ends of the sub-arc; its matches carry `arc`. When
-    the arc's first harmonic is small (below about a tenth of its RMS radius) the
-    normalisation is ill-conditioned and the right linkage may be missed.
+    the arc's first harmonic is small (|c_1| below a quarter of its RMS radius: an arc that
+    folds back on itself), the normalisation on c_1 is ill-conditioned: such an arc is also
+    compared with a second set of window signatures, normalised on c_2 (built on the first
+    such query, as large as the first set), whose short list is aligned from two starts
+    per row (:ref:`deriv-shape-signature`).
 
     Examples
     --------
@@ -406,31 +412,57 @@ def _nearest(atlas, candidates, m):
 
 def _query_arc(atlas, z, k, shortlist, span, starts):
     """`query` for an open arc `z` (1, m): window signatures, then alignment of both ends."""
-    from mech.atlas._arcs import _WINDOW_TABLE, _truncate, align_arcs, arc_signatures, window_distances
+    from mech.atlas._arcs import align_arcs
 
     n = atlas.samples
     t = _resample_rows(z, n // 2 + 1, False)
-    form = normal_form(_close_arc(t), atlas.harmonics)
-    sigs, norms, gaps = arc_signatures(atlas, span, starts)
-    best, where, frac = window_distances(sigs, norms, gaps, _truncate(form.candidates[0], atlas.harmonics))
+    closed = _close_arc(t)
     # a window's signature is less sharp than a closed curve's (its normalisation rests on
     # the arc's first harmonic, which is often small): a longer list gets a coarse
     # alignment, the best `shortlist` of it the full one
     m = min(_ARC_WIDER * shortlist, len(atlas))
-    short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
-    # the start of the window (and the fraction of a step towards the next) that fits best
-    u0 = 2 * np.pi * (where[short] + frac[short]) / starts + np.pi / _WINDOW_TABLE
+    c = np.abs(np.fft.fft(closed[0]) / closed.shape[1])
+    small = min(c[1], c[-1]) < _ARC_SMALL_FIRST * np.sqrt(np.sum(c[1:] ** 2))
+    short, u0, dist = _arc_shortlist(atlas, closed, 1, span, starts, m)
+    if small:
+        # a small first harmonic: the normalisation on it is ill-conditioned, so the windows
+        # normalised on c_2 give a second list, each row from two starts; both lists are aligned
+        more = _arc_shortlist(atlas, closed, 2, span, starts, m, True)
+        short, u0, dist = (np.concatenate([x, y]) for x, y in zip((short, u0, dist), more))
     step = 0.5 / starts
     err, *_, u0, u1, _ = align_arcs(t[0], atlas.linkages.take(short), u0, u0 + 2 * np.pi * span, step,
                                     levels=_ARC_COARSE, size=_COARSE_TABLE)
-    keep = np.argsort(err, kind="stable")[:min(shortlist, m)]
-    short, u0, u1 = short[keep], u0[keep], u1[keep]
+    order = np.argsort(err, kind="stable")
+    order = order[np.sort(np.unique(short[order], return_index=True)[1])]      # each row once, its best
+    keep = order[:min(shortlist, m)]
+    short, u0, u1, dist = short[keep], u0[keep], u1[keep], dist[keep]
     rows = atlas.linkages.take(short)
     err, w, centroid, points, u0, u1, direction = align_arcs(t[0], rows, u0, u1, step / 2**_ARC_COARSE)
     radius = np.sqrt(np.mean(np.abs(t[0] - t[0].mean()) ** 2))
     return [_match(rank, int(short[j]), rows.take([j]), t[0], w[j], centroid[j], err[j], radius, direction[j],
-                   float(best[short[j]]), points[j], arc=(float(u0[j]), float(u1[j])))
+                   float(dist[j]), points[j], arc=(float(u0[j]), float(u1[j])))
             for rank, j in enumerate(np.argsort(err, kind="stable")[:k])]
+
+
+def _arc_shortlist(atlas, closed, base, span, starts, m, second=False):
+    """The `m` rows whose windows (normalised on harmonic `base`) lie nearest the open
+    target run forward and back (`closed`, (1, N)); the start of the best-fitting window of
+    each (with the fraction of a step towards the next) and the signature distance. With
+    `second`, each row comes twice: from its best start and from its best start an eighth
+    of a cycle or more away (`window_distances`)."""
+    from mech.atlas._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
+
+    form = normal_form(closed, atlas.harmonics, base)
+    sigs, norms, gaps = arc_signatures(atlas, span, starts, base)
+    best, where, frac, *other = window_distances(sigs, norms, gaps, _truncate(form.candidates[0], atlas.harmonics),
+                                                 second)
+    short = np.argpartition(best, m - 1)[:m] if m < len(atlas) else np.arange(len(atlas))
+    u0 = 2 * np.pi * (where[short] + frac[short]) / starts + np.pi / _WINDOW_TABLE
+    if second:
+        where2, frac2 = other
+        u0 = np.concatenate([u0, 2 * np.pi * (where2[short] + frac2[short]) / starts + np.pi / _WINDOW_TABLE])
+        short = np.concatenate([short, short])
+    return short, u0, best[short]
 
 
 def _best_fits(t, dense, keep, levels=None):

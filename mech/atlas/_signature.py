@@ -162,8 +162,13 @@ def _key_weights(size):
     return 1.0 / (1.0 + np.arange(size))
 
 
-def normal_form(z, harmonics):
-    """Normalise rows of equally spaced samples `z` (rows, N); see the derivation page."""
+def normal_form(z, harmonics, base=1):
+    """Normalise rows of equally spaced samples `z` (rows, N); see the derivation page.
+
+    `base` is the harmonic made real and positive: 1 (the signature), or 2 for open arcs
+    whose first harmonic is small (the window signatures normalised on c_2). On c_2 the
+    start shift is defined modulo pi, so each direction has four branches, eight in all.
+    """
     n = z.shape[1]
     C = np.fft.fft(z, axis=1) / n
     # the norm of the harmonics, scaled by the largest so no square overflows (a curve of size 1e300)
@@ -173,10 +178,16 @@ def normal_form(z, harmonics):
     k = np.arange(1, harmonics + 1)
     pos, neg = C[:, k], C[:, -k]
     cands, alphas, directions = [], [], []
+    # the branches (alpha + j pi, sigma + l pi / base) move alpha +- base sigma by (j +- l) pi:
+    # every l = j (mod 2) below 2 base gives a solution (two for base 1, four for base 2)
+    branches = ((0, 0), (1, 1)) if base == 1 else ((0, 0), (1, 1), (0, 2), (1, 3))
     for d, (bp, bn) in ((1, (pos, neg)), (-1, (neg, pos))):
-        alpha, sigma = signature_angles(bp[:, 0].real, bp[:, 0].imag, bn[:, 0].real, bn[:, 0].imag)
-        for j in (0, 1):
-            al, sg = (alpha + j * np.pi)[:, None], (sigma + j * np.pi)[:, None]
+        c_p, c_n = bp[:, base - 1], bn[:, base - 1]
+        alpha, sigma = signature_angles(c_p.real, c_p.imag, c_n.real, c_n.imag)
+        # signature_angles solves alpha + sigma = -arg c_p; on c_base the shift is sigma / base
+        sigma = sigma / base
+        for j, l in branches:
+            al, sg = (alpha + j * np.pi)[:, None], (sigma + l * np.pi / base)[:, None]
             hp = bp * np.exp(1j * (al + k * sg)) / scale[:, None]
             hn = bn * np.exp(1j * (al - k * sg)) / scale[:, None]
             both = np.concatenate([hp, hn], axis=1)
