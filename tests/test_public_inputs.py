@@ -1428,7 +1428,27 @@ CASES.update({
 })
 RECORDS.update({f"spherical.{n}": "result record built by the package" for n in (
     "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar",
-    "SphericalGuidanceMotion", "SphericalOptimalGuidance")})
+    "SphericalGuidanceMotion", "SphericalOptimalGuidance", "SphericalGuidanceSixBar")})
+
+
+def _sx_watt2():
+    lk = sph.watt2(0.3, 0.9, 0.7, 1.0, E=(0.3, 0.5), F=(1.4, 0.4), arcs=(0.6, 0.5), coupler=(0.3, 0.4))
+    return lk, np.array([0.2, 0.7, 1.3, 1.9, 2.6])
+
+
+CASES.update({
+    "spherical.sixbar_orientations": E(lambda: sph.sixbar_orientations, {"linkage": "instance", "theta": "real"},
+                                       linkage=_sx_watt2()[0], theta=[0.1, 0.4]),
+    "spherical.guidance_watt2": E(lambda: sph.guidance_watt2,
+                                  {"R": "matrix", "theta": "real", "crank_pivot": "real", "dyads": "instance?",
+                                   "crank_tip": "real?", "rtol": "scalar", "sweep": "count"},
+                                  R=sph.sixbar_orientations(*_sx_watt2()), theta=_sx_watt2()[1],
+                                  crank_pivot=[0.0, 0.0, 1.0], dyads=None, crank_tip=None, rtol=1e-9, sweep=41),
+    "spherical.SphericalGuidanceSixBar.guided_orientations": E(
+        lambda: sph.guidance_watt2(sph.sixbar_orientations(*_sx_watt2()), _sx_watt2()[1],
+                                   [0.0, 0.0, 1.0], sweep=41)[0].guided_orientations,
+        {"theta": "real"}, theta=[0.2, 0.5]),
+})
 
 
 # ----------------------------------------------------------------------------- the walk
