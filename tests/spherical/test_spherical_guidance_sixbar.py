@@ -101,3 +101,24 @@ def test_guided_link_orientation_carries_the_coupler_point(build, kw):
     assert ok.sum() >= 3
     moved = np.einsum("nij,jk,k->ni", R[ok], R[ok][0].T, P[ok][0])
     assert np.abs(moved - P[ok]).max() < 1e-12
+
+
+def test_optimal_design_beyond_five_lowers_the_error_and_is_measured_by_analysis():
+    from mech.spherical import optimal_guidance_watt2
+    from mech.spherical.guidance._fourbar import _rotation_gap
+    lk, _ = _task()
+    theta = np.linspace(0.2, 2.6, 8)
+    R = sixbar_orientations(lk, theta)
+    c, s = np.cos(0.01), np.sin(0.01)
+    R[3] = R[3] @ np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
+    five = [0, 2, 4, 5, 7]
+    start = [d for d in guidance_watt2(R[five], theta[five], [0.3, -0.2, 0.93]) if d.passes][0]
+    before = _rotation_gap(start.guided_orientations(theta), R)
+    best = optimal_guidance_watt2(R, theta, start)
+    assert best.in_order
+    assert best.rms_error < np.sqrt(np.mean(before ** 2)) and best.pose_error < before.max()
+    # the reported errors are the analysis' (SphericalLinkage), frame of EG times the body axes
+    got = sixbar_orientations(best.linkage, theta + best.input_offset) @ best.body
+    assert np.allclose(_rotation_gap(got, R), best.errors, atol=1e-12)
+    # a body cannot be placed better than its own noise allows: the 0.01 rad disturbance is shared out
+    assert best.pose_error < 0.0095

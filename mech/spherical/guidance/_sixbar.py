@@ -138,16 +138,19 @@ def _relative(A, D, theta, phi):
     return np.array(S)
 
 
-def _build(A, D, F, B, C, E, G):
+def _build(A, D, F, B, C, E, G, branches=None):
+    if branches is None:
+        branches = (1 if np.linalg.det(np.array([B, D, C])) > 0 else -1,
+                    1 if np.linalg.det(np.array([E, F, G])) > 0 else -1)
     lk = (SphericalLinkage({"A": A, "D": D, "F": F})
           .crank("AB", pivot="A", tip="B", arc=float(arc_between(A, B)), reference="D")
           .rrr(("BC", "DC"), pins=("B", "D"), joint="C",
                arcs=(float(arc_between(B, C)), float(arc_between(D, C))),
-               branch=1 if np.linalg.det(np.array([B, D, C])) > 0 else -1)
+               branch=branches[0])
           .point("E", link="DC", at=(float(arc_between(D, E)), float(angle_at(D, C, E))))
           .rrr(("EG", "FG"), pins=("E", "F"), joint="G",
                arcs=(float(arc_between(E, G)), float(arc_between(F, G))),
-               branch=1 if np.linalg.det(np.array([E, F, G])) > 0 else -1))
+               branch=branches[1]))
     return lk, float(angle_at(A, D, B))
 
 
