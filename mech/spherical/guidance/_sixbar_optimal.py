@@ -46,6 +46,8 @@ class SphericalOptimalSixBar:
         Root mean square and largest of `errors`.
     in_order : bool
         The linkage assembles at every input from the first prescribed angle to the last.
+    passes : bool
+        ``in_order`` and ``pose_error <= rtol``.
     nfev : int
         Residual evaluations of the optimiser.
     """
@@ -58,6 +60,7 @@ class SphericalOptimalSixBar:
     rms_error: float
     pose_error: float
     in_order: bool
+    passes: bool
     nfev: int
 
     def guided_orientations(self, theta):
@@ -132,8 +135,8 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     start : SphericalGuidanceSixBar or SphericalOptimalSixBar
         A starting design, for example `guidance_watt2` of five of the orientations.
     rtol : float, optional
-        Kept for symmetry with `optimal_guidance`: the result is returned whatever its
-        error; compare `pose_error` with it.
+        The stated error: the result ``passes`` when its largest orientation error is at
+        most `rtol` (radians) and it is in order; it is returned either way.
     sweep : int, optional
         Inputs sampled from the first prescribed angle to the last for the order check.
 
@@ -152,7 +155,7 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     >>> five = [0, 2, 4, 5, 7]
     >>> start = [d for d in guidance_watt2(R[five], theta[five], [0.3, -0.2, 0.93]) if d.passes][0]
     >>> best = optimal_guidance_watt2(R, theta, start)
-    >>> best.in_order, bool(best.pose_error < 0.01)
+    >>> best.passes, bool(best.pose_error < 0.01)
     (True, True)
     """
     R = orientation_set("R", R)
@@ -167,7 +170,7 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     if not isinstance(start, (SphericalGuidanceSixBar, SphericalOptimalSixBar)):
         raise InputTypeError(f"Expected `start` to be a SphericalGuidanceSixBar or SphericalOptimalSixBar, "
                              f"got {_show(start)}")
-    nonnegative_number("rtol", rtol)
+    rtol = nonnegative_number("rtol", rtol)
     sweep = integer("sweep", sweep, minimum=2)
     from scipy.optimize import least_squares
 
@@ -209,4 +212,5 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     errors = np.where(np.isfinite(errors), errors, np.pi)
     in_order = bool(lk.solve(np.linspace(theta[0], theta[-1], sweep) + offset).assembled.all())
     return SphericalOptimalSixBar(lk, float(offset), pts, body, errors, float(np.sqrt(np.mean(errors ** 2))),
-                                  float(errors.max()), in_order, int(sol.nfev))
+                                  float(errors.max()), in_order, in_order and float(errors.max()) <= rtol,
+                                  int(sol.nfev))
