@@ -49,7 +49,8 @@ def test_designs_reach_the_orientations_by_analysis(pivot):
 
 
 def test_design_satisfies_constant_arcs_at_50_digits():
-    """Independent route: the six-bar's pins carried by the prescribed rotations keep their arcs."""
+    """Monograph chapter 4, Watt-2 by inversion. Independent route: the joints carried by the
+    prescribed rotations keep their arcs."""
     _, R = _task()
     d = [x for x in guidance_watt2(R, THETA, [0.3, -0.2, 0.93]) if x.passes][0]
     P = {k: _vec(v) for k, v in d.points.items()}
