@@ -1494,7 +1494,48 @@ CASES.update({
 })
 RECORDS.update({f"spherical.{n}": "result record built by the package" for n in (
     "SphericalDyad", "SphericalBurmesterCurve", "SphericalBurmesterPoints", "SphericalGuidanceFourBar",
-    "SphericalGuidanceMotion", "SphericalOptimalGuidance")})
+    "SphericalGuidanceMotion", "SphericalOptimalGuidance", "SphericalGuidanceSixBar", "SphericalOptimalSixBar")})
+
+
+def _sx_watt2():
+    lk = sph.watt2(0.3, 0.9, 0.7, 1.0, E=(0.3, 0.5), F=(1.4, 0.4), arcs=(0.6, 0.5), coupler=(0.3, 0.4))
+    return lk, np.array([0.2, 0.7, 1.3, 1.9, 2.6])
+
+
+def _sx_nine():
+    lk, _ = _sx_watt2()
+    theta = np.linspace(0.2, 2.6, 6)
+    R = sph.sixbar_orientations(lk, theta)
+    R[3] = R[3] @ np.array([[1, 0, 0], [0, np.cos(0.01), -np.sin(0.01)], [0, np.sin(0.01), np.cos(0.01)]])
+    return R, theta
+
+
+def _sx_start():
+    R, theta = _sx_nine()
+    five = [0, 1, 2, 4, 5]
+    return [d for d in sph.guidance_watt2(R[five], theta[five], [0.3, -0.2, 0.93], sweep=41) if d.passes][0]
+
+
+CASES.update({
+    "spherical.sixbar_orientations": E(lambda: sph.sixbar_orientations, {"linkage": "instance", "theta": "real"},
+                                       linkage=_sx_watt2()[0], theta=[0.1, 0.4]),
+    "spherical.guidance_watt2": E(lambda: sph.guidance_watt2,
+                                  {"R": "matrix", "theta": "real", "crank_pivot": "real", "dyads": "instance?",
+                                   "crank_tip": "real?", "rtol": "scalar", "sweep": "count"},
+                                  R=sph.sixbar_orientations(*_sx_watt2()), theta=_sx_watt2()[1],
+                                  crank_pivot=[0.0, 0.0, 1.0], dyads=None, crank_tip=None, rtol=1e-9, sweep=41),
+    "spherical.SphericalGuidanceSixBar.guided_orientations": E(
+        lambda: sph.guidance_watt2(sph.sixbar_orientations(*_sx_watt2()), _sx_watt2()[1],
+                                   [0.0, 0.0, 1.0], sweep=41)[0].guided_orientations,
+        {"theta": "real"}, theta=[0.2, 0.5]),
+    "spherical.optimal_guidance_watt2": E(lambda: sph.optimal_guidance_watt2,
+                                          {"R": "matrix", "theta": "real", "start": "instance", "rtol": "scalar",
+                                           "sweep": "count"},
+                                          R=_sx_nine()[0], theta=_sx_nine()[1], start=_sx_start(), rtol=1e-2, sweep=41),
+    "spherical.SphericalOptimalSixBar.guided_orientations": E(
+        lambda: sph.optimal_guidance_watt2(*_sx_nine(), _sx_start(), sweep=41).guided_orientations,
+        {"theta": "real"}, theta=[0.2, 0.5]),
+})
 
 
 # ----------------------------------------------------------------------------- the walk

@@ -16,7 +16,6 @@ _SCHEMATIC = "an explanatory sketch without data; not redrawn"
 
 #: (kind, number) -> why it is not covered yet.
 NOT_COVERED = {
-    ("chapter", "4"): "rigid-body guidance by spherical six-bars: not yet derived",
     ("fig", "2-2"): "drawing symbols of the basic mechanisms; " + _SCHEMATIC,
     ("fig", "2-3"): "the wedge mechanism; " + _SCHEMATIC,
     ("fig", "2-9"): "forces after swapping slider and guide; " + _SCHEMATIC,

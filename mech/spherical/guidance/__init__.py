@@ -26,6 +26,8 @@ from mech.spherical.guidance._optimal import (
     guidance_motion,
     optimal_guidance,
 )
+from mech.spherical.guidance._sixbar import SphericalGuidanceSixBar, guidance_watt2, sixbar_orientations
+from mech.spherical.guidance._sixbar_optimal import SphericalOptimalSixBar, optimal_guidance_watt2
 from mech.spherical.guidance._orientations import (
     crank_residual,
     planar_orientations,
@@ -41,4 +43,5 @@ __all__ = [
     "SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve", "burmester", "slider_dyads",
     "SphericalGuidanceFourBar", "guidance_fourbars", "guidance_slider_crank",
     "SphericalGuidanceMotion", "SphericalOptimalGuidance", "guidance_motion", "optimal_guidance",
+    "SphericalGuidanceSixBar", "guidance_watt2", "sixbar_orientations", "SphericalOptimalSixBar", "optimal_guidance_watt2",
 ]
