@@ -167,3 +167,19 @@ def test_bad_inputs_are_named(kwargs, name):
     args.update(kwargs)
     with pytest.raises(ValueError, match=f"`{name}`"):
         path_fourbar(args.pop("points"), args.pop("theta"), args.pop("start"), **args)
+
+
+def test_formulations_compared_on_speed_and_result():
+    """Exact points: the constant-arc formulation (dot-product residuals, exact Jacobian) is
+    the faster one; the small-circle task, which no four-bar meets exactly: from the same
+    start only the distance formulation ends near the points."""
+    m = SphericalFourBar(*X1[3:7], coupler=tuple(X1[7:]), frame=ground_frame(*X1[:3]))
+    Q = m.solve(TH1).P
+    best = {f: min(path_fourbar(Q, TH1, X1 + 0.05, formulation=f).seconds for _ in range(3))
+            for f in ("distance", "constant-arc")}
+    assert best["constant-arc"] < best["distance"]
+    Q2 = example2_points()
+    dist = path_fourbar(Q2, TH2, X2, tol=TOL2)
+    const = path_fourbar(Q2, TH2, X2, formulation="constant-arc", tol=TOL2)
+    assert dist.passes and not const.passes
+    assert const.max_error > 10 * dist.max_error

@@ -340,7 +340,33 @@ def _constant_arc(Q, th, x0, branch, least_squares):
                                np.sum(B * C, axis=1) - cb, C @ D - cc,
                                np.sum(Q * B, axis=1) - cr, np.sum(Q * C, axis=1) - ce])
 
-    sol = least_squares(fun, z0, xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=1500)
+    def jac(z):
+        # every residual is a dot product: exact derivatives, except dB_i/d(A, D, a), taken
+        # by central differences of the crank point (7 small vectorised calls)
+        A, D, a, C, _ = split(z)
+        g = z[:7]
+        dB = np.empty((n, 3, 7))
+        for k in range(7):
+            h = 1e-7 * max(1.0, abs(g[k]))
+            gp, gm = g.copy(), g.copy()
+            gp[k] += h
+            gm[k] -= h
+            dB[:, :, k] = (_crank_points(gp[0:3], gp[3:6], gp[6], th) - _crank_points(gm[0:3], gm[3:6], gm[6], th)) / (2 * h)
+        B = _crank_points(A, D, a, th)
+        J = np.zeros((2 + 5 * n, 11 + 3 * n))
+        J[0, 0:3], J[1, 3:6] = 2 * A, 2 * D
+        cos = 7 + 3 * n
+        for i in range(n):
+            c = slice(7 + 3 * i, 10 + 3 * i)
+            r = 2 + i + n * np.arange(5)
+            J[r[0], c] = 2 * C[i]
+            J[r[1], 0:7], J[r[1], c], J[r[1], cos] = C[i] @ dB[i], B[i], -1.0
+            J[r[2], c], J[r[2], 3:6], J[r[2], cos + 1] = D, C[i], -1.0
+            J[r[3], 0:7], J[r[3], cos + 2] = Q[i] @ dB[i], -1.0
+            J[r[4], c], J[r[4], cos + 3] = Q[i], -1.0
+        return J
+
+    sol = least_squares(fun, z0, jac=jac, xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=1500)
     A, D, a, C, _ = split(sol.x)
     A, D, C = _unit(A), _unit(D), _unit(C)
     B = _crank_points(A, D, a, th)
