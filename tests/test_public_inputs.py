@@ -162,6 +162,25 @@ def second2(v):
     return (0.3, v)
 
 
+def _sph_path_task():
+    x = np.array([0.3, 1.2, 0.4, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8])
+    m = sph.SphericalFourBar(*x[3:7], coupler=tuple(x[7:]), frame=sph.ground_frame(*x[:3]))
+    th = np.linspace(0.2, 1.2, 4)
+    return m.solve(th).P, th, x + 0.02
+
+
+def _sph_path6_task():
+    from mech.spherical.path._synthesis import _stephenson
+
+    x = np.array([0.2, 1.1, 0.3, 0.3, 0.9, 0.7, 1.0, 0.2, 0.8, 0.3, -1.0, 0.8, 0.7, 0.4, 0.5])
+    th = np.linspace(0.0, 1.2, 5)
+    return _stephenson(x, (1, 1)).solve(th).points["P"], th, x + 0.01
+
+
+_SPH_PATH = _sph_path_task()
+_SPH_PATH6 = _sph_path6_task()
+
+
 def _fourbar():
     return pl.FourBar(10, 40, 30, 35, coupler=(20, 10))
 
@@ -669,6 +688,19 @@ CASES = {
                                  linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
     "spherical.coupler_quartic": E(lambda: sph.coupler_quartic, {"linkage": "vec3", "points": "vec3"},
                                    linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
+    "spherical.path_fourbar": E(lambda: sph.path_fourbar,
+                                {"points": "vec3", "theta": "real", "start": "vec3", "formulation": "option",
+                                 "metric": "option", "branch": "branch", "tol": "tolerance"},
+                                points=_SPH_PATH[0], theta=_SPH_PATH[1], start=_SPH_PATH[2], formulation="distance",
+                                metric="arc", branch=1, tol=1e-3),
+    "spherical.path_stephenson1": E(lambda: sph.path_stephenson1,
+                                    {"points": "vec3", "theta": "real", "start": "vec3", "metric": "option",
+                                     "branches": ("branch", first), "tol": "tolerance"},
+                                    points=_SPH_PATH6[0], theta=_SPH_PATH6[1], start=_SPH_PATH6[2], metric="chord",
+                                    branches=(1, 1), tol=1e-3),
+    "spherical.path_verify": E(lambda: sph.path_verify,
+                               {"linkage": "instance", "points": "vec3", "theta": "real", "tol": "tolerance"},
+                               linkage=_sfb(), points=_SPH_PATH[0], theta=_SPH_PATH[1], tol=1e-3),
     "spherical.nine_parameters": E(lambda: sph.nine_parameters, {"linkage": "instance"}, linkage=_sfb()),
     "spherical.SphericalLinkage": E(lambda: sph.SphericalLinkage, {"ground": ("vec3", lambda v: {"A": v})},
                                     ground={"A": [0.0, 0.0, 1.0]}),
@@ -871,7 +903,7 @@ RECORDS = {
         "AssemblyRange", "ChainPose", "DoubleJointPose", "RCCCPose", "RSSRPose")},
     **{f"spherical.{n}": "result record built by the package" for n in (
         "Circle", "Collinearity", "FunctionGenerator", "Intersection", "PolygonRelations", "SliderStroke",
-        "SphericalFourBarPose", "SphericalLinkagePose", "SphericalPolygon", "SphericalType")},
+        "SphericalFourBarPose", "SphericalLinkagePose", "SphericalPathDesign", "SphericalPolygon", "SphericalType")},
     **{f"exercises.{n}": "record of the exercise catalogue built by the package" for n in (
         "Exercise", "Interval", "Parameter", "Part", "Result", "Solution")},
 }

@@ -96,7 +96,16 @@ from mech.spherical.guidance import (
     slider_point_curve,
     slider_residual,
 )
-from mech.spherical.path import CouplerOctic, coupler_octic, coupler_quartic, nine_parameters
+from mech.spherical.path import (
+    CouplerOctic,
+    SphericalPathDesign,
+    coupler_octic,
+    coupler_quartic,
+    nine_parameters,
+    path_fourbar,
+    path_stephenson1,
+    path_verify,
+)
 from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
@@ -202,4 +211,8 @@ __all__ = [
     "stephenson2",
     "watt1",
     "watt2",
+    "SphericalPathDesign",
+    "path_fourbar",
+    "path_stephenson1",
+    "path_verify",
 ]
