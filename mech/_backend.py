@@ -17,8 +17,6 @@ import importlib.util
 import os
 import threading
 
-import numpy as np
-
 __all__ = ["set_backend", "get_backend"]
 
 BACKENDS = ("auto", "numpy", "numba")
@@ -125,5 +123,8 @@ def workspace(key, rows, n):
         buffers = _local.buffers = {}
     buf = buffers.get(key)
     if buf is None or buf.size < rows * n:
+        # NumPy is imported here, not at the top: `mech.index` imports `mech` and must stay free of it.
+        import numpy as np
+
         buf = buffers[key] = np.empty(max(rows * n, 16 * BLOCK))
     return buf[: rows * n].reshape(rows, n)
