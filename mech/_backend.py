@@ -111,7 +111,13 @@ def use_numba(size):
 
 def numba_kernels(stem):
     """The generated numba module ``mech._generated.<stem>_numba`` (imported on first use)."""
-    return importlib.import_module(f"mech._generated.{stem}_numba")
+    module = _kernel_modules.get(stem)
+    if module is None:
+        module = _kernel_modules[stem] = importlib.import_module(f"mech._generated.{stem}_numba")
+    return module
+
+
+_kernel_modules = {}
 
 
 def workspace(key, rows, n):
