@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:5df0c82ad3adeaf1f4649ded953e31d22e2487fd3e634fd3fbd0db11ac31651c"
+INPUT_HASH = "sha256:165bfca3e6099e3926d1655e17bb371461d9e59b89c091f89a80442a7da13c5c"
 
 __all__ = ['fourbar_position_kernel', 'fourbar_position_signed_kernel', 'fourbar_velocity_kernel', 'fourbar_acceleration_kernel']
 
