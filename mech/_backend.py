@@ -27,6 +27,10 @@ NUMBA_MIN_SIZE = 4096
 #: Points per block of the NumPy kernels: their temporaries (a few tens of rows of this
 #: length) stay in the L2 cache and are reused from block to block and call to call.
 BLOCK = 4096
+#: Points per block of the numba kernels: large enough that the per-call cost vanishes,
+#: small enough that the solver's passes after the kernel (scaling, the finiteness check)
+#: find the block's outputs still in cache.
+NUMBA_BLOCK = 16384
 
 _state = {"backend": None, "numba": None}
 _local = threading.local()

@@ -311,10 +311,10 @@ class FourBar:
         out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float)
                for name in _FIELDS[: _FIELD_COUNT[order]]}
         out["valid"] = np.empty(size, dtype=bool)
-        # numba: one fused loop per field group over all points; NumPy: blocks that fit in
+        # numba: fused loops over blocks of NUMBA_BLOCK points; NumPy: blocks that fit in
         # cache, every temporary in one reused work array (no allocation per block)
         numba = _backend.use_numba(size) and not self._kite
-        step = max(size, 1) if numba else _backend.BLOCK
+        step = _backend.NUMBA_BLOCK if numba else _backend.BLOCK
         # B and C in the scaled lengths are kept for the angles phi and psi (FourBarPose):
         # as they are, or (exponent in 0 .. _EXACT_EXPONENT) as the points in the user's
         # unit, which scale back exactly: then every field is scaled in place, block by
@@ -363,7 +363,7 @@ class FourBar:
             args = (a, b, c, d, p, q, theta, branch, *self._gaps, *flags)
             B, C, P = out["B"], out["C"], out["P"]
             if numba:
-                S = np.empty(n)
+                S = _backend.workspace("fourbar_numba", 1, n)[0]
                 kernel = getattr(_backend.numba_kernels("fourbar_position"), f"{name}_kernel")
                 kernel(*args, B.real, B.imag, C.real, C.imag, P.real, P.imag, S)
             else:

@@ -163,10 +163,10 @@ class GuideBar:
         size = flat[0].size
         names = _FIELDS[: _FIELD_COUNT[order]]
         out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float) for name in names}
-        # numba: one fused loop per field group; NumPy: cache-sized blocks, temporaries in
-        # one reused work array, each block scaled and checked while it is in cache
+        # numba: fused loops over NUMBA_BLOCK points at a time; NumPy: cache-sized blocks,
+        # temporaries in one reused work array; each block scaled and checked in cache
         numba = _backend.use_numba(size)
-        step = max(size, 1) if numba else _backend.BLOCK
+        step = _backend.NUMBA_BLOCK if numba else _backend.BLOCK
         finite = True
         for start in range(0, max(size, 1), step):
             block = slice(start, start + step)

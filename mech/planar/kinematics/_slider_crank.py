@@ -224,11 +224,11 @@ class SliderCrank:
         names = _FIELDS[: _FIELD_COUNT[order]]
         out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float) for name in names}
         out["valid"] = np.empty(size, dtype=bool)
-        # numba: one fused loop per field group over all points; NumPy: cache-sized blocks,
+        # numba: fused loops over NUMBA_BLOCK points at a time; NumPy: cache-sized blocks,
         # temporaries in one reused work array, then each block masked, scaled and checked
         # while it is in cache
         numba = _backend.use_numba(size)
-        step = max(size, 1) if numba else _backend.BLOCK
+        step = _backend.NUMBA_BLOCK if numba else _backend.BLOCK
         finite = True
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             for start in range(0, max(size, 1), step):
