@@ -21,7 +21,7 @@ import sympy as sm
 from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 
-__all__ = ["numpy_kernel", "numba_kernel", "cse_of"]
+__all__ = ["numpy_kernel", "numba_kernel", "cse_of", "real_parts", "has_complex"]
 
 _UFUNCS = {
     sm.sin: "sin", sm.cos: "cos", sm.tan: "tan", sm.asin: "arcsin", sm.acos: "arccos",
@@ -30,9 +30,63 @@ _UFUNCS = {
 }
 
 
-def cse_of(f):
-    """``(replacements, reduced)`` of one function's outputs, as the NumPy module uses them."""
-    return sm.cse(f.exprs(), symbols=sm.numbered_symbols("x"), order="none")
+def real_parts(f):
+    """The kernels' outputs: each real output as it is, a complex one as its real and
+    imaginary parts (the caller passes ``z.real, z.imag`` of its complex array).
+
+    Returns ``(exprs, slots)``, ``slots[j] = (k, part)``: output ``k`` of `f`, part
+    ``None`` (real), ``"real"`` or ``"imag"``.
+    """
+    exprs, slots = [], []
+    for k, expr in enumerate(f.exprs()):
+        if expr.has(sm.I):
+            exprs += list(_split(expr))
+            slots += [(k, "real"), (k, "imag")]
+        else:
+            exprs.append(expr)
+            slots.append((k, None))
+    return exprs, slots
+
+
+def _split(expr):
+    """``(re, im)`` of `expr`, taking every subexpression free of ``I`` as real.
+
+    That is the generated code's convention: a square root of a negative number is NaN
+    (the pose does not exist), not imaginary, so ``sqrt(u)`` stays ``sqrt(u)`` in the real
+    part rather than becoming ``|u|**(1/2) cos(arg(u)/2)`` as SymPy's ``as_real_imag``
+    would write it for a symbol of unknown sign.
+    """
+    if not expr.has(sm.I):
+        return expr, sm.S.Zero
+    if expr == sm.I:
+        return sm.S.Zero, sm.S.One
+    if expr.is_Add:
+        parts = [_split(t) for t in expr.args]
+        return sm.Add(*[r for r, _ in parts]), sm.Add(*[i for _, i in parts])
+    if expr.is_Mul:
+        re, im = sm.S.One, sm.S.Zero
+        for factor in expr.args:
+            r, i = _split(factor)
+            re, im = re * r - im * i, re * i + im * r
+        return re, im
+    if expr.func is sm.exp:
+        r, i = _split(expr.args[0])
+        scale = sm.exp(r) if r != 0 else sm.S.One
+        return scale * sm.cos(i), scale * sm.sin(i)
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0:
+        return _split(sm.Mul(*([expr.base] * int(expr.exp)), evaluate=False))
+    raise NotImplementedError(f"no real and imaginary parts for {expr.func.__name__}: {expr}")
+
+
+def has_complex(f):
+    return any(e.has(sm.I) for e in f.exprs())
+
+
+def cse_of(f, split=False):
+    """``(replacements, reduced)`` of one function's outputs, as the NumPy module uses them;
+    with ``split=True`` of the kernels' real outputs (`real_parts`)."""
+    exprs = real_parts(f)[0] if split else f.exprs()
+    return sm.cse(exprs, symbols=sm.numbered_symbols("x"), order="none")
 
 
 def _scalar(expr):

@@ -25,6 +25,10 @@ NUMBA_MIN_SIZE = 4096
 #: Points per block of the NumPy kernels: their temporaries (a few tens of rows of this
 #: length) stay in the L2 cache and are reused from block to block and call to call.
 BLOCK = 4096
+#: Points per block of the numba kernels: large enough that the per-call cost vanishes,
+#: small enough that the solver's passes after the kernel (scaling, the finiteness check)
+#: find the block's outputs still in cache.
+NUMBA_BLOCK = 16384
 
 _state = {"backend": None, "numba": None}
 _local = threading.local()
@@ -109,7 +113,13 @@ def use_numba(size):
 
 def numba_kernels(stem):
     """The generated numba module ``mech._generated.<stem>_numba`` (imported on first use)."""
-    return importlib.import_module(f"mech._generated.{stem}_numba")
+    module = _kernel_modules.get(stem)
+    if module is None:
+        module = _kernel_modules[stem] = importlib.import_module(f"mech._generated.{stem}_numba")
+    return module
+
+
+_kernel_modules = {}
 
 
 def workspace(key, rows, n):

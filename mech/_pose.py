@@ -1,6 +1,7 @@
 """The immutable result record shared by every `solve` of the package."""
 
 import functools
+import math
 
 import numpy as np
 
@@ -29,9 +30,11 @@ class Pose:
     _ORDER_OF = {}
     _DERIVED = ()
 
-    def __init__(self, order, fields):
+    def __init__(self, order, fields, finite=False):
+        # finite=True: the solver has already checked that every solved field is finite
+        # (block by block, while the block was in cache), so the promise holds as it is
         object.__setattr__(self, "order", order)
-        object.__setattr__(self, "_fields", _keep_promise(fields))
+        object.__setattr__(self, "_fields", fields if finite else _keep_promise(fields))
 
     def __getattr__(self, name):
         fields = self.__dict__.get("_fields", {})
@@ -79,16 +82,26 @@ def quiet_overflow(solve):
 
 
 def _all_finite(value):
-    """True if no element of a float or complex array is NaN or infinite (no temporaries)."""
+    """True if no element of a float or complex array is NaN or infinite (no temporaries).
+
+    One pass: the sum of the elements is finite only if every element is (NaN or inf in,
+    NaN or inf out). A finite array whose sum overflows is reported False; the caller then
+    takes its exact, slower route, so the answer is never wrong, only slower.
+    """
+    with np.errstate(invalid="ignore", over="ignore"):
+        return _finite_sum(value)
+
+
+def _finite_sum(value):
+    """`_all_finite` without its error state: for callers that have set their own."""
     if value.size == 0:
         return True
     if value.dtype.kind == "c":
-        contiguous = value.ndim > 0 and value.flags.c_contiguous
-        parts = (value.view(value.real.dtype),) if contiguous else (value.real, value.imag)
-    else:
-        parts = (value,)
-    with np.errstate(invalid="ignore"):
-        return all(np.isfinite(p.min()) and np.isfinite(p.max()) for p in parts)
+        if value.ndim > 0 and value.flags.c_contiguous:
+            return math.isfinite(np.add.reduce(value.view(value.real.dtype), axis=None))
+        return math.isfinite(np.add.reduce(value.real, axis=None)) and math.isfinite(
+            np.add.reduce(value.imag, axis=None))
+    return math.isfinite(np.add.reduce(value, axis=None))
 
 
 def _keep_promise(fields):

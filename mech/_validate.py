@@ -410,8 +410,19 @@ def motion_inputs(name, angle, order, omega, alpha):
         inputs.append(finite_array("omega", omega))
     if order >= 2:
         inputs.append(finite_array("alpha", alpha))
-    shape = common_shape(**dict(zip((name, "omega", "alpha"), inputs)))
-    return order, shape, [np.broadcast_to(x, shape) for x in inputs]
+    shape = inputs[0].shape
+    if any(x.shape != shape for x in inputs[1:]):
+        shape = common_shape(**dict(zip((name, "omega", "alpha"), inputs)))
+    return order, shape, [_read_only(x, shape) for x in inputs]
+
+
+def _read_only(x, shape):
+    """``x`` broadcast to `shape` as a read-only view (a plain view when no broadcast is needed)."""
+    if x.shape != shape:
+        return np.broadcast_to(x, shape)
+    view = x.view()
+    view.flags.writeable = False
+    return view
 
 
 def common_shape(**arrays):

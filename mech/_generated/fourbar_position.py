@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:42a68bf423eac3889e0ff986d46dfce2688330ebf1af38f47beabdf7e83df163"
+INPUT_HASH = "sha256:165bfca3e6099e3926d1655e17bb371461d9e59b89c091f89a80442a7da13c5c"
 
 __all__ = ['fourbar_assembly_gaps', 'fourbar_position', 'fourbar_position_signed', 'fourbar_velocity', 'fourbar_acceleration', 'fourbar_position_into', 'fourbar_position_signed_into', 'fourbar_velocity_into', 'fourbar_acceleration_into']
 
@@ -529,159 +529,111 @@ def fourbar_acceleration(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, alpha
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
-    x0 = omega_output**2
-    x1 = C_y**2*x0
-    x2 = omega**2
-    x3 = B_x*x2
-    x4 = B_y*alpha
-    x5 = B_y*x2
-    x6 = -B_x + C_x
-    x7 = omega_coupler**2
-    x8 = x6*x7
+    x0 = C_x - d
+    x1 = omega_coupler**2
+    x2 = -B_x + C_x
+    x3 = omega_output**2
+    x4 = x0*x3
+    x5 = omega**2
+    x6 = B_x*x5 + B_y*alpha
+    x7 = x1*x2 - x4 + x6
+    x8 = C_y*x3
     x9 = -B_y + C_y
-    x10 = x7*x9
-    x11 = C_x - d
-    x12 = x0*x11
-    x13 = B_x*alpha
-    x14 = C_y*x13
-    x15 = C_x*x12
-    x16 = S**(-1.0)
-    x17 = branch**(-1.0)
-    x18 = 2*x16*x17
-    x19 = x18*(C_x*x3 + C_x*x4 + C_x*x8 + C_y*x10 + C_y*x5 + d*x12 - d*x3 - d*x4 - d*x8 - x1 - x14 - x15)
-    x20 = -B_x**2*x2 + B_x*C_x*x2 + B_x*x0*x11 - B_x*x8 - B_y**2*x2 + B_y*C_x*alpha + B_y*C_y*x0 + B_y*C_y*x2 - B_y*x10 + C_x*x6*x7 + C_y*x7*x9 - x1 - x14 - x15
-    x21 = x18*x20
-    x22 = x3 + x4
-    x23 = x13 - x5
-    x24 = p*x6 - q*x9
-    x25 = b**(-1.0)
-    x26 = x25*x7
-    x27 = p*x9 + q*x6
-    x28 = x19*x25
+    x10 = B_x*alpha - B_y*x5
+    x11 = -2*x1*x9 + 2*x10 + 2*x8
+    x12 = S**(-1.0)
+    x13 = branch**(-1.0)
+    x14 = x12*x13
+    x15 = x14*(-C_y*x11 + 2*x0*x7)
+    x16 = -x11*x9 + 2*x2*x7
+    x17 = x14*x16
+    x18 = p*x2 - q*x9
+    x19 = b**(-1.0)
+    x20 = x1*x19
+    x21 = p*x9 + q*x2
+    x22 = x15*x19
     return (
-        x19,
-        x21,
-        -x22,
-        x23,
-        -C_y*x21 - x12,
-        -C_y*x0 + 2*x11*x16*x17*x20,
-        -x22 - x24*x26 - x27*x28,
-        x23 + x24*x28 - x26*x27,
+        x15,
+        x17,
+        -x6,
+        x10,
+        -C_y*x17 - x4,
+        x0*x12*x13*x16 - x8,
+        -x18*x20 - x21*x22 - x6,
+        x10 + x18*x22 - x20*x21,
     )
 
 
 def fourbar_acceleration_into(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, alpha, omega_coupler, omega_output, out, work):
     """`fourbar_acceleration` written into ``out`` (one array per output, in order), using the
-    rows of ``work`` (shape (21, n)) for temporaries; per-point arguments: ``B_x``, ``B_y``, ``C_x``, ``C_y``, ``S``, ``omega``, ``alpha``, ``omega_coupler``, ``omega_output`` (length n)."""
-    x17 = (branch**(-1.0))
-    x25 = (b**(-1.0))
-    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w20 = work[:21]
-    np.square(omega_output, out=w0)
-    np.square(C_y, out=w1)
-    np.multiply(w0, w1, out=w1)
-    np.square(omega, out=w2)
-    np.multiply(w2, B_x, out=w3)
-    np.multiply(B_y, alpha, out=w4)
-    np.multiply(w2, B_y, out=w5)
-    np.subtract(C_x, B_x, out=w6)
-    np.square(omega_coupler, out=w7)
-    np.multiply(w6, w7, out=w8)
-    np.subtract(C_y, B_y, out=w9)
-    np.multiply(w7, w9, out=w10)
-    np.add(C_x, (-d), out=w11)
-    np.multiply(w0, w11, out=w12)
-    np.multiply(B_x, alpha, out=w13)
-    np.multiply(w13, C_y, out=w14)
-    np.multiply(w12, C_x, out=w15)
-    np.divide(1.0, S, out=w16)
-    np.multiply(w16, (2*x17), out=w17)
-    np.multiply(w10, C_y, out=w18)
-    np.multiply(w12, d, out=w19)
-    np.add(w18, w19, out=w18)
-    np.multiply(w3, C_x, out=w19)
-    np.add(w18, w19, out=w18)
-    np.multiply(w4, C_x, out=w19)
-    np.add(w18, w19, out=w18)
-    np.multiply(w5, C_y, out=w19)
-    np.add(w18, w19, out=w18)
-    np.multiply(w8, C_x, out=w19)
-    np.add(w18, w19, out=w18)
-    np.subtract(w18, w1, out=w18)
-    np.subtract(w18, w14, out=w18)
-    np.subtract(w18, w15, out=w18)
-    np.multiply(w3, d, out=w19)
-    np.subtract(w18, w19, out=w18)
-    np.multiply(w4, d, out=w19)
-    np.subtract(w18, w19, out=w18)
-    np.multiply(w8, d, out=w19)
-    np.subtract(w18, w19, out=w18)
-    np.multiply(w17, w18, out=w18)
-    np.multiply(w0, w11, out=w19)
-    np.multiply(w19, B_x, out=w19)
-    np.multiply(w0, B_y, out=w20)
-    np.multiply(w20, C_y, out=w20)
-    np.add(w19, w20, out=w19)
-    np.multiply(w2, B_x, out=w20)
-    np.multiply(w20, C_x, out=w20)
-    np.add(w19, w20, out=w19)
-    np.multiply(w2, B_y, out=w20)
-    np.multiply(w20, C_y, out=w20)
-    np.add(w19, w20, out=w19)
-    np.multiply(w6, w7, out=w20)
-    np.multiply(w20, C_x, out=w20)
-    np.add(w19, w20, out=w19)
-    np.multiply(w7, w9, out=w20)
-    np.multiply(w20, C_y, out=w20)
-    np.add(w19, w20, out=w19)
-    np.multiply(B_y, C_x, out=w20)
-    np.multiply(w20, alpha, out=w20)
-    np.add(w19, w20, out=w19)
-    np.subtract(w19, w1, out=w19)
-    np.subtract(w19, w14, out=w19)
-    np.subtract(w19, w15, out=w19)
-    np.multiply(w10, B_y, out=w20)
-    np.subtract(w19, w20, out=w19)
-    np.square(B_x, out=w20)
-    np.multiply(w2, w20, out=w20)
-    np.subtract(w19, w20, out=w19)
-    np.square(B_y, out=w20)
-    np.multiply(w2, w20, out=w20)
-    np.subtract(w19, w20, out=w19)
-    np.multiply(w8, B_x, out=w20)
-    np.subtract(w19, w20, out=w19)
-    np.multiply(w17, w19, out=w15)
-    np.add(w3, w4, out=w17)
-    np.subtract(w13, w5, out=w4)
-    np.multiply(w6, p, out=w13)
-    np.multiply(w9, q, out=w5)
-    np.subtract(w13, w5, out=w13)
-    np.multiply(w7, x25, out=w5)
-    np.multiply(w6, q, out=w7)
-    np.multiply(w9, p, out=w3)
-    np.add(w7, w3, out=w7)
-    np.multiply(w18, x25, out=w9)
-    np.copyto(out[0], w18)
-    np.copyto(out[1], w15)
-    np.negative(w17, out=out[2])
-    np.copyto(out[3], w4)
-    np.negative(w12, out=w6)
-    np.multiply(w15, C_y, out=w3)
-    np.subtract(w6, w3, out=out[4])
-    np.multiply(w11, w16, out=w3)
-    np.multiply(w3, w19, out=w3)
-    np.multiply(w3, (2*x17), out=w3)
-    np.multiply(w0, C_y, out=w6)
-    np.subtract(w3, w6, out=out[5])
-    np.negative(w17, out=w6)
-    np.multiply(w13, w5, out=w3)
-    np.subtract(w6, w3, out=w6)
-    np.multiply(w7, w9, out=w3)
-    np.subtract(w6, w3, out=out[6])
-    np.multiply(w13, w9, out=w3)
-    np.add(w4, w3, out=w3)
-    np.multiply(w5, w7, out=w6)
-    np.subtract(w3, w6, out=out[7])
+    rows of ``work`` (shape (15, n)) for temporaries; per-point arguments: ``B_x``, ``B_y``, ``C_x``, ``C_y``, ``S``, ``omega``, ``alpha``, ``omega_coupler``, ``omega_output`` (length n)."""
+    x13 = (branch**(-1.0))
+    x19 = (b**(-1.0))
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11, w12, w13, w14 = work[:15]
+    np.add(C_x, (-d), out=w0)
+    np.square(omega_coupler, out=w1)
+    np.subtract(C_x, B_x, out=w2)
+    np.square(omega_output, out=w3)
+    np.multiply(w0, w3, out=w4)
+    np.square(omega, out=w5)
+    np.multiply(w5, B_x, out=w6)
+    np.multiply(B_y, alpha, out=w7)
+    np.add(w6, w7, out=w6)
+    np.multiply(w1, w2, out=w7)
+    np.add(w6, w7, out=w7)
+    np.subtract(w7, w4, out=w7)
+    np.multiply(w3, C_y, out=w8)
+    np.subtract(C_y, B_y, out=w3)
+    np.multiply(B_x, alpha, out=w9)
+    np.multiply(w5, B_y, out=w10)
+    np.subtract(w9, w10, out=w9)
+    np.multiply(w9, 2, out=w5)
+    np.multiply(w8, 2, out=w10)
+    np.add(w5, w10, out=w5)
+    np.multiply(w1, w3, out=w10)
+    np.multiply(w10, 2, out=w10)
+    np.subtract(w5, w10, out=w5)
+    np.divide(1.0, S, out=w10)
+    np.multiply(w10, x13, out=w11)
+    np.multiply(w0, w7, out=w12)
+    np.multiply(w12, 2, out=w12)
+    np.multiply(w5, C_y, out=w13)
+    np.subtract(w12, w13, out=w12)
+    np.multiply(w11, w12, out=w12)
+    np.multiply(w2, w7, out=w13)
+    np.multiply(w13, 2, out=w13)
+    np.multiply(w5, w3, out=w14)
+    np.subtract(w13, w14, out=w13)
+    np.multiply(w11, w13, out=w5)
+    np.multiply(w2, p, out=w11)
+    np.multiply(w3, q, out=w7)
+    np.subtract(w11, w7, out=w11)
+    np.multiply(w1, x19, out=w7)
+    np.multiply(w2, q, out=w1)
+    np.multiply(w3, p, out=w14)
+    np.add(w1, w14, out=w1)
+    np.multiply(w12, x19, out=w3)
+    np.copyto(out[0], w12)
+    np.copyto(out[1], w5)
+    np.negative(w6, out=out[2])
+    np.copyto(out[3], w9)
+    np.negative(w4, out=w2)
+    np.multiply(w5, C_y, out=w14)
+    np.subtract(w2, w14, out=out[4])
+    np.multiply(w0, w10, out=w14)
+    np.multiply(w14, w13, out=w14)
+    np.multiply(w14, x13, out=w14)
+    np.subtract(w14, w8, out=out[5])
+    np.negative(w6, out=w14)
+    np.multiply(w11, w7, out=w2)
+    np.subtract(w14, w2, out=w14)
+    np.multiply(w1, w3, out=w2)
+    np.subtract(w14, w2, out=out[6])
+    np.multiply(w11, w3, out=w2)
+    np.add(w9, w2, out=w2)
+    np.multiply(w7, w1, out=w14)
+    np.subtract(w2, w14, out=out[7])
 
 
 #: Rows of the ``work`` array each ``*_into`` kernel needs.
-WORK_ROWS = {'fourbar_position': 11, 'fourbar_position_signed': 13, 'fourbar_velocity': 10, 'fourbar_acceleration': 21}
+WORK_ROWS = {'fourbar_position': 11, 'fourbar_position_signed': 13, 'fourbar_velocity': 10, 'fourbar_acceleration': 15}

@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:42a68bf423eac3889e0ff986d46dfce2688330ebf1af38f47beabdf7e83df163"
+INPUT_HASH = "sha256:165bfca3e6099e3926d1655e17bb371461d9e59b89c091f89a80442a7da13c5c"
 
 __all__ = ['fourbar_position_kernel', 'fourbar_position_signed_kernel', 'fourbar_velocity_kernel', 'fourbar_acceleration_kernel']
 
@@ -130,8 +130,8 @@ def fourbar_velocity_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, ou
 @numba.njit(cache=True, nogil=True, error_model='numpy')
 def fourbar_acceleration_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, alpha, omega_coupler, omega_output, out0, out1, out2, out3, out4, out5, out6, out7):
     """`fourbar_acceleration` as one loop over the points, written into out0, out1, ..."""
-    x17 = 1/branch
-    x25 = 1/b
+    x13 = 1/branch
+    x19 = 1/b
     for i in range(out0.shape[0]):
         B_x_i = B_x[i]
         B_y_i = B_y[i]
@@ -142,38 +142,32 @@ def fourbar_acceleration_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega
         alpha_i = alpha[i]
         omega_coupler_i = omega_coupler[i]
         omega_output_i = omega_output[i]
-        x0 = omega_output_i**2
-        x1 = C_y_i**2*x0
-        x2 = omega_i**2
-        x3 = B_x_i*x2
-        x4 = B_y_i*alpha_i
-        x5 = B_y_i*x2
-        x6 = -B_x_i + C_x_i
-        x7 = omega_coupler_i**2
-        x8 = x6*x7
+        x0 = C_x_i - d
+        x1 = omega_coupler_i**2
+        x2 = -B_x_i + C_x_i
+        x3 = omega_output_i**2
+        x4 = x0*x3
+        x5 = omega_i**2
+        x6 = B_x_i*x5 + B_y_i*alpha_i
+        x7 = x1*x2 - x4 + x6
+        x8 = C_y_i*x3
         x9 = -B_y_i + C_y_i
-        x10 = x7*x9
-        x11 = C_x_i - d
-        x12 = x0*x11
-        x13 = B_x_i*alpha_i
-        x14 = C_y_i*x13
-        x15 = C_x_i*x12
-        x16 = 1/S_i
-        x18 = 2*x16*x17
-        x19 = x18*(C_x_i*x3 + C_x_i*x4 + C_x_i*x8 + C_y_i*x10 + C_y_i*x5 + d*x12 - d*x3 - d*x4 - d*x8 - x1 - x14 - x15)
-        x20 = -B_x_i**2*x2 + B_x_i*C_x_i*x2 + B_x_i*x0*x11 - B_x_i*x8 - B_y_i**2*x2 + B_y_i*C_x_i*alpha_i + B_y_i*C_y_i*x0 + B_y_i*C_y_i*x2 - B_y_i*x10 + C_x_i*x6*x7 + C_y_i*x7*x9 - x1 - x14 - x15
-        x21 = x18*x20
-        x22 = x3 + x4
-        x23 = x13 - x5
-        x24 = p*x6 - q*x9
-        x26 = x25*x7
-        x27 = p*x9 + q*x6
-        x28 = x19*x25
-        out0[i] = x19
-        out1[i] = x21
-        out2[i] = -x22
-        out3[i] = x23
-        out4[i] = -C_y_i*x21 - x12
-        out5[i] = -C_y_i*x0 + 2*x11*x16*x17*x20
-        out6[i] = -x22 - x24*x26 - x27*x28
-        out7[i] = x23 + x24*x28 - x26*x27
+        x10 = B_x_i*alpha_i - B_y_i*x5
+        x11 = -2*x1*x9 + 2*x10 + 2*x8
+        x12 = 1/S_i
+        x14 = x12*x13
+        x15 = x14*(-C_y_i*x11 + 2*x0*x7)
+        x16 = -x11*x9 + 2*x2*x7
+        x17 = x14*x16
+        x18 = p*x2 - q*x9
+        x20 = x1*x19
+        x21 = p*x9 + q*x2
+        x22 = x15*x19
+        out0[i] = x15
+        out1[i] = x17
+        out2[i] = -x6
+        out3[i] = x10
+        out4[i] = -C_y_i*x17 - x4
+        out5[i] = x0*x12*x13*x16 - x8
+        out6[i] = -x18*x20 - x21*x22 - x6
+        out7[i] = x10 + x18*x22 - x20*x21

@@ -5,9 +5,9 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:1f0169d2e4ae40cef6e926ea7117163a841d1f4f66177610e1386e7b31d5f3fb"
+INPUT_HASH = "sha256:611d4edc4155c9b80181fb64d4676870499385ff58c808dcc7cb7be14c7b6100"
 
-__all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_acceleration', 'slider_crank_limits', 'slider_crank_transmission', 'slider_crank_min_transmission', 'slider_crank_series', 'guide_bar_position', 'guide_bar_velocity', 'guide_bar_acceleration', 'guide_bar_swing', 'guide_bar_crank']
+__all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_acceleration', 'slider_crank_limits', 'slider_crank_transmission', 'slider_crank_min_transmission', 'slider_crank_series', 'guide_bar_position', 'guide_bar_velocity', 'guide_bar_acceleration', 'guide_bar_swing', 'guide_bar_crank', 'slider_crank_position_into', 'slider_crank_velocity_into', 'slider_crank_acceleration_into', 'guide_bar_position_into', 'guide_bar_velocity_into', 'guide_bar_acceleration_into']
 
 
 def slider_crank_position(a, b, e, theta, m):
@@ -55,6 +55,31 @@ def slider_crank_position(a, b, e, theta, m):
     )
 
 
+def slider_crank_position_into(a, b, e, theta, m, out, work):
+    """`slider_crank_position` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (6, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
+    w0, w1, w2, w3, w4, w5 = work[:6]
+    np.sin(theta, out=w0)
+    np.multiply(w0, a, out=w0)
+    np.add(w0, (-e), out=w1)
+    np.add(w1, b, out=w2)
+    np.negative(w0, out=w3)
+    np.add(w3, (b + e), out=w3)
+    np.multiply(w2, w3, out=w2)
+    np.sqrt(w2, out=w2)
+    np.multiply(w2, m, out=w2)
+    np.cos(theta, out=w3)
+    np.multiply(w3, a, out=w3)
+    np.add(w2, w3, out=w4)
+    np.copyto(out[0], w4)
+    np.negative(w1, out=w5)
+    np.arctan2(w5, w2, out=out[1])
+    np.copyto(out[2], w3)
+    np.copyto(out[3], w0)
+    np.copyto(out[4], w4)
+    out[5][...] = e
+
+
 def slider_crank_velocity(a, b, e, theta, m, omega):
     """Rod angular velocity, slider velocity, crank-pin velocity.
 
@@ -98,6 +123,36 @@ def slider_crank_velocity(a, b, e, theta, m, omega):
         -a*omega*x0*x3*x4*x5 - omega*x2,
         1j*x6*(1j*x1 + x5),
     )
+
+
+def slider_crank_velocity_into(a, b, e, theta, m, omega, out, work):
+    """`slider_crank_velocity` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (7, n)) for temporaries; per-point arguments: ``theta``, ``omega`` (length n)."""
+    x0 = (m**(-1.0))
+    w0, w1, w2, w3, w4, w5, w6 = work[:7]
+    np.sin(theta, out=w0)
+    np.multiply(w0, a, out=w0)
+    np.add(w0, (-e), out=w1)
+    np.add(w1, b, out=w2)
+    np.negative(w0, out=w3)
+    np.add(w3, (b + e), out=w3)
+    np.multiply(w2, w3, out=w2)
+    np.sqrt(w2, out=w2)
+    np.divide(1.0, w2, out=w2)
+    np.cos(theta, out=w3)
+    np.multiply(w3, omega, out=w4)
+    np.multiply(w4, a, out=w4)
+    np.multiply(w0, omega, out=w5)
+    np.multiply(w2, w4, out=w0)
+    np.multiply(w0, (-x0), out=out[0])
+    np.negative(w5, out=w0)
+    np.multiply(w1, w2, out=w6)
+    np.multiply(w6, w3, out=w6)
+    np.multiply(w6, omega, out=w6)
+    np.multiply(w6, (a*x0), out=w6)
+    np.subtract(w0, w6, out=out[1])
+    np.negative(w5, out=out[2])
+    np.copyto(out[3], w4)
 
 
 def slider_crank_acceleration(a, b, e, theta, m, omega, alpha):
@@ -151,6 +206,50 @@ def slider_crank_acceleration(a, b, e, theta, m, omega, alpha):
         -alpha*x2 - x0*x11*x6 - x10*x12 - x7*x9,
         a*(1j*alpha - x7)*(1j*x1 + x8),
     )
+
+
+def slider_crank_acceleration_into(a, b, e, theta, m, omega, alpha, out, work):
+    """`slider_crank_acceleration` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (12, n)) for temporaries; per-point arguments: ``theta``, ``omega``, ``alpha`` (length n)."""
+    x0 = (m**(-1.0))
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11 = work[:12]
+    np.sin(theta, out=w0)
+    np.multiply(w0, a, out=w0)
+    np.negative(w0, out=w1)
+    np.add(w1, (b + e), out=w1)
+    np.add(w0, (-e), out=w2)
+    np.add(w2, b, out=w3)
+    np.multiply(w1, w3, out=w4)
+    np.sqrt(w4, out=w4)
+    np.square(omega, out=w5)
+    np.multiply(w0, w5, out=w6)
+    np.cos(theta, out=w7)
+    np.multiply(w7, a, out=w8)
+    np.multiply(w8, alpha, out=w9)
+    np.negative(w2, out=w10)
+    np.square(w7, out=w2)
+    np.multiply(w5, w2, out=w2)
+    np.multiply(w2, (a**2), out=w2)
+    np.multiply(w1, w3, out=w11)
+    np.divide(w2, w11, out=w2)
+    np.multiply(w10, w2, out=w7)
+    np.multiply(w7, (m**(-2.0)), out=w7)
+    np.add(w6, w7, out=w7)
+    np.subtract(w7, w9, out=w7)
+    np.multiply(w7, x0, out=w7)
+    np.divide(w7, w4, out=w7)
+    np.multiply(w0, alpha, out=w3)
+    np.multiply(w5, w8, out=w1)
+    np.add(w3, w1, out=w3)
+    np.copyto(out[0], w7)
+    np.negative(w3, out=w8)
+    np.multiply(w10, w7, out=w5)
+    np.subtract(w8, w5, out=w8)
+    np.multiply(w2, w4, out=w5)
+    np.multiply(w5, x0, out=w5)
+    np.subtract(w8, w5, out=out[1])
+    np.negative(w3, out=out[2])
+    np.subtract(w9, w6, out=out[3])
 
 
 def slider_crank_limits(a, b, e, m):
@@ -333,6 +432,30 @@ def guide_bar_position(a, d, theta):
     )
 
 
+def guide_bar_position_into(a, d, theta, out, work):
+    """`guide_bar_position` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (3, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
+    x1 = (-d)
+    w0, w1, w2 = work[:3]
+    np.sin(theta, out=w0)
+    np.multiply(w0, a, out=w0)
+    np.cos(theta, out=w1)
+    np.multiply(w1, a, out=w1)
+    np.negative(w1, out=w2)
+    np.add(w2, (-x1), out=w2)
+    np.arctan2(w0, w2, out=w2)
+    np.negative(w2, out=w2)
+    np.add(w2, (np.pi), out=out[0])
+    np.multiply(theta, 1/2, out=w2)
+    np.sin(w2, out=w2)
+    np.square(w2, out=w2)
+    np.multiply(w2, (4*a*d), out=w2)
+    np.add(w2, ((-a - x1)**2), out=w2)
+    np.sqrt(w2, out=out[1])
+    np.copyto(out[2], w1)
+    np.copyto(out[3], w0)
+
+
 def guide_bar_velocity(a, d, theta, omega):
     """Guide angular velocity and sliding speed of the block.
 
@@ -370,6 +493,31 @@ def guide_bar_velocity(a, d, theta, omega):
         omega*x0*x4/np.sqrt(x1),
         1j*x3*(x2 + 1j*x4),
     )
+
+
+def guide_bar_velocity_into(a, d, theta, omega, out, work):
+    """`guide_bar_velocity` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (6, n)) for temporaries; per-point arguments: ``theta``, ``omega`` (length n)."""
+    w0, w1, w2, w3, w4, w5 = work[:6]
+    np.multiply(theta, 1/2, out=w0)
+    np.sin(w0, out=w0)
+    np.square(w0, out=w0)
+    np.multiply(w0, (4*a*d), out=w0)
+    np.add(w0, ((-a + d)**2), out=w0)
+    np.cos(theta, out=w1)
+    np.multiply(omega, a, out=w2)
+    np.sin(theta, out=w3)
+    np.multiply(w2, w3, out=w3)
+    np.multiply(w1, d, out=w4)
+    np.negative(w4, out=w4)
+    np.add(w4, a, out=w4)
+    np.multiply(w2, w4, out=w4)
+    np.divide(w4, w0, out=out[0])
+    np.multiply(w3, d, out=w4)
+    np.sqrt(w0, out=w5)
+    np.divide(w4, w5, out=out[1])
+    np.negative(w3, out=out[2])
+    np.multiply(w1, w2, out=out[3])
 
 
 def guide_bar_acceleration(a, d, theta, omega, alpha):
@@ -414,6 +562,54 @@ def guide_bar_acceleration(a, d, theta, omega, alpha):
         a*d*(alpha*x4 + x2*x5)/np.sqrt(x1) - d**2*x4**2*x5*x7/x1**(3/2),
         a*(x2 + 1j*x4)*(1j*alpha - x5),
     )
+
+
+def guide_bar_acceleration_into(a, d, theta, omega, alpha, out, work):
+    """`guide_bar_acceleration` written into ``out`` (one array per output, in order), using the
+    rows of ``work`` (shape (13, n)) for temporaries; per-point arguments: ``theta``, ``omega``, ``alpha`` (length n)."""
+    x8 = (a**2)
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11, w12 = work[:13]
+    np.multiply(theta, 1/2, out=w0)
+    np.sin(w0, out=w0)
+    np.square(w0, out=w0)
+    np.multiply(w0, (4*a*d), out=w0)
+    np.add(w0, ((-a + d)**2), out=w0)
+    np.cos(theta, out=w1)
+    np.multiply(w1, d, out=w2)
+    np.negative(w2, out=w2)
+    np.add(w2, a, out=w2)
+    np.multiply(alpha, a, out=w3)
+    np.sin(theta, out=w4)
+    np.square(omega, out=w5)
+    np.multiply(w4, w5, out=w6)
+    np.multiply(w6, a, out=w7)
+    np.multiply(w4, alpha, out=w8)
+    np.multiply(w1, w5, out=w9)
+    np.multiply(w2, w3, out=w10)
+    np.multiply(w7, d, out=w11)
+    np.add(w10, w11, out=w10)
+    np.divide(w10, w0, out=w10)
+    np.multiply(w2, w6, out=w11)
+    np.multiply(w11, (2*d*x8), out=w11)
+    np.square(w0, out=w12)
+    np.divide(w11, w12, out=w11)
+    np.subtract(w10, w11, out=out[0])
+    np.add(w9, w8, out=w11)
+    np.multiply(w11, (a*d), out=w11)
+    np.sqrt(w0, out=w10)
+    np.divide(w11, w10, out=w11)
+    np.square(w4, out=w10)
+    np.multiply(w5, w10, out=w10)
+    np.multiply(w10, (d**2*x8), out=w10)
+    np.power(w0, 1.5, out=w12)
+    np.divide(w10, w12, out=w10)
+    np.subtract(w11, w10, out=out[1])
+    np.multiply(w9, a, out=w10)
+    np.negative(w10, out=w10)
+    np.multiply(w8, a, out=w11)
+    np.subtract(w10, w11, out=out[2])
+    np.multiply(w1, w3, out=w11)
+    np.subtract(w11, w7, out=out[3])
 
 
 def guide_bar_swing(a, d):
@@ -464,3 +660,7 @@ def guide_bar_crank(d, swing):
     Arguments broadcast against each other like a NumPy ufunc.
     """
     return d*np.sin((1/2)*swing)
+
+
+#: Rows of the ``work`` array each ``*_into`` kernel needs.
+WORK_ROWS = {'slider_crank_position': 6, 'slider_crank_velocity': 7, 'slider_crank_acceleration': 12, 'guide_bar_position': 3, 'guide_bar_velocity': 6, 'guide_bar_acceleration': 13}

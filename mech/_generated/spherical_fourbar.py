@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:1763e3b5a090ef0b2e8fc4b7d618341889623e886cd2f7b4ce92e260cd5a69a9"
+INPUT_HASH = "sha256:034352197ba026491837230a0e62b3f78d9b31b0c47eb502f1f157b9c32591b3"
 
 __all__ = ['spherical_fourbar_coefficients', 'spherical_fourbar_position', 'spherical_fourbar_velocity', 'spherical_fourbar_acceleration', 'spherical_fourbar_limit_theta', 'spherical_fourbar_position_into', 'spherical_fourbar_velocity_into', 'spherical_fourbar_acceleration_into']
 

@@ -252,9 +252,10 @@ class SphericalFourBar:
                 flat[2] = flat[2] / m / m
         out = {name: np.empty((size, 3)) for name in _VECTORS[order]}
         out.update({name: np.empty(size) for name in _SCALARS[order]})
-        # numba: one fused loop over all points; NumPy: cache-sized blocks with reused work rows
+        # numba: fused loops over NUMBA_BLOCK points at a time; NumPy: cache-sized blocks
+        # with reused work rows
         numba = _backend.use_numba(size) and not self.change_point
-        step = max(size, 1) if numba else _backend.BLOCK
+        step = _backend.NUMBA_BLOCK if numba else _backend.BLOCK
         for start in range(0, max(size, 1), step):
             block = slice(start, start + step)
             self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()}, numba)

@@ -129,3 +129,36 @@ def test_cse_same_numerical_results():
             got = np.array(getattr(generated, f.name)(*args), dtype=float)
             ref = np.array(namespace[f.name](*args), dtype=float)
         np.testing.assert_allclose(got, ref, rtol=1e-12, atol=1e-12)
+
+
+def test_kernels_of_complex_outputs(tmp_path, monkeypatch):
+    """A complex output is two real kernel outputs (real, imaginary part); a root of a
+    negative number stays NaN in both backends, as in the plain NumPy function, and a
+    kernel that swapped the parts is caught against mpmath."""
+    import sympy as sm
+
+    x, a = sm.symbols("x a", real=True)
+    root = sm.sqrt(a - x**2)                  # NaN for |x| > sqrt(a)
+    expr = a * sm.exp(sm.I * x) + root * (x + 2 * sm.I)
+    f = _codegen.Function("cprobe", "A complex probe.", ((a, "scalar"), (x, "per point")),
+                          (("w", expr, "complex value"), ("r", root, "real value")),
+                          {a: (1, 2), x: (-0.9, 0.9)}, vector=(x,))
+    monkeypatch.setattr(_codegen, "GENERATED_DIR", tmp_path)
+    monkeypatch.delenv("MECH_CODEGEN")
+    _codegen.write("cprobe", "derivations/cprobe.md", "(0-0)", [f])
+    spec = importlib.util.spec_from_file_location("_cprobe_kernels", tmp_path / "cprobe.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    xs = np.array([-0.5, 0.0, 0.7, 1.5])     # the last one has no real root at a = 1.2
+    w, r = np.empty(4, complex), np.empty(4)
+    with np.errstate(invalid="ignore"):
+        module.cprobe_into(1.2, xs, (w.real, w.imag, r), np.empty((module.WORK_ROWS["cprobe"], 4)))
+    # independent route: the formula by hand, in complex arithmetic
+    want = 1.2 * np.exp(1j * xs[:3]) + np.sqrt(1.2 - xs[:3] ** 2) * (xs[:3] + 2j)
+    np.testing.assert_allclose(w[:3], want, rtol=1e-14)
+    assert np.isnan(w[3].real) and np.isnan(w[3].imag) and np.isnan(r[3])
+    good = (tmp_path / "cprobe.py").read_text()
+    (tmp_path / "cprobe.py").write_text(good.replace("out[0]", "out[9]").replace("out[1]", "out[0]")
+                                        .replace("out[9]", "out[1]"))
+    with pytest.raises(AssertionError, match="cprobe_into.w disagrees with mpmath"):
+        _codegen.check_fresh("cprobe", "derivations/cprobe.md", "(0-0)", [f])

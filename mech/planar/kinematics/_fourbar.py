@@ -8,7 +8,7 @@ from mech import _backend
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
 from mech._validate import bool_flag, branch_sign, motion_inputs, nonnegative_number, positive_length, real_tuple
-from mech._pose import Pose
+from mech._pose import Pose, _finite_sum
 from mech._scaling import DEAD_POINT_RTOL
 from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
 
@@ -148,8 +148,8 @@ class FourBarPose(Pose):
     }
     _DERIVED = ("phi", "psi")
 
-    def __init__(self, unit, order, fields):
-        super().__init__(order, fields)
+    def __init__(self, unit, order, fields, finite=False):
+        super().__init__(order, fields, finite)
         # B, C and d in the scaled lengths: the angles read from them keep every bit
         # even where the points in the user's unit are subnormal
         object.__setattr__(self, "_unit", unit)
@@ -311,60 +311,73 @@ class FourBar:
         out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float)
                for name in _FIELDS[: _FIELD_COUNT[order]]}
         out["valid"] = np.empty(size, dtype=bool)
-        # numba: one fused loop per field group over all points; NumPy: blocks that fit in
+        # numba: fused loops over blocks of NUMBA_BLOCK points; NumPy: blocks that fit in
         # cache, every temporary in one reused work array (no allocation per block)
         numba = _backend.use_numba(size) and not self._kite
-        step = max(size, 1) if numba else _backend.BLOCK
-        for start in range(0, max(size, 1), step):
-            block = slice(start, start + step)
-            self._solve_block([x[block] for x in flat], order, {k: v[block] for k, v in out.items()}, numba)
+        step = _backend.NUMBA_BLOCK if numba else _backend.BLOCK
+        # B and C in the scaled lengths are kept for the angles phi and psi (FourBarPose):
+        # as they are, or (exponent in 0 .. _EXACT_EXPONENT) as the points in the user's
+        # unit, which scale back exactly: then every field is scaled in place, block by
+        # block while the block is in cache, and checked finite there (Pose's promise)
+        exact = 0 <= self._exponent <= _EXACT_EXPONENT
+        complex_fields = [name for name in out if name in _COMPLEX]
+        finite, scale = True, 2.0**self._exponent
+        # over: 1 / |BD|^2 where B all but meets D (theta ~ 1e-160 with a = d) cannot
+        # assemble, and a point beyond the float range (links near 1e308) becomes inf
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            for start in range(0, max(size, 1), step):
+                block = slice(start, start + step)
+                views = {k: v[block] for k, v in out.items()}
+                self._solve_block([x[block] for x in flat], order, views, numba)
+                if exact and self._exponent:
+                    # a product by a normal power of two rounds once, as ldexp
+                    for name in complex_fields:
+                        np.multiply(views[name].view(float), scale, out=views[name].view(float))
+                finite = finite and all(_finite_sum(views[name]) for name in views if name != "valid")
         valid = out["valid"]
         if strict and not np.all(valid):
             bad = float(flat[0][~valid][0])
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
-        # B and C in the scaled lengths are kept for the angles phi and psi (FourBarPose):
-        # as they are, or (exponent in 0 .. _EXACT_EXPONENT) as the points in the user's
-        # unit, which scale back exactly: then every field is scaled in place, no copy
-        exact = 0 <= self._exponent <= _EXACT_EXPONENT
         unit = (out["B"].reshape(shape), out["C"].reshape(shape), self._unit[3], self._exponent if exact else 0)
-        for name in _COMPLEX.intersection(out):
-            out[name] = _unscale(out[name], self._exponent, copy=not exact and name in ("B", "C"))
+        if not exact:
+            for name in complex_fields:
+                out[name] = _unscale(out[name], self._exponent, copy=name in ("B", "C"))
+            finite = False
         fields = {name: value.reshape(shape)[()] for name, value in out.items()}
         fields["theta"] = np.broadcast_to(theta, shape)[()]
-        return FourBarPose(unit, order, fields)
+        return FourBarPose(unit, order, fields, finite)
 
     def _solve_block(self, inputs, order, out, numba=False):
         """Solve one block of flat inputs, writing into the views in `out`."""
         a, b, c, d, p, q = self._unit
         branch, theta = self._branch, inputs[0]
         n = theta.shape[0]
-        # over: 1 / |BD|^2 where B all but meets D (theta ~ 1e-160 with a = d) cannot assemble
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            if self._kite:
-                B, C, P, S, ratios = kite_pose(a, b, self._gaps[2], self._m4, p, q, theta, branch)
-                out["B"][...], out["C"][...], out["P"][...] = B, C, P
-                position = None
+        # in the error state of the caller (`solve`)
+        if self._kite:
+            B, C, P, S, ratios = kite_pose(a, b, self._gaps[2], self._m4, p, q, theta, branch)
+            out["B"][...], out["C"][...], out["P"][...] = B, C, P
+            position = None
+        else:
+            name = "fourbar_position_signed" if self.change_point else "fourbar_position"
+            flags = (self._m23, self._m4) if self.change_point else ()
+            args = (a, b, c, d, p, q, theta, branch, *self._gaps, *flags)
+            B, C, P = out["B"], out["C"], out["P"]
+            if numba:
+                S = _backend.workspace("fourbar_numba", 1, n)[0]
+                kernel = getattr(_backend.numba_kernels("fourbar_position"), f"{name}_kernel")
+                kernel(*args, B.real, B.imag, C.real, C.imag, P.real, P.imag, S)
             else:
-                name = "fourbar_position_signed" if self.change_point else "fourbar_position"
-                flags = (self._m23, self._m4) if self.change_point else ()
-                args = (a, b, c, d, p, q, theta, branch, *self._gaps, *flags)
-                B, C, P = out["B"], out["C"], out["P"]
-                if numba:
-                    S = np.empty(n)
-                    kernel = getattr(_backend.numba_kernels("fourbar_position"), f"{name}_kernel")
-                    kernel(*args, B.real, B.imag, C.real, C.imag, P.real, P.imag, S)
-                else:
-                    work = _backend.workspace("fourbar", _WORK_ROWS, n)
-                    S = work[_POSITION_ROWS]
-                    getattr(_gen, f"{name}_into")(*args, (B.real, B.imag, C.real, C.imag, P.real, P.imag, S),
-                                                  work[:_gen.WORK_ROWS[name]])
-                position = (B.real, B.imag, C.real, C.imag, S)
-            np.equal(S, S, out=out["valid"])             # False where S is NaN
-            if order >= 1 and (self._kite or self.change_point):
-                self._change_point_rates(inputs, order, out, ratios if self._kite else None)
-            elif order >= 1:
-                self._rates(inputs, order, out, position, numba)
-            self._dead_points(theta, order, out)
+                work = _backend.workspace("fourbar", _WORK_ROWS, n)
+                S = work[_POSITION_ROWS]
+                getattr(_gen, f"{name}_into")(*args, (B.real, B.imag, C.real, C.imag, P.real, P.imag, S),
+                                              work[:_gen.WORK_ROWS[name]])
+            position = (B.real, B.imag, C.real, C.imag, S)
+        np.equal(S, S, out=out["valid"])             # False where S is NaN
+        if order >= 1 and (self._kite or self.change_point):
+            self._change_point_rates(inputs, order, out, ratios if self._kite else None)
+        elif order >= 1:
+            self._rates(inputs, order, out, position, numba)
+        self._dead_points(theta, order, out)
 
     def _dead_points(self, theta, order, out):
         """Inputs within `DEAD_POINT_RTOL` of a dead point are the dead point (`dead_points_near`).

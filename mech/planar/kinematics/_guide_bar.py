@@ -2,9 +2,10 @@
 
 import numpy as np
 
+from mech import _backend
 from mech._generated import slider_crank as _gen
-from mech._validate import common_shape, finite_array, nonnegative_int, positive_length
-from mech._pose import mask_singular_rates, Pose, quiet_overflow
+from mech._validate import motion_inputs, positive_length
+from mech._pose import _finite_sum, mask_singular_rates, Pose, quiet_overflow
 from mech._scaling import length_scale
 
 __all__ = ["GuideBar", "GuideBarPose"]
@@ -13,6 +14,12 @@ __all__ = ["GuideBar", "GuideBarPose"]
 # fields that scale with the unit of length
 _LINEAR = frozenset({"rho", "B", "v_slide", "vB", "a_slide", "aB"})
 _SOLVED_RATES = ("omega_guide", "v_slide", "alpha_guide", "a_slide")
+# the fields of each order, in the kernels' order; the complex ones; rows of the work array
+_FIELDS = ("psi", "rho", "B", "omega_guide", "v_slide", "vB", "alpha_guide", "a_slide", "aB")
+_FIELD_COUNT = {0: 3, 1: 6, 2: 9}
+_COMPLEX = frozenset({"B", "vB", "aB"})
+_WORK_ROWS = max(_gen.WORK_ROWS[name] for name in (
+    "guide_bar_position", "guide_bar_velocity", "guide_bar_acceleration"))
 
 
 class GuideBarPose(Pose):
@@ -151,27 +158,53 @@ class GuideBar:
         >>> round(float(np.degrees(pose.psi)), 9), round(float(pose.omega_guide), 12)
         (150.0, 0.0)
         """
-        order = nonnegative_int("order", order, 2)
-        theta = finite_array("theta", theta)
-        psi, rho, B = _gen.guide_bar_position(*self._unit, theta)
-        fields = {"theta": theta, "valid": np.ones(theta.shape, dtype=bool), "psi": psi, "rho": rho, "B": B}
+        order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
+        flat = [x.reshape(-1) for x in inputs]
+        size = flat[0].size
+        names = _FIELDS[: _FIELD_COUNT[order]]
+        out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float) for name in names}
+        # numba: fused loops over NUMBA_BLOCK points at a time; NumPy: cache-sized blocks,
+        # temporaries in one reused work array; each block scaled and checked in cache
+        numba = _backend.use_numba(size)
+        step = _backend.NUMBA_BLOCK if numba else _backend.BLOCK
+        finite = True
+        for start in range(0, max(size, 1), step):
+            block = slice(start, start + step)
+            views = {k: v[block] for k, v in out.items()}
+            self._solve_block([x[block] for x in flat], order, views, numba)
+            finite = finite and all(_finite_sum(views[k]) for k in names)
+        fields = {name: value.reshape(shape)[()] for name, value in out.items()}
+        fields["theta"] = flat[0].reshape(shape).copy()[()]
+        fields["valid"] = np.ones(shape, dtype=bool)[()]      # the guide-bar always assembles
         if order >= 1:
-            omega = finite_array("omega", omega)
-            common_shape(theta=theta, omega=omega)
-            wg, vs, vB = _gen.guide_bar_velocity(*self._unit, theta, omega)
-            fields.update(omega_guide=wg, v_slide=vs, vB=vB)
+            if finite:                    # no dead point, no rate beyond the float range
+                fields["assembled"] = np.ones(shape, dtype=bool)[()]
+            else:
+                mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
+        return GuideBarPose(order, fields, finite)
+
+    def _solve_block(self, inputs, order, out, numba):
+        """Solve one block of flat inputs into the views in `out` (in the caller's error state)."""
+        theta = inputs[0]
+        outs = [(out["psi"], out["rho"], out["B"].real, out["B"].imag)]
+        if order >= 1:
+            outs.append((out["omega_guide"], out["v_slide"], out["vB"].real, out["vB"].imag))
         if order >= 2:
-            alpha = finite_array("alpha", alpha)
-            common_shape(theta=theta, omega=omega, alpha=alpha)
-            ag, as_, aB = _gen.guide_bar_acceleration(*self._unit, theta, omega, alpha)
-            fields.update(alpha_guide=ag, a_slide=as_, aB=aB)
-        shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
-        fields = {k: np.array(np.broadcast_to(v, shape))[()] for k, v in fields.items()}
-        with np.errstate(over="ignore"):      # a rate near a dead point may overflow: masked below
-            fields.update((k, v * self._scale) for k, v in fields.items() if k in _LINEAR)
-        if order >= 1:
-            mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
-        return GuideBarPose(order, fields)
+            outs.append((out["alpha_guide"], out["a_slide"], out["aB"].real, out["aB"].imag))
+        stages = ("guide_bar_position", "guide_bar_velocity", "guide_bar_acceleration")
+        if numba:
+            kernels = _backend.numba_kernels("slider_crank")
+            for k in range(order + 1):
+                getattr(kernels, f"{stages[k]}_kernel")(*self._unit, theta, *inputs[1:k + 1], *outs[k])
+        else:
+            work = _backend.workspace("guide_bar", _WORK_ROWS, theta.shape[0])
+            for k in range(order + 1):
+                getattr(_gen, f"{stages[k]}_into")(*self._unit, theta, *inputs[1:k + 1], outs[k],
+                                                   work[:_gen.WORK_ROWS[stages[k]]])
+        if self._scale != 1.0:
+            for name in _LINEAR.intersection(out):
+                target = out[name].view(float) if name in _COMPLEX else out[name]
+                np.multiply(target, self._scale, out=target)
 
     def swing(self):
         """Swing of the guide bar, ``2 asin(a / d)`` (F23, in atan2 form).

@@ -5,11 +5,13 @@ from typing import NamedTuple
 
 import numpy as np
 
+from mech import _backend
 from mech._errors import AssemblyError
 from mech._generated import slider_crank as _gen
 from mech._validate import (
-    bool_flag, branch_sign, common_shape, finite_array, nonnegative_int, positive_length, real_number)
-from mech._pose import mask_singular_rates, Pose, quiet_overflow
+    bool_flag, branch_sign, common_shape, finite_array, motion_inputs, nonnegative_int, positive_length,
+    real_number)
+from mech._pose import _finite_sum, mask_singular_rates, Pose, quiet_overflow
 from mech._scaling import DEAD_POINT_RTOL, length_scale
 
 __all__ = ["SliderCrank", "SliderCrankPose", "SliderCrankLimits", "SliderCrankSeries"]
@@ -71,6 +73,12 @@ class SliderCrankSeries(NamedTuple):
 # fields that scale with the unit of length, and the rates found from the loop equations
 _LINEAR = frozenset({"x", "B", "C", "v", "vB", "acc", "aB"})
 _SOLVED_RATES = ("omega_coupler", "v", "alpha_coupler", "acc")
+# the fields of each order, in the kernels' order; the complex ones; rows of the work array
+_FIELDS = ("x", "phi", "B", "C", "omega_coupler", "v", "vB", "alpha_coupler", "acc", "aB")
+_FIELD_COUNT = {0: 4, 1: 7, 2: 10}
+_COMPLEX = frozenset({"B", "C", "vB", "aB"})
+_WORK_ROWS = max(_gen.WORK_ROWS[name] for name in (
+    "slider_crank_position", "slider_crank_velocity", "slider_crank_acceleration"))
 
 
 def _float(value):
@@ -130,8 +138,12 @@ class SliderCrank:
         # the generated formulas see lengths of order one only (see mech._scaling)
         self._unit = (self._a / self._scale, self._b / self._scale, self._e / self._scale)
         a_, b_, e_ = self._unit
+        tol = DEAD_POINT_RTOL * (a_ + b_ + abs(e_))
+        # |a sin(theta) - e| <= a + |e|: a crank that clears the dead points by more than
+        # the tolerance (twice, for rounding) never meets one
+        self._may_meet_dead_point = a_ + abs(e_) >= b_ - 2.0 * tol
         # the rod just reaching the guide (at one dead point) is allowed in any unit of length
-        if b_ < abs(e_) - a_ - DEAD_POINT_RTOL * (a_ + b_ + abs(e_)):
+        if b_ < abs(e_) - a_ - tol:
             raise ValueError(
                 f"Expected `b` >= |e| - a = {abs(self._e) - self._a!r} so that the rod reaches "
                 f"the guide, got {self._b!r}"
@@ -206,57 +218,84 @@ class SliderCrank:
         (7,)
         """
         strict = bool_flag("strict", strict)
-        order = nonnegative_int("order", order, 2)
-        theta = finite_array("theta", theta)
-        args = self._unit
+        order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
+        flat = [x.reshape(-1) for x in inputs]
+        size = flat[0].size
+        names = _FIELDS[: _FIELD_COUNT[order]]
+        out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float) for name in names}
+        out["valid"] = np.empty(size, dtype=bool)
+        # numba: fused loops over NUMBA_BLOCK points at a time; NumPy: cache-sized blocks,
+        # temporaries in one reused work array, then each block masked, scaled and checked
+        # while it is in cache
+        numba = _backend.use_numba(size)
+        step = _backend.NUMBA_BLOCK if numba else _backend.BLOCK
+        finite = True
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            x, phi, B, C = _gen.slider_crank_position(*args, theta, self._branch)
-        # the generated root is NaN exactly where the rod cannot reach the guide
-        valid = ~np.isnan(x)
-        # within DEAD_POINT_RTOL of a dead point (|s| = b) the input is the dead point: C below B
-        a_, b_, e_ = args
-        s = a_ * np.sin(theta) - e_
-        dead = np.abs(np.abs(s) - b_) <= DEAD_POINT_RTOL * (a_ + b_ + abs(e_))
-        snap = dead & ~valid
-        if np.any(snap):
-            x = np.where(snap, a_ * np.cos(theta), x)
-            phi = np.where(snap, -np.sign(s) * (np.pi / 2), phi)
-            C = np.where(snap, x + 1j * e_, C)
-            valid = valid | snap
+            for start in range(0, max(size, 1), step):
+                block = slice(start, start + step)
+                views = {k: v[block] for k, v in out.items()}
+                self._solve_block([x[block] for x in flat], order, views, numba)
+                finite = finite and all(_finite_sum(views[k]) for k in names)
+        valid = out["valid"]
         if strict and not np.all(valid):
-            first = float(np.broadcast_to(theta, valid.shape)[~valid].ravel()[0])
+            first = float(flat[0][~valid][0])
             raise AssemblyError(
                 f"Cannot assemble {self!r} at theta = {first!r}: the rod cannot reach the guide "
                 f"there (|a sin(theta) - e| > b)"
             )
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            fields = {"theta": theta, "valid": valid, "x": x, "phi": phi, "B": B, "C": C}
-            if order >= 1:
-                omega = finite_array("omega", omega)
-                common_shape(theta=theta, omega=omega)
-                w2, v, vB = _gen.slider_crank_velocity(*args, theta, self._branch, omega)
-                fields.update(omega_coupler=w2, v=v, vB=vB)
-            if order >= 2:
-                alpha = finite_array("alpha", alpha)
-                common_shape(theta=theta, omega=omega, alpha=alpha)
-                a2, acc, aB = _gen.slider_crank_acceleration(*args, theta, self._branch, omega, alpha)
-                fields.update(alpha_coupler=a2, acc=acc, aB=aB)
-        if order >= 1:                    # infinite at a dead point: NaN, masked below
-            for name in _SOLVED_RATES[: 2 * order]:
-                fields[name] = np.where(dead, np.nan, fields[name])
-        shape = np.broadcast_shapes(*(np.shape(f) for f in fields.values()))
-        for name, value in fields.items():
-            value = np.broadcast_to(value, shape)
-            if name not in ("theta", "valid", "B", "vB", "aB"):
-                nan = np.nan + 1j * np.nan if np.iscomplexobj(value) else np.nan
-                value = np.where(np.broadcast_to(valid, shape), value, nan)
-            if name in _LINEAR:
-                with np.errstate(over="ignore"):  # a rate near a dead point may overflow: masked below
-                    value = value * self._scale
-            fields[name] = np.array(value)[()]
+        fields = {name: value.reshape(shape)[()] for name, value in out.items()}
+        fields["theta"] = flat[0].reshape(shape).copy()[()]
         if order >= 1:
-            mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
-        return SliderCrankPose(order, fields)
+            if finite:                    # no dead point, no rate beyond the float range
+                fields["assembled"] = fields["valid"].copy() if shape else fields["valid"]
+            else:
+                mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
+        return SliderCrankPose(order, fields, finite)
+
+    def _solve_block(self, inputs, order, out, numba):
+        """Solve one block of flat inputs into the views in `out` (in the caller's error state)."""
+        a_, b_, e_ = args = self._unit
+        theta, branch = inputs[0], self._branch
+        x, phi, B, C = (out[k] for k in ("x", "phi", "B", "C"))
+        outs = [(x, phi, B.real, B.imag, C.real, C.imag)]
+        if order >= 1:
+            outs.append((out["omega_coupler"], out["v"], out["vB"].real, out["vB"].imag))
+        if order >= 2:
+            outs.append((out["alpha_coupler"], out["acc"], out["aB"].real, out["aB"].imag))
+        stages = ("slider_crank_position", "slider_crank_velocity", "slider_crank_acceleration")
+        if numba:
+            kernels = _backend.numba_kernels("slider_crank")
+            for k in range(order + 1):
+                getattr(kernels, f"{stages[k]}_kernel")(*args, theta, branch, *inputs[1:k + 1], *outs[k])
+        else:
+            work = _backend.workspace("slider_crank", _WORK_ROWS, theta.shape[0])
+            for k in range(order + 1):
+                getattr(_gen, f"{stages[k]}_into")(*args, theta, branch, *inputs[1:k + 1], outs[k],
+                                                   work[:_gen.WORK_ROWS[stages[k]]])
+        # the generated root is NaN exactly where the rod cannot reach the guide
+        valid = out["valid"]
+        np.equal(x, x, out=valid)
+        if self._may_meet_dead_point:
+            # within DEAD_POINT_RTOL of a dead point (|s| = b) the input is the dead point:
+            # C below B; the rates found from the loop equations are infinite there (NaN)
+            s = a_ * np.sin(theta) - e_
+            dead = np.abs(np.abs(s) - b_) <= DEAD_POINT_RTOL * (a_ + b_ + abs(e_))
+            if dead.any():
+                snap = dead & ~valid
+                x[snap] = a_ * np.cos(theta[snap])
+                phi[snap] = -np.sign(s[snap]) * (np.pi / 2)
+                C.real[snap] = x[snap]
+                valid |= snap
+                for name in _SOLVED_RATES[: 2 * order]:
+                    out[name][dead] = np.nan
+        if not valid.all():
+            for name in out:
+                if name not in ("valid", "B", "vB", "aB"):
+                    out[name][~valid] = np.nan + 1j * np.nan if name in _COMPLEX else np.nan
+        if self._scale != 1.0:
+            for name in _LINEAR.intersection(out):
+                target = out[name].view(float) if name in _COMPLEX else out[name]
+                np.multiply(target, self._scale, out=target)
 
     def _require_turning(self, what):
         if not self.crank_turns:
