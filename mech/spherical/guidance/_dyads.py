@@ -74,6 +74,14 @@ def _circumpole(w1, w2, w3):
     return _unit(np.cross(w2 - w1, w3 - w1))
 
 
+def _equidistant(w, along):
+    """A point equidistant from the points w[..., j, :]: their circumpole (three) or a
+    point of the bisecting great circle chosen by `along` (two)."""
+    if w.shape[-2] == 3:
+        return _circumpole(w[..., 0, :], w[..., 1, :], w[..., 2, :])
+    return _bisector(w[..., 0, :], w[..., 1, :], along)
+
+
 def dyad_for_circle_point(R, circle_point, *, along=0.0):
     """The spherical crank through two or three orientations with a chosen circle point.
 
@@ -122,8 +130,7 @@ def dyad_for_circle_point(R, circle_point, *, along=0.0):
     z = _vectors("circle_point", circle_point)
     along = real_number("along", along)
     w = np.einsum("nij,...j->...ni", R, z)
-    u = _circumpole(w[..., 0, :], w[..., 1, :], w[..., 2, :]) if R.shape[0] == 3 else \
-        _bisector(w[..., 0, :], w[..., 1, :], along)
+    u = _equidistant(w, along)
     return make_dyad(z, w[..., 0, :], u, "circle_point", z)
 
 
@@ -173,8 +180,7 @@ def dyad_for_centre_point(R, centre_point, *, along=0.0):
     u = _vectors("centre_point", centre_point)
     along = real_number("along", along)
     seen = np.einsum("nji,...j->...ni", R, u)
-    z = _circumpole(seen[..., 0, :], seen[..., 1, :], seen[..., 2, :]) if R.shape[0] == 3 else \
-        _bisector(seen[..., 0, :], seen[..., 1, :], along)
+    z = _equidistant(seen, along)
     z = np.where(np.sum(z * seen[..., 0, :], axis=-1, keepdims=True) < 0.0, -z, z)
     w = np.einsum("ij,...j->...i", R[0], z)
     dyad = make_dyad(z, w, u, "centre_point", u)
