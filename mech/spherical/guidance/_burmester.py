@@ -277,7 +277,7 @@ def slider_point_curve(R, *, samples=360, phi=None):
 
 
 def _polish(K, u, w):
-    """Newton steps on the six equations u^T K_j w = 0, |u| = |w| = 1."""
+    """Newton steps on the six equations u^T K_j w = 0, |u| = |w| = 1 (four matrices K_j)."""
     for _ in range(8):
         F = np.concatenate([np.einsum("i,jik,k->j", u, K, w), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
         J = np.zeros((6, 6))
@@ -513,21 +513,6 @@ def slider_dyads(R, *, imag_tol=1e-6):
         n = _null(rows)
         # polish: w on the guide at all four orientations (Newton on n^T D_j w = 0, |n| = |w| = 1)
         D = np.stack([np.eye(3)] + [np.eye(3) + Kj for Kj in K])
-        for _ in range(8):
-            F = np.concatenate([np.einsum("i,jik,k->j", n, D, w), [(n @ n - 1) / 2, (w @ w - 1) / 2]])
-            J = np.zeros((6, 6))
-            J[:4, :3] = D @ w
-            J[:4, 3:] = np.einsum("i,jik->jk", n, D)
-            J[4, :3], J[5, 3:] = n, w
-            try:
-                step = np.linalg.solve(J, F)
-            except np.linalg.LinAlgError:
-                break
-            if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > 0.5:
-                break
-            n, w = n - step[:3], w - step[3:]
-            if np.max(np.abs(step)) <= 1e-16:
-                break
-        n, w = n / np.linalg.norm(n), w / np.linalg.norm(w)
+        n, w = _polish(D, n, w)
         found.append(make_dyad(R[0].T @ w, w, n, "R", R[0]))
     return tuple(found)
