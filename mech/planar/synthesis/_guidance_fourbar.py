@@ -116,7 +116,8 @@ def _motion(linkage, theta_in):
 
     The linkage can be assembled on an input interval exactly when it can at the interval's
     ends and at the angles 0 and pi inside it (the diagonal BD is extreme there), so those
-    angles decide, by the analysis class itself.
+    angles decide, by the analysis class itself. The spherical four-bar synthesis uses it
+    too: its arc BD is extreme at the same angles.
     """
     for direction in (1, -1):
         steps = np.remainder(direction * np.diff(theta_in), _TWO_PI)

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import InputTypeError, _show, finite_array, nonnegative_number
-from mech.planar.synthesis._guidance_fourbar import GuidanceSynthesis
+# _motion: the arc BD of a spherical four-bar, like the planar diagonal, is extreme at input 0 and pi
+from mech.planar.synthesis._guidance_fourbar import GuidanceSynthesis, _motion
 from mech.spherical._fourbar import SphericalFourBar
 from mech.spherical._rigid_body import angle_at
 from mech.spherical._types import classify
@@ -16,8 +17,6 @@ from mech.spherical.guidance._dyads import SphericalDyad, arc_between
 from mech.spherical.guidance._orientations import orientation_set
 
 __all__ = ["SphericalGuidanceFourBar", "guidance_fourbars", "guidance_slider_crank"]
-
-_TWO_PI = 2.0 * np.pi
 
 
 @dataclass(frozen=True)
@@ -95,27 +94,6 @@ def _rotation_gap(Ra, Rb):
 def _transmission(B, C, D):
     g = np.abs(angle_at(C, B, D))
     return np.minimum(g, np.pi - g)
-
-
-def _motion(linkage, theta_in):
-    """Direction (+1, -1 or 0) in which the input meets the orientations in order, and the
-    critical input angles (the path's ends and the multiples of pi inside it).
-
-    The arc BD grows with |theta| from |a - d| at theta = 0 to min(a + d, 2 pi - a - d) at
-    pi, so assembly (and the transmission angle) is extreme at those angles or at the ends.
-    """
-    for direction in (1, -1):
-        steps = np.remainder(direction * np.diff(theta_in), _TWO_PI)
-        travel = float(np.sum(steps))
-        if travel >= _TWO_PI:
-            continue
-        start = float(theta_in[0])
-        lo, hi = (start, start + travel) if direction > 0 else (start - travel, start)
-        inside = np.arange(np.ceil(lo / np.pi), np.floor(hi / np.pi) + 1) * np.pi
-        critical = np.concatenate([[lo, hi], inside])
-        if np.all(linkage.solve(critical).valid):
-            return direction, critical
-    return 0, None
 
 
 def _candidate(R, crank, rocker, rtol):
