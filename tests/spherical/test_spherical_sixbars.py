@@ -72,6 +72,17 @@ def test_closure_of_every_loop(kind):
             assert np.all(side > 0) or np.all(side < 0) or np.ptp(side) < 1e-12
 
 
+def _assert_no_jump(pose, th):
+    """Every point valid and every step the arc swept at the local speed, to second order:
+    a branch jump would be a step of order one."""
+    assert pose.valid.all()
+    step = th[1] - th[0]
+    for name, P in pose.points.items():
+        jump = np.linalg.norm(np.diff(P, axis=0), axis=-1)
+        speed = np.linalg.norm(pose.velocities[name], axis=-1)
+        assert np.all(jump <= 1.01 * np.maximum(speed[:-1], speed[1:]) * step + 1e-12), name
+
+
 @pytest.mark.parametrize("kind", sorted(KINDS))
 def test_no_branch_jump_over_a_full_turn(kind):
     rng = np.random.default_rng(7 + len(kind))
@@ -79,14 +90,8 @@ def test_no_branch_jump_over_a_full_turn(kind):
     n = 100_000
     th = np.linspace(0.0, 2 * np.pi, n + 1)
     pose = lk.solve(th, order=1)
-    assert pose.valid.all()
-    step = th[1] - th[0]
+    _assert_no_jump(pose, th)
     for name, P in pose.points.items():
-        jump = np.linalg.norm(np.diff(P, axis=0), axis=-1)
-        speed = np.linalg.norm(pose.velocities[name], axis=-1)
-        # every step is the arc swept at the local speed, to second order: a branch jump
-        # would be a step of order one
-        assert np.all(jump <= 1.01 * np.maximum(speed[:-1], speed[1:]) * step + 1e-12), name
         assert np.allclose(P[0], P[-1], atol=1e-12), name        # back where it started
     for _, links, (p1, p2), j, arcs, sign in _dyads(lk):
         det = np.einsum("ij,ij->i", np.cross(pose.points[p1], pose.points[p2]), pose.points[j])
@@ -261,9 +266,4 @@ def test_no_jump_through_change_points_at_1e5_steps(arcs):
     lk = _fourbar_linkage(*arcs, 1).point("P", link="BC", at=(0.3, 0.7))
     th = np.linspace(-2 * np.pi, 2 * np.pi, 100_001)
     pose = lk.solve(th, order=1)
-    assert pose.valid.all()
-    step = th[1] - th[0]
-    for name, P in pose.points.items():
-        jump = np.linalg.norm(np.diff(P, axis=0), axis=-1)
-        speed = np.linalg.norm(pose.velocities[name], axis=-1)
-        assert np.all(jump <= 1.01 * np.maximum(speed[:-1], speed[1:]) * step + 1e-12), name
+    _assert_no_jump(pose, th)
