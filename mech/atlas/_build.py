@@ -204,16 +204,37 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
     def work(index):
         return seed, index, block, harmonics, samples, lengths, coupler, min_transmission, mechanism, offsets
 
-    kept, sigs = [], []
     started = time.perf_counter()
-    with _bar(progress, n, total) as bar, closing(_blocks(done + 1, work, client)) as blocks:
+    kept, sigs, total = _take_blocks(
+        _blocks(done + 1, work, client), n, total, seed, build, settings, folder, record, write_part, progress,
+        lambda index: (f"Expected `lengths`, `coupler` and `min_transmission` of a design space with "
+                       f"movable linkages, got lengths={lengths!r}, coupler={coupler!r}, "
+                       f"min_transmission={min_transmission!r}: none in {index} blocks"))
+    if folder is not None:
+        return Atlas.from_parquet(folder)
+    cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in names}
+    settings["build_seconds"] = round(time.perf_counter() - started, 3)
+    return Atlas(record(**cols), np.concatenate(sigs), np.full(total, seed, dtype=np.int64), settings)
+
+
+def _take_blocks(blocks, n, total, seed, build, settings, folder, record, write, progress, none_message):
+    """Take the blocks of a build in order until `n` rows are kept (the planar and spherical loop).
+
+    `blocks` yields ``(index, columns, signatures)``; `total` rows are already on disk. With a
+    `folder` each block's rows are written as a Parquet part by `write` (the
+    store's `write_part`), otherwise they are kept. Returns
+    ``(kept, sigs, total)``: the kept row records, their signatures and the rows taken in all.
+    `none_message(index)` is the ValueError's text when 1000 blocks gave no usable linkage.
+    """
+    kept, sigs = [], []
+    with _bar(progress, n, total) as bar, closing(blocks) as blocks:
         for index, cols, sig in (blocks if total < n else ()):
             take = min(len(sig), n - total)
             rows = record(**{k: v[:take] for k, v in cols.items()})
             if folder is not None and take:
                 folder.mkdir(parents=True, exist_ok=True)
-                write_part(folder / f"part-{index:05d}.parquet", rows, sig[:take], np.full(take, seed), settings,
-                           chunk={**build, "index": index})
+                write(folder / f"part-{index:05d}.parquet", rows, sig[:take], np.full(take, seed), settings,
+                      chunk={**build, "index": index})
             else:
                 kept.append(rows)
                 sigs.append(sig[:take])
@@ -222,14 +243,8 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
             if total >= n:
                 break
             if index > 1000 and total == 0:
-                raise ValueError(f"Expected `lengths`, `coupler` and `min_transmission` of a design space with "
-                                 f"movable linkages, got lengths={lengths!r}, coupler={coupler!r}, "
-                                 f"min_transmission={min_transmission!r}: none in {index} blocks")
-    if folder is not None:
-        return Atlas.from_parquet(folder)
-    cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in names}
-    settings["build_seconds"] = round(time.perf_counter() - started, 3)
-    return Atlas(record(**cols), np.concatenate(sigs), np.full(total, seed, dtype=np.int64), settings)
+                raise ValueError(none_message(index))
+    return kept, sigs, total
 
 
 def _done_blocks(folder, settings, build, resume):

@@ -9,12 +9,11 @@ written as a Parquet part as soon as it is taken, so a stopped build resumes whe
 
 import time
 import uuid
-from contextlib import closing
 
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
-from mech.atlas._build import _bar, block_seed
+from mech.atlas._build import _take_blocks, block_seed
 from mech.atlas._signature import HARMONICS, SAMPLES
 from mech.atlas._sphere_sampling import ARCS, COUPLER_ARC, SphereSamples, sample_sphere_fourbars, sphere_curves
 from mech.atlas._sphere_signature import _resample_closed, _signature_rows
@@ -150,27 +149,13 @@ def build_sphere_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, arcs=
     def work(index):
         return seed, index, block, harmonics, samples, arcs, coupler_arc, min_transmission
 
-    kept, sigs = [], []
     started = time.perf_counter()
-    with _bar(progress, n, total) as bar, closing(_blocks(done + 1, work, client)) as blocks:
-        for index, cols, sig in (blocks if total < n else ()):
-            take = min(len(sig), n - total)
-            rows = SphereSamples(**{k: v[:take] for k, v in cols.items()})
-            if folder is not None and take:
-                folder.mkdir(parents=True, exist_ok=True)
-                write_part(folder / f"part-{index:05d}.parquet", rows, sig[:take], np.full(take, seed), settings,
-                           chunk={**build, "index": index})
-            else:
-                kept.append(rows)
-                sigs.append(sig[:take])
-            total += take
-            bar.update(take)
-            if total >= n:
-                break
-            if index > 1000 and total == 0:
-                raise ValueError(f"Expected `arcs`, `coupler_arc` and `min_transmission` of a design space with "
-                                 f"usable linkages, got arcs={arcs!r}, coupler_arc={coupler_arc!r}, "
-                                 f"min_transmission={min_transmission!r}: none in {index} blocks")
+    kept, sigs, total = _take_blocks(
+        _blocks(done + 1, work, client), n, total, seed, build, settings, folder, SphereSamples, write_part,
+        progress,
+        lambda index: (f"Expected `arcs`, `coupler_arc` and `min_transmission` of a design space with "
+                       f"usable linkages, got arcs={arcs!r}, coupler_arc={coupler_arc!r}, "
+                       f"min_transmission={min_transmission!r}: none in {index} blocks"))
     if folder is not None:
         return SphereAtlas.from_parquet(folder)
     cols = {k: np.concatenate([getattr(s, k) for s in kept]) for k in _COLUMNS}
