@@ -21,7 +21,9 @@ from mech._validate import _show, bool_flag, integer, nonnegative_number
 from mech.atlas._sampling import COUPLER, LENGTHS, coupler_curves, sample_fourbars
 from mech.atlas._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
 from mech.atlas._slider import OFFSETS, RODS, check_mechanism, sample_slider_cranks
-from mech.atlas._store import ATLAS_VERSION, Atlas, _folder, columns_of, read_chunk, write_part
+from mech.atlas._store import (
+    ATLAS_VERSION, Atlas, _check_settings, _done_parts, _folder, _read_settings, columns_of, write_part,
+)
 
 __all__ = ["build_atlas"]
 
@@ -249,26 +251,7 @@ def _take_blocks(blocks, n, total, seed, build, settings, folder, record, write,
 
 def _done_blocks(folder, settings, build, resume):
     """The last block index on disk and the rows there, checking that they belong to `build`."""
-    parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
-    if not parts:
-        return -1, 0
-    if not resume:
-        raise ValueError(f"Expected `path` without an atlas (or resume=True), got {str(folder)!r} "
-                         f"holding {len(parts)} part(s)")
-    import pyarrow.parquet as pq
-
-    from mech.atlas._store import _check_settings, _read_settings
-
-    last, rows = -1, 0
-    for part in parts:
-        _check_settings(_read_settings(part), settings, str(part))
-        chunk = read_chunk(part)
-        if chunk is None or any(chunk.get(k) != v for k, v in build.items()):
-            raise ValueError(f"Expected the parts of a build of {build} in `path` to resume, got "
-                             f"{chunk!r} in {str(part)!r}")
-        last = max(last, int(chunk["index"]))
-        rows += pq.read_metadata(part).num_rows
-    return last, rows
+    return _done_parts(folder, settings, build, resume, _read_settings, _check_settings)
 
 
 class _NoBar:

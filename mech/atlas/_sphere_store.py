@@ -18,7 +18,7 @@ import numpy as np
 
 from mech._validate import bool_flag, integer
 from mech.atlas._sphere_sampling import SphereSamples, sphere_curves
-from mech.atlas._store import _CHUNK_KEY, _folder, read_chunk
+from mech.atlas._store import _CHUNK_KEY, _done_parts, _folder
 
 __all__ = ["SPHERE_ATLAS_VERSION", "SphereAtlas"]
 
@@ -208,21 +208,4 @@ def check_settings(have, new, where):
 
 def done_blocks(folder, settings, build, resume):
     """The last block index on disk and its rows, checking they belong to `build` (resume)."""
-    parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
-    if not parts:
-        return -1, 0
-    if not resume:
-        raise ValueError(f"Expected `path` without an atlas (or resume=True), got {str(folder)!r} "
-                         f"holding {len(parts)} part(s)")
-    import pyarrow.parquet as pq
-
-    last, rows = -1, 0
-    for part in parts:
-        check_settings(read_settings(part), settings, str(part))
-        chunk = read_chunk(part)
-        if chunk is None or any(chunk.get(k) != v for k, v in build.items()):
-            raise ValueError(f"Expected the parts of a build of {build} in `path` to resume, got "
-                             f"{chunk!r} in {str(part)!r}")
-        last = max(last, int(chunk["index"]))
-        rows += pq.read_metadata(part).num_rows
-    return last, rows
+    return _done_parts(folder, settings, build, resume, read_settings, check_settings)

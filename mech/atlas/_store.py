@@ -233,6 +233,32 @@ def _folder(path):
     return Path(path)
 
 
+def _done_parts(folder, settings, build, resume, read_settings, check_settings):
+    """The last block index on disk and the rows there, checking that they belong to `build`.
+
+    Shared by the planar and spherical builds; `read_settings` and `check_settings` are the
+    store's own.
+    """
+    parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
+    if not parts:
+        return -1, 0
+    if not resume:
+        raise ValueError(f"Expected `path` without an atlas (or resume=True), got {str(folder)!r} "
+                         f"holding {len(parts)} part(s)")
+    import pyarrow.parquet as pq
+
+    last, rows = -1, 0
+    for part in parts:
+        check_settings(read_settings(part), settings, str(part))
+        chunk = read_chunk(part)
+        if chunk is None or any(chunk.get(k) != v for k, v in build.items()):
+            raise ValueError(f"Expected the parts of a build of {build} in `path` to resume, got "
+                             f"{chunk!r} in {str(part)!r}")
+        last = max(last, int(chunk["index"]))
+        rows += pq.read_metadata(part).num_rows
+    return last, rows
+
+
 def _read_settings(part):
     import pyarrow.parquet as pq
 
