@@ -16,9 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
-from mech._validate import bool_flag, integer
+from mech._validate import integer
 from mech.atlas._sphere_sampling import SphereSamples, sphere_curves
-from mech.atlas._store import _CHUNK_KEY, _done_parts, _folder
+from mech.atlas._store import _CHUNK_KEY, _done_parts, _folder, _next_part
 
 __all__ = ["SPHERE_ATLAS_VERSION", "SphereAtlas"]
 
@@ -116,17 +116,7 @@ class SphereAtlas:
         With ``append=True`` the part is added to an existing atlas of the same settings;
         without it the folder must not hold an atlas yet.
         """
-        append = bool_flag("append", append)
-        folder = _folder(path)
-        parts = sorted(folder.glob("part-*.parquet")) if folder.exists() else []
-        if parts and not append:
-            raise ValueError(f"Expected `path` without an atlas (or append=True), got {str(path)!r} "
-                             f"holding {len(parts)} part(s)")
-        if parts:
-            check_settings(read_settings(parts[0]), self.settings, str(path))
-        folder.mkdir(parents=True, exist_ok=True)
-        number = max((int(p.stem.split("-")[1]) for p in parts if p.stem.split("-")[1].isdigit()), default=-1) + 1
-        target = folder / f"part-{number:05d}.parquet"
+        target = _next_part(path, append, self.settings, read_settings, check_settings)
         write_part(target, self.linkages, self.signatures, self.seeds, self.settings)
         return target
 

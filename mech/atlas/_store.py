@@ -144,18 +144,7 @@ class Atlas:
         pathlib.Path
             The part written.
         """
-        append = bool_flag("append", append)
-        folder = _folder(path)
-        parts = sorted(folder.glob("part-*.parquet")) if folder.exists() else []
-        if parts and not append:
-            raise ValueError(f"Expected `path` without an atlas (or append=True), got {str(path)!r} "
-                             f"holding {len(parts)} part(s)")
-        if parts:
-            _check_settings(_read_settings(parts[0]), self.settings, str(path))
-        folder.mkdir(parents=True, exist_ok=True)
-        # after the last part (a chunked build may leave gaps in the numbers)
-        number = max((int(p.stem.split("-")[1]) for p in parts if p.stem.split("-")[1].isdigit()), default=-1) + 1
-        target = folder / f"part-{number:05d}.parquet"
+        target = _next_part(path, append, self.settings, _read_settings, _check_settings)
         write_part(target, self.linkages, self.signatures, self.seeds, self.settings)
         return target
 
@@ -231,6 +220,26 @@ def _folder(path):
     if not isinstance(path, (str, os.PathLike)) or isinstance(path, bytes):
         raise TypeError(f"Expected `path` to be a folder name, got {_show(path)}")
     return Path(path)
+
+
+def _next_part(path, append, settings, read_settings, check_settings):
+    """The path of a new part of the atlas folder `path` (planar and spherical `to_parquet`).
+
+    Checks `append` and, when the folder holds parts, that the first has `settings` (read and
+    compared with the store's `read_settings` and `check_settings`); creates the folder.
+    """
+    append = bool_flag("append", append)
+    folder = _folder(path)
+    parts = sorted(folder.glob("part-*.parquet")) if folder.exists() else []
+    if parts and not append:
+        raise ValueError(f"Expected `path` without an atlas (or append=True), got {str(path)!r} "
+                         f"holding {len(parts)} part(s)")
+    if parts:
+        check_settings(read_settings(parts[0]), settings, str(path))
+    folder.mkdir(parents=True, exist_ok=True)
+    # after the last part (a chunked build may leave gaps in the numbers)
+    number = max((int(p.stem.split("-")[1]) for p in parts if p.stem.split("-")[1].isdigit()), default=-1) + 1
+    return folder / f"part-{number:05d}.parquet"
 
 
 def _done_parts(folder, settings, build, resume, read_settings, check_settings):
