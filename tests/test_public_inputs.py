@@ -1582,7 +1582,10 @@ def _public_callables():
                 continue
             found.add(key)
             if inspect.isclass(obj):
-                for attr, value in vars(obj).items():
+                # its own methods and those it inherits from private mech bases (shared code)
+                own = [k for k in obj.__mro__
+                       if k is obj or (k.__name__.startswith("_") and k.__module__.startswith("mech."))]
+                for attr, value in (item for k in own for item in vars(k).items()):
                     func = value.__func__ if isinstance(value, (classmethod, staticmethod)) else value
                     if not attr.startswith("_") and inspect.isfunction(func):
                         found.add(f"{key}.{attr}")

@@ -29,8 +29,24 @@ LENGTHS = (0.2, 5.0)
 COUPLER = (-1.0, 2.0, -1.5, 1.5)
 
 
+class _Samples:
+    """The methods shared by the sample records (FourBarSamples, SliderCrankSamples, SphereSamples)."""
+
+    def __len__(self):
+        return int(self.a.shape[0])
+
+    def take(self, index):
+        """The samples at `index` (integers, or a boolean mask of length n), as a new record."""
+        pick = rows("index", index, len(self))
+        return type(self)(**{f.name: getattr(self, f.name)[pick] for f in fields(self)})
+
+    def columns(self):
+        """The fields as a dict of arrays, in declaration order."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
 @dataclass(frozen=True)
-class FourBarSamples:
+class FourBarSamples(_Samples):
     """Four-bars of the normalised design space, one entry per sample (arrays of shape (n,)).
 
     Attributes
@@ -72,18 +88,6 @@ class FourBarSamples:
     gamma_min: np.ndarray
     movable: np.ndarray
     usable: np.ndarray
-
-    def __len__(self):
-        return int(self.a.shape[0])
-
-    def take(self, index):
-        """The samples at `index` (integers, or a boolean mask of length n), as a new record."""
-        return FourBarSamples(**{f.name: getattr(self, f.name)[rows("index", index, len(self))]
-                                 for f in fields(self)})
-
-    def columns(self):
-        """The fields as a dict of arrays, in declaration order."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
 
     def fourbar(self, i):
         """Sample `i` as a `mech.planar.FourBar`."""

@@ -18,11 +18,12 @@ perpendicular to the guide and pointing away from it, so
 ``mu_min = acos((a + |e|) / b)`` (F57).
 """
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
 from mech._validate import _show, branch_sign, integer, nonnegative_number
+from mech.atlas._sampling import _Samples
 from mech.planar.kinematics._slider_crank import SliderCrank
 
 __all__ = ["SliderCrankSamples", "sample_slider_cranks"]
@@ -36,7 +37,7 @@ SLIDER_COUPLER = (-1.0, 2.0, -1.5, 1.5)
 
 
 @dataclass(frozen=True)
-class SliderCrankSamples:
+class SliderCrankSamples(_Samples):
     """Slider-cranks of the normalised design space, one entry per sample (arrays of shape (n,)).
 
     Attributes
@@ -77,20 +78,6 @@ class SliderCrankSamples:
     gamma_min: np.ndarray
     movable: np.ndarray
     usable: np.ndarray
-
-    def __len__(self):
-        return int(self.a.shape[0])
-
-    def take(self, index):
-        """The samples at `index` (integers, or a boolean mask of length n), as a new record."""
-        from mech.atlas._sampling import rows
-
-        return SliderCrankSamples(**{f.name: getattr(self, f.name)[rows("index", index, len(self))]
-                                     for f in fields(self)})
-
-    def columns(self):
-        """The fields as a dict of arrays, in declaration order."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
 
     def slider_crank(self, i):
         """Sample `i` as a `mech.planar.SliderCrank` (the coupler point is ``(p[i], q[i])``)."""

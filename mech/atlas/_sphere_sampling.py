@@ -11,14 +11,14 @@ coupler curve of a rocking input runs over the range on one assembly branch and 
 other, through the limit positions where the two branches meet.
 """
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
 from mech._generated.spherical_fourbar import spherical_fourbar_limit_theta, spherical_fourbar_position
 from mech._generated.spherical_types import spherical_type_slacks
 from mech._validate import _show, branch_sign, integer, nonnegative_number, real_tuple
-from mech.atlas._sampling import KINDS, rows as _rows
+from mech.atlas._sampling import KINDS, _Samples
 
 __all__ = ["SphereSamples", "sample_sphere_fourbars"]
 
@@ -29,7 +29,7 @@ COUPLER_ARC = (0.1, 1.2)
 
 
 @dataclass(frozen=True)
-class SphereSamples:
+class SphereSamples(_Samples):
     """Spherical four-bars, one entry per sample (arrays of shape (n,)).
 
     Attributes
@@ -73,18 +73,6 @@ class SphereSamples:
     gamma_min: np.ndarray
     movable: np.ndarray
     usable: np.ndarray
-
-    def __len__(self):
-        return int(self.a.shape[0])
-
-    def take(self, index):
-        """The samples at `index` (integers, or a boolean mask of length n), as a new record."""
-        pick = _rows("index", index, len(self))
-        return SphereSamples(**{f.name: getattr(self, f.name)[pick] for f in fields(self)})
-
-    def columns(self):
-        """The fields as a dict of arrays, in declaration order."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
 
     def fourbar(self, i, frame=None):
         """Sample `i` as a `mech.spherical.SphericalFourBar` (placed by `frame`, a rotation)."""
