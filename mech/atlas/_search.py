@@ -35,8 +35,16 @@ _COARSE_TABLE = 512
 _LEVELS = 6
 
 
+class _Placed:
+    """The similarity shared by PlacedLinkage and PlacedSliderCrank (fields `origin`, `rotation`)."""
+
+    def place(self, z):
+        """Map standard-frame points `z` into the target's frame: ``origin + exp(1j*rotation)*z``."""
+        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
+
+
 @dataclass(frozen=True)
-class PlacedLinkage:
+class PlacedLinkage(_Placed):
     """A four-bar in its standard frame and the similarity that places it on the target.
 
     Attributes
@@ -56,10 +64,6 @@ class PlacedLinkage:
     origin: complex
     rotation: float
 
-    def place(self, z):
-        """Map standard-frame points `z` into the target's frame: ``origin + exp(1j*rotation)*z``."""
-        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
-
     @property
     def pivots(self):
         """The two ground pivots A and D in the target's frame."""
@@ -67,7 +71,7 @@ class PlacedLinkage:
 
 
 @dataclass(frozen=True)
-class PlacedSliderCrank:
+class PlacedSliderCrank(_Placed):
     """A slider-crank with a coupler point, in its standard frame, and the similarity that places it.
 
     Attributes
@@ -91,10 +95,6 @@ class PlacedSliderCrank:
     coupler: tuple
     origin: complex
     rotation: float
-
-    def place(self, z):
-        """Map standard-frame points `z` into the target's frame: ``origin + exp(1j*rotation)*z``."""
-        return self.origin + np.exp(1j * self.rotation) * planar_points("z", z)
 
     @property
     def pivots(self):
