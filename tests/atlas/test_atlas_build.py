@@ -1,8 +1,5 @@
 """Building an atlas in blocks: on a Dask cluster, to a folder, stopped and resumed."""
 
-import logging
-
-import numpy as np
 import pytest
 
 pytest.importorskip("pyarrow")
@@ -19,31 +16,14 @@ def reference():
     return build_atlas(700, **SETTINGS)
 
 
-def _same(a, b):
-    assert len(a) == len(b)
-    assert np.array_equal(a.signatures, b.signatures)
-    assert np.array_equal(a.seeds, b.seeds)
-    for name, col in a.linkages.columns().items():
-        assert np.array_equal(getattr(b.linkages, name), col), name
-
-
-@pytest.fixture(scope="module")
-def client():
-    distributed = pytest.importorskip("distributed")
-    logging.getLogger("distributed").setLevel(logging.ERROR)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
-                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as c:
-        yield c
-
-
-def test_build_atlas_dask_identical(reference, client):
+def test_build_atlas_dask_identical(reference, client, same_atlas):
     """Two Dask workers give the same atlas, bit for bit, as one process (same seed)."""
     assert len(client.nthreads()) == 2
-    _same(reference, build_atlas(700, **SETTINGS, client=client))
+    same_atlas(reference, build_atlas(700, **SETTINGS, client=client))
 
 
-def test_build_atlas_dask_to_folder_identical(reference, client, tmp_path):
-    _same(reference, build_atlas(700, **SETTINGS, client=client, path=tmp_path / "a"))
+def test_build_atlas_dask_to_folder_identical(reference, client, tmp_path, same_atlas):
+    same_atlas(reference, build_atlas(700, **SETTINGS, client=client, path=tmp_path / "a"))
 
 
 def test_build_atlas_block_seeds_differ():
@@ -52,16 +32,16 @@ def test_build_atlas_block_seeds_differ():
     assert len(seeds) == 300
 
 
-def test_build_atlas_path_parts(reference, tmp_path):
+def test_build_atlas_path_parts(reference, tmp_path, same_atlas):
     atlas = build_atlas(700, **SETTINGS, path=tmp_path / "a")
-    _same(reference, atlas)
+    same_atlas(reference, atlas)
     parts = sorted((tmp_path / "a").glob("part-*.parquet"))
     assert len(parts) >= 2
-    _same(reference, Atlas.from_parquet(tmp_path / "a"))
+    same_atlas(reference, Atlas.from_parquet(tmp_path / "a"))
 
 
 @pytest.mark.parametrize("stop_after", [1, 3])
-def test_build_atlas_resume_after_interrupt(reference, tmp_path, monkeypatch, stop_after):
+def test_build_atlas_resume_after_interrupt(reference, tmp_path, monkeypatch, stop_after, same_atlas):
     """A build stopped after k parts and resumed gives the uninterrupted build."""
     written = []
     real = build_module.write_part
@@ -81,14 +61,14 @@ def test_build_atlas_resume_after_interrupt(reference, tmp_path, monkeypatch, st
     resumed = []
     monkeypatch.setattr(build_module, "build_block",
                         lambda *a, _b=build_module.build_block: resumed.append(a[1]) or _b(*a))
-    _same(reference, build_atlas(700, **SETTINGS, path=tmp_path / "a", resume=True))
+    same_atlas(reference, build_atlas(700, **SETTINGS, path=tmp_path / "a", resume=True))
     assert min(resumed) == stop_after           # the blocks on disk were not drawn again
 
 
-def test_build_atlas_resume_finished_is_a_read(reference, tmp_path, monkeypatch):
+def test_build_atlas_resume_finished_is_a_read(reference, tmp_path, monkeypatch, same_atlas):
     build_atlas(700, **SETTINGS, path=tmp_path / "a")
     monkeypatch.setattr(build_module, "build_block", None)     # nothing may be computed
-    _same(reference, build_atlas(700, **SETTINGS, path=tmp_path / "a", resume=True))
+    same_atlas(reference, build_atlas(700, **SETTINGS, path=tmp_path / "a", resume=True))
 
 
 def test_build_atlas_path_refuses_existing(tmp_path):

@@ -1,7 +1,6 @@
 """The spherical atlas: Parquet store (version, seeds, append), builds in blocks, on Dask, resumed."""
 
 import json
-import logging
 
 import numpy as np
 import pytest
@@ -20,23 +19,6 @@ def reference():
     return build_sphere_atlas(500, **SETTINGS)
 
 
-def _same(a, b):
-    assert len(a) == len(b)
-    assert np.array_equal(a.signatures, b.signatures)
-    assert np.array_equal(a.seeds, b.seeds)
-    for name, col in a.linkages.columns().items():
-        assert np.array_equal(getattr(b.linkages, name), col), name
-
-
-@pytest.fixture(scope="module")
-def client():
-    distributed = pytest.importorskip("distributed")
-    logging.getLogger("distributed").setLevel(logging.ERROR)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
-                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as c:
-        yield c
-
-
 def test_build_keeps_usable_rocking_too(reference):
     s = reference.linkages
     assert len(reference) == 500 and np.all(s.usable) and np.all(s.movable)
@@ -53,18 +35,18 @@ def test_build_signatures_are_sphere_signatures(reference):
     assert np.max(np.abs(again - reference.signatures[idx])) > 0.0       # not the same code path
 
 
-def test_build_dask_identical(reference, client):
+def test_build_dask_identical(reference, client, same_atlas):
     """Two Dask workers give the atlas of one process, bit for bit."""
     assert len(client.nthreads()) == 2
-    _same(reference, build_sphere_atlas(500, **SETTINGS, client=client))
+    same_atlas(reference, build_sphere_atlas(500, **SETTINGS, client=client))
 
 
-def test_build_dask_to_folder_identical(reference, client, tmp_path):
-    _same(reference, build_sphere_atlas(500, **SETTINGS, client=client, path=tmp_path / "a"))
+def test_build_dask_to_folder_identical(reference, client, tmp_path, same_atlas):
+    same_atlas(reference, build_sphere_atlas(500, **SETTINGS, client=client, path=tmp_path / "a"))
 
 
 @pytest.mark.parametrize("stop_after", [1, 2])
-def test_build_resume_after_interrupt(reference, tmp_path, monkeypatch, stop_after):
+def test_build_resume_after_interrupt(reference, tmp_path, monkeypatch, stop_after, same_atlas):
     written = []
     real = build_module.write_part
 
@@ -82,7 +64,7 @@ def test_build_resume_after_interrupt(reference, tmp_path, monkeypatch, stop_aft
     resumed = []
     monkeypatch.setattr(build_module, "build_sphere_block",
                         lambda *a, _b=build_module.build_sphere_block: resumed.append(a[1]) or _b(*a))
-    _same(reference, build_sphere_atlas(500, **SETTINGS, path=tmp_path / "a", resume=True))
+    same_atlas(reference, build_sphere_atlas(500, **SETTINGS, path=tmp_path / "a", resume=True))
     assert min(resumed) == stop_after
 
 
