@@ -1,5 +1,6 @@
 """Fixtures shared by the atlas tests (the planar and spherical builds)."""
 
+import json
 import logging
 
 import numpy as np
@@ -12,6 +13,22 @@ def _same(a, b):
     assert np.array_equal(a.seeds, b.seeds)
     for name, col in a.linkages.columns().items():
         assert np.array_equal(getattr(b.linkages, name), col), name
+
+
+def _bump_version(part, key):
+    """Rewrite the Parquet `part` with its format version (metadata `key`) one higher."""
+    import pyarrow.parquet as pq
+
+    table = pq.read_table(part)
+    meta = json.loads(table.schema.metadata[key])
+    meta["version"] += 1
+    pq.write_table(table.replace_schema_metadata({key: json.dumps(meta).encode()}), part)
+
+
+@pytest.fixture
+def bump_version():
+    """Turns an atlas part into one of the next format version (planar or spherical metadata key)."""
+    return _bump_version
 
 
 @pytest.fixture

@@ -94,17 +94,14 @@ def test_parquet_roundtrip_and_append(reference, tmp_path):
         build_sphere_atlas(20, seed=3, harmonics=4).to_parquet(tmp_path / "s", append=True)
 
 
-def test_parquet_refuses_planar_version_and_empty(reference, tmp_path):
+def test_parquet_refuses_planar_version_and_empty(reference, tmp_path, bump_version):
     build_atlas(30, seed=1).to_parquet(tmp_path / "planar")
     with pytest.raises(ValueError, match="without spherical atlas metadata"):
         SphereAtlas.from_parquet(tmp_path / "planar")
     with pytest.raises(ValueError, match="holding a spherical atlas"):
         SphereAtlas.from_parquet(tmp_path / "none")
     part = reference.to_parquet(tmp_path / "v")
-    table = pq.read_table(part)
-    meta = json.loads(table.schema.metadata[b"mech.atlas.sphere"])
-    meta["version"] = SPHERE_ATLAS_VERSION + 1
-    pq.write_table(table.replace_schema_metadata({b"mech.atlas.sphere": json.dumps(meta).encode()}), part)
+    bump_version(part, b"mech.atlas.sphere")
     with pytest.raises(ValueError, match="format version"):
         SphereAtlas.from_parquet(tmp_path / "v")
 

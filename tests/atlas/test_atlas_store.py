@@ -1,7 +1,5 @@
 """The atlas store: build, Parquet round trip, append, settings and version checks."""
 
-import json
-
 import numpy as np
 import pytest
 
@@ -70,14 +68,11 @@ def test_to_parquet_refuses_overwrite_and_mismatch(small, tmp_path):
         build_atlas(50, harmonics=4).to_parquet(tmp_path / "a", append=True)
 
 
-def test_from_parquet_version_and_missing(small, tmp_path):
+def test_from_parquet_version_and_missing(small, tmp_path, bump_version):
     with pytest.raises(ValueError, match="Expected `path` to be a folder holding an atlas"):
         Atlas.from_parquet(tmp_path / "none")
     part = small.to_parquet(tmp_path / "v")
-    table = pq.read_table(part)
-    meta = json.loads(table.schema.metadata[b"mech.atlas"])
-    meta["version"] = ATLAS_VERSION + 1
-    pq.write_table(table.replace_schema_metadata({b"mech.atlas": json.dumps(meta).encode()}), part)
+    bump_version(part, b"mech.atlas")
     with pytest.raises(ValueError, match="Expected an atlas of format version"):
         Atlas.from_parquet(tmp_path / "v")
     (tmp_path / "x").mkdir()
