@@ -18,7 +18,7 @@ import numpy as np
 
 from mech._validate import integer
 from mech.atlas._sphere_sampling import SphereSamples, sphere_curves
-from mech.atlas._store import _CHUNK_KEY, _done_parts, _folder, _next_part
+from mech.atlas._store import _CHUNK_KEY, _done_parts, _folder, _next_part, _read_parts, _table_columns
 
 __all__ = ["SPHERE_ATLAS_VERSION", "SphereAtlas"]
 
@@ -129,26 +129,10 @@ class SphereAtlas:
         ValueError
             If `path` holds no spherical atlas, or parts of another version or settings.
         """
-        import pyarrow.parquet as pq
-
-        folder = _folder(path)
-        parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
-        if not parts:
-            raise ValueError(f"Expected `path` to be a folder holding a spherical atlas, got {str(path)!r}")
-        settings = read_settings(parts[0])
-        if settings.get("version") != SPHERE_ATLAS_VERSION:
-            raise ValueError(f"Expected a spherical atlas of format version {SPHERE_ATLAS_VERSION}, got version "
-                             f"{settings.get('version')!r} in {str(path)!r}")
-        tables = []
-        for part in parts:
-            check_settings(settings, read_settings(part), str(part))
-            tables.append(pq.read_table(part))
-        cols = {name: np.concatenate([t.column(name).to_numpy() for t in tables]) for name in _COLUMNS}
-        cols["kind"] = cols["kind"].astype(str)
-        cols["branch"] = cols["branch"].astype(np.int8)
+        settings, tables = _read_parts(path, "a spherical atlas", SPHERE_ATLAS_VERSION, read_settings,
+                                       check_settings)
+        cols, sig, seeds = _table_columns(tables, _COLUMNS)
         width = 3 * (int(settings["harmonics"]) + 1)
-        sig = np.concatenate([t.column("signature").combine_chunks().flatten().to_numpy() for t in tables])
-        seeds = np.concatenate([t.column("seed").to_numpy() for t in tables])
         return cls(SphereSamples(**cols), sig.reshape(-1, width), seeds, settings)
 
 

@@ -157,27 +157,10 @@ class Atlas:
         ValueError
             If `path` holds no atlas, or parts of another format version or other settings.
         """
-        import pyarrow.parquet as pq
-
-        folder = _folder(path)
-        parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
-        if not parts:
-            raise ValueError(f"Expected `path` to be a folder holding an atlas, got {str(path)!r}")
-        settings = _read_settings(parts[0])
-        if settings.get("version") != ATLAS_VERSION:
-            raise ValueError(f"Expected an atlas of format version {ATLAS_VERSION}, got version "
-                             f"{settings.get('version')!r} in {str(path)!r}")
-        tables = []
-        for part in parts:
-            _check_settings(settings, _read_settings(part), str(part))
-            tables.append(pq.read_table(part))
+        settings, tables = _read_parts(path, "an atlas", ATLAS_VERSION, _read_settings, _check_settings)
         names, record = columns_of(mechanism_of(settings))
-        cols = {name: np.concatenate([t.column(name).to_numpy() for t in tables]) for name in names}
-        cols["kind"] = cols["kind"].astype(str)
-        cols["branch"] = cols["branch"].astype(np.int8)
+        cols, sig, seeds = _table_columns(tables, names)
         width = 4 * int(settings["harmonics"])
-        sig = np.concatenate([t.column("signature").combine_chunks().flatten().to_numpy() for t in tables])
-        seeds = np.concatenate([t.column("seed").to_numpy() for t in tables])
         return cls(record(**cols), sig.reshape(-1, width), seeds, settings)
 
 
@@ -220,6 +203,39 @@ def _folder(path):
     if not isinstance(path, (str, os.PathLike)) or isinstance(path, bytes):
         raise TypeError(f"Expected `path` to be a folder name, got {_show(path)}")
     return Path(path)
+
+
+def _read_parts(path, what, version, read_settings, check_settings):
+    """The settings and Parquet tables of the atlas folder `path` (planar and spherical `from_parquet`).
+
+    `what` names the atlas in the messages ("an atlas"); `version` is the format version
+    expected; every part must have the first part's settings.
+    """
+    import pyarrow.parquet as pq
+
+    folder = _folder(path)
+    parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
+    if not parts:
+        raise ValueError(f"Expected `path` to be a folder holding {what}, got {str(path)!r}")
+    settings = read_settings(parts[0])
+    if settings.get("version") != version:
+        raise ValueError(f"Expected {what} of format version {version}, got version "
+                         f"{settings.get('version')!r} in {str(path)!r}")
+    tables = []
+    for part in parts:
+        check_settings(settings, read_settings(part), str(part))
+        tables.append(pq.read_table(part))
+    return settings, tables
+
+
+def _table_columns(tables, names):
+    """The sample columns `names` (kind as str, branch as int8), flat signatures and seeds of `tables`."""
+    cols = {name: np.concatenate([t.column(name).to_numpy() for t in tables]) for name in names}
+    cols["kind"] = cols["kind"].astype(str)
+    cols["branch"] = cols["branch"].astype(np.int8)
+    sig = np.concatenate([t.column("signature").combine_chunks().flatten().to_numpy() for t in tables])
+    seeds = np.concatenate([t.column("seed").to_numpy() for t in tables])
+    return cols, sig, seeds
 
 
 def _next_part(path, append, settings, read_settings, check_settings):
