@@ -61,16 +61,20 @@ def build_block(seed, index, block, harmonics, samples, lengths, coupler, min_tr
     return good.take(finite).columns(), sig[finite]
 
 
-def _blocks(start, work, client):
+def _blocks(start, work, client, build=None, key=None):
     """Yield ``(index, columns, signatures)`` for blocks start, start + 1, ... in order.
 
     Without a client each block is computed here when asked for; with one, a window of
     blocks ahead is kept running on the cluster and the results are taken in order.
+    `build` computes a block (`build_block` by default, `build_sphere_block` for the sphere)
+    and `key(j)` names block j's task (``mech-atlas-block-j`` by default).
     """
+    build = build_block if build is None else build
+    key = (lambda j: f"mech-atlas-block-{j}") if key is None else key
     if client is None:
         index = start
         while True:
-            yield (index, *build_block(*work(index)))
+            yield (index, *build(*work(index)))
             index += 1
     ahead = max(1, _AHEAD * sum(client.nthreads().values()))
     pending = {}
@@ -79,7 +83,7 @@ def _blocks(start, work, client):
         while True:
             for j in range(index, index + ahead):
                 if j not in pending:
-                    pending[j] = client.submit(build_block, *work(j), pure=False, key=f"mech-atlas-block-{j}")
+                    pending[j] = client.submit(build, *work(j), pure=False, key=key(j))
             cols, sig = pending.pop(index).result()
             yield index, cols, sig
             index += 1

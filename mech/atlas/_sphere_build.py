@@ -13,7 +13,7 @@ import uuid
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
-from mech.atlas._build import _take_blocks, block_seed
+from mech.atlas._build import _blocks, _take_blocks, block_seed
 from mech.atlas._signature import HARMONICS, SAMPLES
 from mech.atlas._sphere_sampling import ARCS, COUPLER_ARC, SphereSamples, sample_sphere_fourbars, sphere_curves
 from mech.atlas._sphere_signature import _resample_closed, _signature_rows
@@ -25,8 +25,6 @@ __all__ = ["build_sphere_atlas"]
 
 #: Curve points per signature sample computed before the arc-length resampling.
 DENSE = 2
-#: Blocks kept in flight per worker thread of a Dask cluster.
-_AHEAD = 2
 
 
 def sphere_signatures_of(linkages, harmonics, samples):
@@ -46,33 +44,6 @@ def build_sphere_block(seed, index, block, harmonics, samples, arcs, coupler_arc
     sig = sphere_signatures_of(good, harmonics, samples)
     finite = np.all(np.isfinite(sig), axis=1)
     return good.take(finite).columns(), sig[finite]
-
-
-def _blocks(start, work, client):
-    """Yield ``(index, columns, signatures)`` for blocks start, start + 1, ... in order."""
-    if client is None:
-        index = start
-        while True:
-            yield (index, *build_sphere_block(*work(index)))
-            index += 1
-    ahead = max(1, _AHEAD * sum(client.nthreads().values()))
-    tag = uuid.uuid4().hex[:8]
-    pending = {}
-    index = start
-    try:
-        while True:
-            for j in range(index, index + ahead):
-                if j not in pending:
-                    pending[j] = client.submit(build_sphere_block, *work(j), pure=False,
-                                               key=f"mech-sphere-atlas-{tag}-{j}")
-            cols, sig = pending.pop(index).result()
-            yield index, cols, sig
-            index += 1
-    finally:
-        from distributed import wait
-
-        wait(list(pending.values()))
-        pending.clear()
 
 
 def build_sphere_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, arcs=ARCS, coupler_arc=COUPLER_ARC,
@@ -149,10 +120,11 @@ def build_sphere_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, arcs=
     def work(index):
         return seed, index, block, harmonics, samples, arcs, coupler_arc, min_transmission
 
+    tag = uuid.uuid4().hex[:8]
     started = time.perf_counter()
     kept, sigs, total = _take_blocks(
-        _blocks(done + 1, work, client), n, total, seed, build, settings, folder, SphereSamples, write_part,
-        progress,
+        _blocks(done + 1, work, client, build_sphere_block, lambda j: f"mech-sphere-atlas-{tag}-{j}"), n, total,
+        seed, build, settings, folder, SphereSamples, write_part, progress,
         lambda index: (f"Expected `arcs`, `coupler_arc` and `min_transmission` of a design space with "
                        f"usable linkages, got arcs={arcs!r}, coupler_arc={coupler_arc!r}, "
                        f"min_transmission={min_transmission!r}: none in {index} blocks"))
