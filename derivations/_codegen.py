@@ -37,7 +37,7 @@ __all__ = ["Function", "render", "write", "check_fresh", "input_hash", "GENERATE
 #: Bump when the template changes, so every module is regenerated.
 GENERATOR_VERSION = "1"
 #: Bump when the kernel templates change (only modules that declare `vector` arguments).
-KERNEL_VERSION = "2"
+KERNEL_VERSION = "5"
 GENERATED_DIR = Path(__file__).resolve().parent.parent / "mech" / "_generated"
 
 
@@ -65,6 +65,12 @@ class Function:
         buffers the caller owns (no allocation per call), and a numba fused loop
         ``<name>_kernel`` in ``mech/_generated/<stem>_numba.py``. The other arguments are
         scalars there, and subexpressions of scalars alone are computed once per call.
+        The numba module also has ``<name>_fused_kernel``, the same loop with a scale per
+        output, returning whether every output is finite.
+    mask : str, optional
+        With kernels: the output that is NaN exactly where a point does not exist (the
+        linkage cannot be assembled). ``<name>_fused_kernel`` then also writes the mask
+        ``valid`` (True where that output is not NaN) in its one pass.
     """
 
     name: str
@@ -73,6 +79,7 @@ class Function:
     outputs: tuple
     domain: dict = field(default_factory=dict)
     vector: tuple = ()
+    mask: str = None
 
     def symbols(self):
         return [s for s, _ in self.args]
@@ -87,7 +94,8 @@ def _canonical_text(functions, equations):
         parts.append(f"def {f.name}(" + ",".join(sm.srepr(s) for s in f.symbols()) + ")")
         if f.vector:
             # only modules with kernels carry the kernel template's version in their hash
-            parts.append(f"kernels={KERNEL_VERSION} vector(" + ",".join(s.name for s in f.vector) + ")")
+            parts.append(f"kernels={KERNEL_VERSION} vector(" + ",".join(s.name for s in f.vector) + ")"
+                         + (f" mask={f.mask}" if f.mask else ""))
         for out_name, expr, _ in f.outputs:
             parts.append(f"{out_name}={sm.srepr(sm.sympify(expr))}")
     return "\n".join(parts)
@@ -211,7 +219,7 @@ def _render_all(stem, notebook, equations, functions, *, cse=True):
         "",
         f'INPUT_HASH = "{input_hash(functions, equations)}"',
         "",
-        "__all__ = [" + ", ".join(repr(f"{f.name}_kernel") for f in kernels) + "]",
+        "__all__ = [" + ", ".join(repr(f"{f.name}{kind}") for f in kernels for kind in ("_kernel", "_fused_kernel")) + "]",
         "",
         "",
         "@numba.njit(cache=True, nogil=True)",
@@ -272,6 +280,11 @@ def _numeric_check(module, functions, samples, rtol, numba_module=None):
                 kernel = getattr(numba_module, f"{f.name}_kernel")
                 candidates[f"{f.name}_kernel"] = _kernel_outputs(
                     lambda args, outs: kernel(*args, *outs), f, values, samples)
+                fused = getattr(numba_module, f"{f.name}_fused_kernel")
+                ones = (1.0,) * len(_kernels.real_parts(f)[1])
+                valid = (np.empty(1, dtype=bool),) if f.mask else ()
+                candidates[f"{f.name}_fused_kernel"] = _kernel_outputs(
+                    lambda args, outs: fused(*args, ones, *outs, *valid), f, values, samples)
         reference = sm.lambdify(syms, f.exprs(), modules="mpmath")
         with mpmath.workdps(50):
             for i in range(samples):

@@ -179,6 +179,13 @@ class _Emitter:
         if positive:
             acc = self.value(positive[0])
             steps = [("add", t) for t in positive[1:]]
+        elif rest != 0:
+            # rest - t: one subtraction, not a negation and an addition
+            last = not negative[1:]
+            acc = self.call("subtract", [(_scalar(rest), None), self.value(negative[0])], dst if last else None)
+            if last:
+                return acc
+            negative, steps, rest = negative[1:], [], sm.S.Zero
         else:
             acc = self.call("negative", [self.value(negative[0])], None)
             negative, steps = negative[1:], []
@@ -247,9 +254,17 @@ def numpy_kernel(f, replacements, reduced):
         for sym in e.free_symbols:
             last_use[sym] = k
     holders = {}  # work row -> CSE symbols held there
+    # an output that is a CSE symbol is computed straight into its output array (no copy)
+    direct = {}
+    for k, expr in enumerate(reduced):
+        if expr.is_Symbol and expr not in vector:
+            direct.setdefault(expr, k)
     for k, (sym, sub) in enumerate(replacements):
         if not em.is_vec(sub):
             scalar_lines.append(f"{sym} = {_scalar(sub)}")
+            continue
+        if sym in direct and not sub.is_Symbol:
+            em.where[sym] = em.value(sub, f"out[{direct[sym]}]")[0]
             continue
         text, owned = em.value(sub)
         em.where[sym] = owned if owned is not None else text
@@ -262,6 +277,8 @@ def numpy_kernel(f, replacements, reduced):
                 em.release(row)
     for k, expr in enumerate(reduced):
         dst = f"out[{k}]"
+        if em.where.get(expr) == dst:
+            continue
         if em.is_vec(expr):
             em.value(expr, dst)
         else:
@@ -279,6 +296,14 @@ def numpy_kernel(f, replacements, reduced):
     body.append(f"    {names}{',' if rows == 1 else ''} = work[:{rows}]")
     body += [f"    {ln}" for ln in em.lines]
     return body, rows
+
+
+def _tree_sum(terms):
+    """``terms`` added pairwise, ``((y0 + y1) + (y2 + y3)) + ...``: a short chain of additions."""
+    while len(terms) > 1:
+        terms = [f"({terms[k]} + {terms[k + 1]})" if k + 1 < len(terms) else terms[k]
+                 for k in range(0, len(terms), 2)]
+    return terms[0]
 
 
 class _LoopPrinter(PythonCodePrinter):
@@ -309,4 +334,37 @@ def numba_kernel(f, replacements, reduced):
     body += [f"        {ln}" for ln in loop]
     for name, expr in zip(outs, reduced):
         body.append(f"        {name}[i] = {printer.doprint(expr.xreplace(per_point))}")
+    # the solvers' variant: the same loop, each output times its power-of-two scale (exact,
+    # so the same bits as scaling afterwards), the validity mask and a finiteness check in
+    # the same pass
+    slots = real_parts(f)[1]
+    names = [name for name, _, _ in f.outputs]
+    mark = None
+    if f.mask is not None:
+        mark = next(j for j, (k, part) in enumerate(slots) if names[k] == f.mask and part != "imag")
+    args = ", ".join([s.name for s in f.symbols()] + ["scales"] + outs + (["valid"] if f.mask else []))
+    body += ["", "", "@numba.njit(cache=True, nogil=True, error_model='numpy')",
+             f"def {f.name}_fused_kernel({args}):"]
+    doc = [f'    """`{f.name}_kernel`, each output k times ``scales[k]``.', ""]
+    if f.mask:
+        doc += [f"    ``valid[i]`` is True where output ``{f.mask}`` at point i is not NaN (the point exists)."]
+    doc += ["    Returns True if the sum of every output at every point is finite (so each is);",
+            '    False if one is NaN or infinite, or the sum overflows."""']
+    body += doc
+    body += [f"    {ln}" for ln in hoisted]
+    body += [f"    scale{k} = scales[{k}]" for k in range(len(outs))]
+    body.append("    acc = 0.0")
+    body.append(f"    for i in range({outs[0]}.shape[0]):")
+    body += [f"        {s.name}_i = {s.name}[i]" for s in vector]
+    body += [f"        {ln}" for ln in loop]
+    for k, expr in enumerate(reduced):
+        body.append(f"        y{k} = ({printer.doprint(expr.xreplace(per_point))})*scale{k}")
+    for k, name in enumerate(outs):
+        body.append(f"        {name}[i] = y{k}")
+    if mark is not None:
+        body.append(f"        valid[i] = y{mark} == y{mark}")
+    # the sum is finite only if every output is (a NaN or an infinity stays in it); a
+    # finite sum that overflows answers False, and the caller checks more closely
+    body.append("        acc += " + _tree_sum([f"y{k}" for k in range(len(outs))]))
+    body.append("    return math.isfinite(acc)")
     return body

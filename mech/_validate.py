@@ -21,6 +21,7 @@ A wrong *type* raises :class:`mech.InputTypeError`, which is both a ``TypeError`
 bad input, and ``except TypeError`` catches exactly the wrong types.
 """
 
+import math
 import numbers
 
 import numpy as np
@@ -179,6 +180,11 @@ def real_array(name, value, *, finite=True):
     :class:`~mech.InputTypeError`, and (with ``finite=True``) NaN and infinities with a
     ``ValueError``; every message names the argument ``name`` and shows the bad value.
     """
+    if type(value) is np.ndarray and value.dtype == np.float64:
+        # the common case, an array of floats: one summation decides (NaN or an infinity
+        # makes the sum non-finite; a finite sum that overflows takes the full check)
+        if not finite or math.isfinite(np.add.reduce(value, axis=None)):
+            return value
     if value is None or isinstance(value, (str, bytes, bool, np.bool_, complex, np.complexfloating, *_TIME)):
         raise InputTypeError(f"Expected `{name}` to be a real number, got {value!r}")
     value = _masked(name, value)

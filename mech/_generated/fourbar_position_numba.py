@@ -10,9 +10,9 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:165bfca3e6099e3926d1655e17bb371461d9e59b89c091f89a80442a7da13c5c"
+INPUT_HASH = "sha256:6012c59bee3c1577fc3b381e46b440383a8bc50d5f32c8c7258dc88e6ab861f9"
 
-__all__ = ['fourbar_position_kernel', 'fourbar_position_signed_kernel', 'fourbar_velocity_kernel', 'fourbar_acceleration_kernel']
+__all__ = ['fourbar_position_kernel', 'fourbar_position_fused_kernel', 'fourbar_position_signed_kernel', 'fourbar_position_signed_fused_kernel', 'fourbar_velocity_kernel', 'fourbar_velocity_fused_kernel', 'fourbar_acceleration_kernel', 'fourbar_acceleration_fused_kernel']
 
 
 @numba.njit(cache=True, nogil=True)
@@ -61,6 +61,64 @@ def fourbar_position_kernel(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, o
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
+def fourbar_position_fused_kernel(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, scales, out0, out1, out2, out3, out4, out5, out6, valid):
+    """`fourbar_position_kernel`, each output k times ``scales[k]``.
+
+    ``valid[i]`` is True where output ``S`` at point i is not NaN (the point exists).
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x8 = a - d
+    x9 = 4*a*d
+    x21 = 1/b
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    scale6 = scales[6]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        x0 = (1/2)*theta_i
+        x1 = math.sin(x0)
+        x2 = x1**2
+        x3 = 2*x2
+        x4 = a*(1 - x3)
+        x5 = math.cos(x0)
+        x6 = 2*a*x1*x5
+        x7 = a*x3 - a + d
+        x10 = x2*x9
+        x11 = x10 + x8**2
+        x12 = b**2 - c**2 + x11
+        x13 = math.sqrt(x11)
+        x14 = x10/(x13 + abs(x8))
+        x15 = math.sqrt((gap2 + x14)*(gap3 + x14)*(gap4 + x5**2*x9/(a + d + x13)))
+        x16 = math.sqrt(b + c + x13)
+        x17 = x15*x16
+        x18 = (1/2)/x11
+        x19 = x18*(branch*x17*x6 + x12*x7)
+        x20 = x18*(branch*x15*x16*x7 - x12*x6)
+        y0 = (x4)*scale0
+        y1 = (x6)*scale1
+        y2 = (x19 + x4)*scale2
+        y3 = (x20 + x6)*scale3
+        y4 = (x21*(p*x19 - q*x20) + x4)*scale4
+        y5 = (x21*(p*x20 + q*x19) + x6)*scale5
+        y6 = (x17)*scale6
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        out6[i] = y6
+        valid[i] = y6 == y6
+        acc += (((y0 + y1) + (y2 + y3)) + ((y4 + y5) + y6))
+    return math.isfinite(acc)
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
 def fourbar_position_signed_kernel(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4, out0, out1, out2, out3, out4, out5, out6):
     """`fourbar_position_signed` as one loop over the points, written into out0, out1, ..."""
     x8 = a - d
@@ -99,6 +157,66 @@ def fourbar_position_signed_kernel(a, b, c, d, p, q, theta, branch, gap2, gap3, 
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
+def fourbar_position_signed_fused_kernel(a, b, c, d, p, q, theta, branch, gap2, gap3, gap4, m23, m4, scales, out0, out1, out2, out3, out4, out5, out6, valid):
+    """`fourbar_position_signed_kernel`, each output k times ``scales[k]``.
+
+    ``valid[i]`` is True where output ``S`` at point i is not NaN (the point exists).
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x8 = a - d
+    x9 = 4*a*d
+    x23 = 1/b
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    scale6 = scales[6]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        x0 = (1/2)*theta_i
+        x1 = math.sin(x0)
+        x2 = x1**2
+        x3 = 2*x2
+        x4 = a*(1 - x3)
+        x5 = math.cos(x0)
+        x6 = 2*a*x1*x5
+        x7 = a*x3 - a + d
+        x10 = x2*x9
+        x11 = x10 + x8**2
+        x12 = b**2 - c**2 + x11
+        x13 = math.sqrt(x11)
+        x14 = x10/(x13 + abs(x8))
+        x15 = math.sqrt((gap2 + x14)*(gap3 + x14)*(gap4 + x5**2*x9/(a + d + x13)))
+        x16 = math.sqrt(b + c + x13)
+        x17 = _sign(x5)**m4
+        x18 = _sign(x1)**m23
+        x19 = x15*x16*x17*x18
+        x20 = (1/2)/x11
+        x21 = x20*(branch*x19*x6 + x12*x7)
+        x22 = x20*(branch*x15*x16*x17*x18*x7 - x12*x6)
+        y0 = (x4)*scale0
+        y1 = (x6)*scale1
+        y2 = (x21 + x4)*scale2
+        y3 = (x22 + x6)*scale3
+        y4 = (x23*(p*x21 - q*x22) + x4)*scale4
+        y5 = (x23*(p*x22 + q*x21) + x6)*scale5
+        y6 = (x19)*scale6
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        out6[i] = y6
+        valid[i] = y6 == y6
+        acc += (((y0 + y1) + (y2 + y3)) + ((y4 + y5) + y6))
+    return math.isfinite(acc)
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
 def fourbar_velocity_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, out0, out1, out2, out3, out4, out5, out6, out7):
     """`fourbar_velocity` as one loop over the points, written into out0, out1, ..."""
     for i in range(out0.shape[0]):
@@ -125,6 +243,57 @@ def fourbar_velocity_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, ou
         out5[i] = x3*(C_x_i - d)
         out6[i] = -x4 - x8*(p*x6 + q*x7)
         out7[i] = x5 + x8*(p*x7 - q*x6)
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def fourbar_velocity_fused_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, scales, out0, out1, out2, out3, out4, out5, out6, out7):
+    """`fourbar_velocity_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    scale6 = scales[6]
+    scale7 = scales[7]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        B_x_i = B_x[i]
+        B_y_i = B_y[i]
+        C_x_i = C_x[i]
+        C_y_i = C_y[i]
+        S_i = S[i]
+        omega_i = omega[i]
+        x0 = B_x_i*C_y_i - B_y_i*C_x_i
+        x1 = 2*omega_i/(S_i*branch)
+        x2 = x1*(-B_y_i*d - x0)
+        x3 = -x0*x1
+        x4 = B_y_i*omega_i
+        x5 = B_x_i*omega_i
+        x6 = -B_y_i + C_y_i
+        x7 = -B_x_i + C_x_i
+        x8 = x2/b
+        y0 = (x2)*scale0
+        y1 = (x3)*scale1
+        y2 = (-x4)*scale2
+        y3 = (x5)*scale3
+        y4 = (-C_y_i*x3)*scale4
+        y5 = (x3*(C_x_i - d))*scale5
+        y6 = (-x4 - x8*(p*x6 + q*x7))*scale6
+        y7 = (x5 + x8*(p*x7 - q*x6))*scale7
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        out6[i] = y6
+        out7[i] = y7
+        acc += (((y0 + y1) + (y2 + y3)) + ((y4 + y5) + (y6 + y7)))
+    return math.isfinite(acc)
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
@@ -171,3 +340,71 @@ def fourbar_acceleration_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega
         out5[i] = x0*x12*x13*x16 - x8
         out6[i] = -x18*x20 - x21*x22 - x6
         out7[i] = x10 + x18*x22 - x20*x21
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def fourbar_acceleration_fused_kernel(b, d, p, q, B_x, B_y, C_x, C_y, S, branch, omega, alpha, omega_coupler, omega_output, scales, out0, out1, out2, out3, out4, out5, out6, out7):
+    """`fourbar_acceleration_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x13 = 1/branch
+    x19 = 1/b
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    scale6 = scales[6]
+    scale7 = scales[7]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        B_x_i = B_x[i]
+        B_y_i = B_y[i]
+        C_x_i = C_x[i]
+        C_y_i = C_y[i]
+        S_i = S[i]
+        omega_i = omega[i]
+        alpha_i = alpha[i]
+        omega_coupler_i = omega_coupler[i]
+        omega_output_i = omega_output[i]
+        x0 = C_x_i - d
+        x1 = omega_coupler_i**2
+        x2 = -B_x_i + C_x_i
+        x3 = omega_output_i**2
+        x4 = x0*x3
+        x5 = omega_i**2
+        x6 = B_x_i*x5 + B_y_i*alpha_i
+        x7 = x1*x2 - x4 + x6
+        x8 = C_y_i*x3
+        x9 = -B_y_i + C_y_i
+        x10 = B_x_i*alpha_i - B_y_i*x5
+        x11 = -2*x1*x9 + 2*x10 + 2*x8
+        x12 = 1/S_i
+        x14 = x12*x13
+        x15 = x14*(-C_y_i*x11 + 2*x0*x7)
+        x16 = -x11*x9 + 2*x2*x7
+        x17 = x14*x16
+        x18 = p*x2 - q*x9
+        x20 = x1*x19
+        x21 = p*x9 + q*x2
+        x22 = x15*x19
+        y0 = (x15)*scale0
+        y1 = (x17)*scale1
+        y2 = (-x6)*scale2
+        y3 = (x10)*scale3
+        y4 = (-C_y_i*x17 - x4)*scale4
+        y5 = (x0*x12*x13*x16 - x8)*scale5
+        y6 = (-x18*x20 - x21*x22 - x6)*scale6
+        y7 = (x10 + x18*x22 - x20*x21)*scale7
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        out6[i] = y6
+        out7[i] = y7
+        acc += (((y0 + y1) + (y2 + y3)) + ((y4 + y5) + (y6 + y7)))
+    return math.isfinite(acc)

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:611d4edc4155c9b80181fb64d4676870499385ff58c808dcc7cb7be14c7b6100"
+INPUT_HASH = "sha256:a2ab6fe43f3dd30c58c3d167dc58fbfa78efd26c6d88329db1e4e7aeb8667556"
 
 __all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_acceleration', 'slider_crank_limits', 'slider_crank_transmission', 'slider_crank_min_transmission', 'slider_crank_series', 'guide_bar_position', 'guide_bar_velocity', 'guide_bar_acceleration', 'guide_bar_swing', 'guide_bar_crank', 'slider_crank_position_into', 'slider_crank_velocity_into', 'slider_crank_acceleration_into', 'guide_bar_position_into', 'guide_bar_velocity_into', 'guide_bar_acceleration_into']
 
@@ -57,26 +57,22 @@ def slider_crank_position(a, b, e, theta, m):
 
 def slider_crank_position_into(a, b, e, theta, m, out, work):
     """`slider_crank_position` written into ``out`` (one array per output, in order), using the
-    rows of ``work`` (shape (6, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
-    w0, w1, w2, w3, w4, w5 = work[:6]
+    rows of ``work`` (shape (3, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
+    w0, w1, w2 = work[:3]
     np.sin(theta, out=w0)
-    np.multiply(w0, a, out=w0)
-    np.add(w0, (-e), out=w1)
-    np.add(w1, b, out=w2)
-    np.negative(w0, out=w3)
-    np.add(w3, (b + e), out=w3)
-    np.multiply(w2, w3, out=w2)
-    np.sqrt(w2, out=w2)
-    np.multiply(w2, m, out=w2)
-    np.cos(theta, out=w3)
-    np.multiply(w3, a, out=w3)
-    np.add(w2, w3, out=w4)
-    np.copyto(out[0], w4)
-    np.negative(w1, out=w5)
-    np.arctan2(w5, w2, out=out[1])
-    np.copyto(out[2], w3)
-    np.copyto(out[3], w0)
-    np.copyto(out[4], w4)
+    np.multiply(w0, a, out=out[3])
+    np.add(out[3], (-e), out=w0)
+    np.add(w0, b, out=w1)
+    np.subtract((b + e), out[3], out=w2)
+    np.multiply(w1, w2, out=w1)
+    np.sqrt(w1, out=w1)
+    np.multiply(w1, m, out=w1)
+    np.cos(theta, out=w2)
+    np.multiply(w2, a, out=out[2])
+    np.add(w1, out[2], out=out[0])
+    np.negative(w0, out=w2)
+    np.arctan2(w2, w1, out=out[1])
+    np.copyto(out[4], out[0])
     out[5][...] = e
 
 
@@ -127,32 +123,30 @@ def slider_crank_velocity(a, b, e, theta, m, omega):
 
 def slider_crank_velocity_into(a, b, e, theta, m, omega, out, work):
     """`slider_crank_velocity` written into ``out`` (one array per output, in order), using the
-    rows of ``work`` (shape (7, n)) for temporaries; per-point arguments: ``theta``, ``omega`` (length n)."""
+    rows of ``work`` (shape (6, n)) for temporaries; per-point arguments: ``theta``, ``omega`` (length n)."""
     x0 = (m**(-1.0))
-    w0, w1, w2, w3, w4, w5, w6 = work[:7]
+    w0, w1, w2, w3, w4, w5 = work[:6]
     np.sin(theta, out=w0)
     np.multiply(w0, a, out=w0)
     np.add(w0, (-e), out=w1)
     np.add(w1, b, out=w2)
-    np.negative(w0, out=w3)
-    np.add(w3, (b + e), out=w3)
+    np.subtract((b + e), w0, out=w3)
     np.multiply(w2, w3, out=w2)
     np.sqrt(w2, out=w2)
     np.divide(1.0, w2, out=w2)
     np.cos(theta, out=w3)
     np.multiply(w3, omega, out=w4)
-    np.multiply(w4, a, out=w4)
-    np.multiply(w0, omega, out=w5)
-    np.multiply(w2, w4, out=w0)
+    np.multiply(w4, a, out=out[3])
+    np.multiply(w0, omega, out=w4)
+    np.multiply(w2, out[3], out=w0)
     np.multiply(w0, (-x0), out=out[0])
-    np.negative(w5, out=w0)
-    np.multiply(w1, w2, out=w6)
-    np.multiply(w6, w3, out=w6)
-    np.multiply(w6, omega, out=w6)
-    np.multiply(w6, (a*x0), out=w6)
-    np.subtract(w0, w6, out=out[1])
-    np.negative(w5, out=out[2])
-    np.copyto(out[3], w4)
+    np.negative(w4, out=w0)
+    np.multiply(w1, w2, out=w5)
+    np.multiply(w5, w3, out=w5)
+    np.multiply(w5, omega, out=w5)
+    np.multiply(w5, (a*x0), out=w5)
+    np.subtract(w0, w5, out=out[1])
+    np.negative(w4, out=out[2])
 
 
 def slider_crank_acceleration(a, b, e, theta, m, omega, alpha):
@@ -215,8 +209,7 @@ def slider_crank_acceleration_into(a, b, e, theta, m, omega, alpha, out, work):
     w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11 = work[:12]
     np.sin(theta, out=w0)
     np.multiply(w0, a, out=w0)
-    np.negative(w0, out=w1)
-    np.add(w1, (b + e), out=w1)
+    np.subtract((b + e), w0, out=w1)
     np.add(w0, (-e), out=w2)
     np.add(w2, b, out=w3)
     np.multiply(w1, w3, out=w4)
@@ -237,18 +230,17 @@ def slider_crank_acceleration_into(a, b, e, theta, m, omega, alpha, out, work):
     np.add(w6, w7, out=w7)
     np.subtract(w7, w9, out=w7)
     np.multiply(w7, x0, out=w7)
-    np.divide(w7, w4, out=w7)
-    np.multiply(w0, alpha, out=w3)
-    np.multiply(w5, w8, out=w1)
-    np.add(w3, w1, out=w3)
-    np.copyto(out[0], w7)
-    np.negative(w3, out=w8)
-    np.multiply(w10, w7, out=w5)
+    np.divide(w7, w4, out=out[0])
+    np.multiply(w0, alpha, out=w7)
+    np.multiply(w5, w8, out=w3)
+    np.add(w7, w3, out=w7)
+    np.negative(w7, out=w8)
+    np.multiply(w10, out[0], out=w5)
     np.subtract(w8, w5, out=w8)
     np.multiply(w2, w4, out=w5)
     np.multiply(w5, x0, out=w5)
     np.subtract(w8, w5, out=out[1])
-    np.negative(w3, out=out[2])
+    np.negative(w7, out=out[2])
     np.subtract(w9, w6, out=out[3])
 
 
@@ -434,26 +426,22 @@ def guide_bar_position(a, d, theta):
 
 def guide_bar_position_into(a, d, theta, out, work):
     """`guide_bar_position` written into ``out`` (one array per output, in order), using the
-    rows of ``work`` (shape (3, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
+    rows of ``work`` (shape (1, n)) for temporaries; per-point arguments: ``theta`` (length n)."""
     x1 = (-d)
-    w0, w1, w2 = work[:3]
+    w0, = work[:1]
     np.sin(theta, out=w0)
-    np.multiply(w0, a, out=w0)
-    np.cos(theta, out=w1)
-    np.multiply(w1, a, out=w1)
-    np.negative(w1, out=w2)
-    np.add(w2, (-x1), out=w2)
-    np.arctan2(w0, w2, out=w2)
-    np.negative(w2, out=w2)
-    np.add(w2, (np.pi), out=out[0])
-    np.multiply(theta, 1/2, out=w2)
-    np.sin(w2, out=w2)
-    np.square(w2, out=w2)
-    np.multiply(w2, (4*a*d), out=w2)
-    np.add(w2, ((-a - x1)**2), out=w2)
-    np.sqrt(w2, out=out[1])
-    np.copyto(out[2], w1)
-    np.copyto(out[3], w0)
+    np.multiply(w0, a, out=out[3])
+    np.cos(theta, out=w0)
+    np.multiply(w0, a, out=out[2])
+    np.subtract((-x1), out[2], out=w0)
+    np.arctan2(out[3], w0, out=w0)
+    np.subtract((np.pi), w0, out=out[0])
+    np.multiply(theta, 1/2, out=w0)
+    np.sin(w0, out=w0)
+    np.square(w0, out=w0)
+    np.multiply(w0, (4*a*d), out=w0)
+    np.add(w0, ((-a - x1)**2), out=w0)
+    np.sqrt(w0, out=out[1])
 
 
 def guide_bar_velocity(a, d, theta, omega):
@@ -509,8 +497,7 @@ def guide_bar_velocity_into(a, d, theta, omega, out, work):
     np.sin(theta, out=w3)
     np.multiply(w2, w3, out=w3)
     np.multiply(w1, d, out=w4)
-    np.negative(w4, out=w4)
-    np.add(w4, a, out=w4)
+    np.subtract(a, w4, out=w4)
     np.multiply(w2, w4, out=w4)
     np.divide(w4, w0, out=out[0])
     np.multiply(w3, d, out=w4)
@@ -576,8 +563,7 @@ def guide_bar_acceleration_into(a, d, theta, omega, alpha, out, work):
     np.add(w0, ((-a + d)**2), out=w0)
     np.cos(theta, out=w1)
     np.multiply(w1, d, out=w2)
-    np.negative(w2, out=w2)
-    np.add(w2, a, out=w2)
+    np.subtract(a, w2, out=w2)
     np.multiply(alpha, a, out=w3)
     np.sin(theta, out=w4)
     np.square(omega, out=w5)
@@ -663,4 +649,4 @@ def guide_bar_crank(d, swing):
 
 
 #: Rows of the ``work`` array each ``*_into`` kernel needs.
-WORK_ROWS = {'slider_crank_position': 6, 'slider_crank_velocity': 7, 'slider_crank_acceleration': 12, 'guide_bar_position': 3, 'guide_bar_velocity': 6, 'guide_bar_acceleration': 13}
+WORK_ROWS = {'slider_crank_position': 3, 'slider_crank_velocity': 6, 'slider_crank_acceleration': 12, 'guide_bar_position': 1, 'guide_bar_velocity': 6, 'guide_bar_acceleration': 13}

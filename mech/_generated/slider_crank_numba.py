@@ -10,9 +10,9 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:611d4edc4155c9b80181fb64d4676870499385ff58c808dcc7cb7be14c7b6100"
+INPUT_HASH = "sha256:a2ab6fe43f3dd30c58c3d167dc58fbfa78efd26c6d88329db1e4e7aeb8667556"
 
-__all__ = ['slider_crank_position_kernel', 'slider_crank_velocity_kernel', 'slider_crank_acceleration_kernel', 'guide_bar_position_kernel', 'guide_bar_velocity_kernel', 'guide_bar_acceleration_kernel']
+__all__ = ['slider_crank_position_kernel', 'slider_crank_position_fused_kernel', 'slider_crank_velocity_kernel', 'slider_crank_velocity_fused_kernel', 'slider_crank_acceleration_kernel', 'slider_crank_acceleration_fused_kernel', 'guide_bar_position_kernel', 'guide_bar_position_fused_kernel', 'guide_bar_velocity_kernel', 'guide_bar_velocity_fused_kernel', 'guide_bar_acceleration_kernel', 'guide_bar_acceleration_fused_kernel']
 
 
 @numba.njit(cache=True, nogil=True)
@@ -43,6 +43,42 @@ def slider_crank_position_kernel(a, b, e, theta, m, out0, out1, out2, out3, out4
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
+def slider_crank_position_fused_kernel(a, b, e, theta, m, scales, out0, out1, out2, out3, out4, out5):
+    """`slider_crank_position_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        x0 = a*math.sin(theta_i)
+        x1 = -e + x0
+        x2 = m*math.sqrt((b + x1)*(b + e - x0))
+        x3 = a*math.cos(theta_i)
+        x4 = x2 + x3
+        y0 = (x4)*scale0
+        y1 = (math.atan2(-x1, x2))*scale1
+        y2 = (x3)*scale2
+        y3 = (x0)*scale3
+        y4 = (x4)*scale4
+        y5 = (e)*scale5
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        acc += (((y0 + y1) + (y2 + y3)) + (y4 + y5))
+    return math.isfinite(acc)
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
 def slider_crank_velocity_kernel(a, b, e, theta, m, omega, out0, out1, out2, out3):
     """`slider_crank_velocity` as one loop over the points, written into out0, out1, ..."""
     x0 = 1/m
@@ -59,6 +95,39 @@ def slider_crank_velocity_kernel(a, b, e, theta, m, omega, out0, out1, out2, out
         out1[i] = -a*omega_i*x0*x2*x3*x4 - x6
         out2[i] = -x6
         out3[i] = x5
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def slider_crank_velocity_fused_kernel(a, b, e, theta, m, omega, scales, out0, out1, out2, out3):
+    """`slider_crank_velocity_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x0 = 1/m
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        omega_i = omega[i]
+        x1 = a*math.sin(theta_i)
+        x2 = -e + x1
+        x3 = 1/math.sqrt((b + x2)*(b + e - x1))
+        x4 = math.cos(theta_i)
+        x5 = a*omega_i*x4
+        x6 = omega_i*x1
+        y0 = (-x0*x3*x5)*scale0
+        y1 = (-a*omega_i*x0*x2*x3*x4 - x6)*scale1
+        y2 = (-x6)*scale2
+        y3 = (x5)*scale3
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        acc += ((y0 + y1) + (y2 + y3))
+    return math.isfinite(acc)
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
@@ -90,6 +159,48 @@ def slider_crank_acceleration_kernel(a, b, e, theta, m, omega, alpha, out0, out1
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
+def slider_crank_acceleration_fused_kernel(a, b, e, theta, m, omega, alpha, scales, out0, out1, out2, out3):
+    """`slider_crank_acceleration_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x0 = 1/m
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        omega_i = omega[i]
+        alpha_i = alpha[i]
+        x1 = a*math.sin(theta_i)
+        x2 = b + e - x1
+        x3 = -e + x1
+        x4 = b + x3
+        x5 = math.sqrt(x2*x4)
+        x6 = omega_i**2
+        x7 = x1*x6
+        x8 = math.cos(theta_i)
+        x9 = a*x8
+        x10 = alpha_i*x9
+        x11 = -x3
+        x12 = a**2*x6*x8**2/(x2*x4)
+        x13 = x0*(-x10 + x7 + x11*x12/m**2)/x5
+        x14 = alpha_i*x1 + x6*x9
+        y0 = (x13)*scale0
+        y1 = (-x0*x12*x5 - x11*x13 - x14)*scale1
+        y2 = (-x14)*scale2
+        y3 = (x10 - x7)*scale3
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        acc += ((y0 + y1) + (y2 + y3))
+    return math.isfinite(acc)
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
 def guide_bar_position_kernel(a, d, theta, out0, out1, out2, out3):
     """`guide_bar_position` as one loop over the points, written into out0, out1, ..."""
     x1 = -d
@@ -101,6 +212,34 @@ def guide_bar_position_kernel(a, d, theta, out0, out1, out2, out3):
         out1[i] = math.sqrt(4*a*d*math.sin((1/2)*theta_i)**2 + (-a - x1)**2)
         out2[i] = x2
         out3[i] = x0
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def guide_bar_position_fused_kernel(a, d, theta, scales, out0, out1, out2, out3):
+    """`guide_bar_position_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x1 = -d
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        x0 = a*math.sin(theta_i)
+        x2 = a*math.cos(theta_i)
+        y0 = (math.pi - math.atan2(x0, -x1 - x2))*scale0
+        y1 = (math.sqrt(4*a*d*math.sin((1/2)*theta_i)**2 + (-a - x1)**2))*scale1
+        y2 = (x2)*scale2
+        y3 = (x0)*scale3
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        acc += ((y0 + y1) + (y2 + y3))
+    return math.isfinite(acc)
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
@@ -117,6 +256,36 @@ def guide_bar_velocity_kernel(a, d, theta, omega, out0, out1, out2, out3):
         out1[i] = d*x3/math.sqrt(x0)
         out2[i] = -x3
         out3[i] = x1*x2
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def guide_bar_velocity_fused_kernel(a, d, theta, omega, scales, out0, out1, out2, out3):
+    """`guide_bar_velocity_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        omega_i = omega[i]
+        x0 = 4*a*d*math.sin((1/2)*theta_i)**2 + (-a + d)**2
+        x1 = math.cos(theta_i)
+        x2 = a*omega_i
+        x3 = x2*math.sin(theta_i)
+        y0 = (x2*(a - d*x1)/x0)*scale0
+        y1 = (d*x3/math.sqrt(x0))*scale1
+        y2 = (-x3)*scale2
+        y3 = (x1*x2)*scale3
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        acc += ((y0 + y1) + (y2 + y3))
+    return math.isfinite(acc)
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
@@ -141,3 +310,41 @@ def guide_bar_acceleration_kernel(a, d, theta, omega, alpha, out0, out1, out2, o
         out1[i] = a*d*(x10 + x9)/math.sqrt(x0) - d**2*x4**2*x5*x8/x0**(3/2)
         out2[i] = -a*x10 - a*x9
         out3[i] = x1*x3 - x7
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def guide_bar_acceleration_fused_kernel(a, d, theta, omega, alpha, scales, out0, out1, out2, out3):
+    """`guide_bar_acceleration_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x8 = a**2
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        omega_i = omega[i]
+        alpha_i = alpha[i]
+        x0 = 4*a*d*math.sin((1/2)*theta_i)**2 + (-a + d)**2
+        x1 = math.cos(theta_i)
+        x2 = a - d*x1
+        x3 = a*alpha_i
+        x4 = math.sin(theta_i)
+        x5 = omega_i**2
+        x6 = x4*x5
+        x7 = a*x6
+        x9 = alpha_i*x4
+        x10 = x1*x5
+        y0 = (-2*d*x2*x6*x8/x0**2 + (d*x7 + x2*x3)/x0)*scale0
+        y1 = (a*d*(x10 + x9)/math.sqrt(x0) - d**2*x4**2*x5*x8/x0**(3/2))*scale1
+        y2 = (-a*x10 - a*x9)*scale2
+        y3 = (x1*x3 - x7)*scale3
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        acc += ((y0 + y1) + (y2 + y3))
+    return math.isfinite(acc)

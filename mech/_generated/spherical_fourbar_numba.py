@@ -10,9 +10,9 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:034352197ba026491837230a0e62b3f78d9b31b0c47eb502f1f157b9c32591b3"
+INPUT_HASH = "sha256:b9a58308bbf6830c353c019469b2dd8f68c309de04f3da8699a8e92761718e79"
 
-__all__ = ['spherical_fourbar_position_kernel', 'spherical_fourbar_velocity_kernel', 'spherical_fourbar_acceleration_kernel']
+__all__ = ['spherical_fourbar_position_kernel', 'spherical_fourbar_position_fused_kernel', 'spherical_fourbar_velocity_kernel', 'spherical_fourbar_velocity_fused_kernel', 'spherical_fourbar_acceleration_kernel', 'spherical_fourbar_acceleration_fused_kernel']
 
 
 @numba.njit(cache=True, nogil=True)
@@ -82,6 +82,89 @@ def spherical_fourbar_position_kernel(a, b, c, d, r, gamma, theta, sigma, out0, 
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
+def spherical_fourbar_position_fused_kernel(a, b, c, d, r, gamma, theta, sigma, scales, out0, out1, out2, out3, out4, out5, out6, out7, out8, out9):
+    """`spherical_fourbar_position_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x0 = math.cos(a)
+    x1 = math.sin(d)
+    x2 = math.cos(d)
+    x4 = math.sin(a)
+    x7 = math.sin(c)
+    x8 = x7**2
+    x12 = math.cos(c)
+    x14 = (1/2)*b
+    x15 = (1/2)*c
+    x16 = 2*math.sin(x14 - x15)*math.sin(x14 + x15)
+    x29 = 1/math.sin(b)
+    x31 = math.cos(gamma)
+    x35 = math.sin(gamma)
+    x38 = math.sin(r)
+    x39 = math.cos(r)
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    scale6 = scales[6]
+    scale7 = scales[7]
+    scale8 = scales[8]
+    scale9 = scales[9]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        theta_i = theta[i]
+        x3 = math.cos(theta_i)
+        x5 = x3*x4
+        x6 = -x0*x1 + x2*x5
+        x9 = math.sin(theta_i)
+        x10 = x4**2*x8*x9**2 + x6**2*x8
+        x11 = math.sqrt(x10)
+        x13 = x12*(x1*x4*(1 - x3) + 2*math.sin((1/2)*a - 1/2*d)**2)
+        x17 = x13 - x16
+        x18 = sigma*math.sqrt((x11 + x17)*(x11 - x13 + x16))
+        x19 = x4*x9
+        x20 = x19*x7
+        x21 = x17*x20 + x18*x6*x7
+        x22 = x17*x6*x7 - x18*x20
+        x23 = 1/x10
+        x24 = x23*x7
+        x25 = x22*x24
+        x26 = x1*x12 + x2*x25
+        x27 = x21*x24
+        x28 = -x1*x25 + x12*x2
+        x30 = x21*x23*x3*x7 - x26*x9
+        x32 = x0*x3
+        x33 = x0*x9
+        x34 = x26*x32 + x27*x33 - x28*x4
+        x36 = x29*(x30*x31 + x34*x35)
+        x37 = x29*(-x30*x35 + x31*x34)
+        y0 = (math.atan2(x21, x22))*scale0
+        y1 = (x5)*scale1
+        y2 = (x19)*scale2
+        y3 = (x0)*scale3
+        y4 = (x26)*scale4
+        y5 = (x27)*scale5
+        y6 = (x28)*scale6
+        y7 = (x38*(x32*x37 - x36*x9) + x39*x5)*scale7
+        y8 = (x19*x39 + x38*(x3*x36 + x33*x37))*scale8
+        y9 = (x0*x39 - x37*x38*x4)*scale9
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        out6[i] = y6
+        out7[i] = y7
+        out8[i] = y8
+        out9[i] = y9
+        acc += ((((y0 + y1) + (y2 + y3)) + ((y4 + y5) + (y6 + y7))) + (y8 + y9))
+    return math.isfinite(acc)
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
 def spherical_fourbar_velocity_kernel(d, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz, omega, out0, out1, out2, out3, out4, out5, out6, out7, out8, out9, out10, out11, out12, out13, out14, out15, out16):
     """`spherical_fourbar_velocity` as one loop over the points, written into out0, out1, ..."""
     x4 = math.sin(d)
@@ -127,6 +210,94 @@ def spherical_fourbar_velocity_kernel(d, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz, ome
         out14[i] = -Py_i*x12 + Pz_i*x11
         out15[i] = Px_i*x12 - Pz_i*x9
         out16[i] = -Px_i*x11 + Py_i*x9
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def spherical_fourbar_velocity_fused_kernel(d, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz, omega, scales, out0, out1, out2, out3, out4, out5, out6, out7, out8, out9, out10, out11, out12, out13, out14, out15, out16):
+    """`spherical_fourbar_velocity_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x4 = math.sin(d)
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    scale6 = scales[6]
+    scale7 = scales[7]
+    scale8 = scales[8]
+    scale9 = scales[9]
+    scale10 = scales[10]
+    scale11 = scales[11]
+    scale12 = scales[12]
+    scale13 = scales[13]
+    scale14 = scales[14]
+    scale15 = scales[15]
+    scale16 = scales[16]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        Bx_i = Bx[i]
+        By_i = By[i]
+        Bz_i = Bz[i]
+        Cx_i = Cx[i]
+        Cy_i = Cy[i]
+        Cz_i = Cz[i]
+        Px_i = Px[i]
+        Py_i = Py[i]
+        Pz_i = Pz[i]
+        omega_i = omega[i]
+        x0 = Bx_i*Cy_i
+        x1 = -By_i*Cx_i + x0
+        x2 = x1*math.cos(d)
+        x3 = Bz_i*Cy_i
+        x5 = 1/(x2 + x4*(By_i*Cz_i - x3))
+        x6 = omega_i*x5
+        x7 = x1*x6
+        x8 = x4*x6
+        x9 = x0*x8
+        x10 = By_i*omega_i
+        x11 = Cy_i*x10*x4*x5
+        x12 = omega_i + x3*x8
+        x13 = x4*x7
+        x14 = x2*x6
+        y0 = (x7)*scale0
+        y1 = (Cy_i*x8)*scale1
+        y2 = (x9)*scale2
+        y3 = (x11)*scale3
+        y4 = (x12)*scale4
+        y5 = (x13)*scale5
+        y6 = (0)*scale6
+        y7 = (x14)*scale7
+        y8 = (-x10)*scale8
+        y9 = (Bx_i*omega_i)*scale9
+        y10 = (0)*scale10
+        y11 = (-Cy_i*x14)*scale11
+        y12 = (Cx_i*x14 - Cz_i*x13)*scale12
+        y13 = (Cy_i*x13)*scale13
+        y14 = (-Py_i*x12 + Pz_i*x11)*scale14
+        y15 = (Px_i*x12 - Pz_i*x9)*scale15
+        y16 = (-Px_i*x11 + Py_i*x9)*scale16
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        out6[i] = y6
+        out7[i] = y7
+        out8[i] = y8
+        out9[i] = y9
+        out10[i] = y10
+        out11[i] = y11
+        out12[i] = y12
+        out13[i] = y13
+        out14[i] = y14
+        out15[i] = y15
+        out16[i] = y16
+        acc += (((((y0 + y1) + (y2 + y3)) + ((y4 + y5) + (y6 + y7))) + (((y8 + y9) + (y10 + y11)) + ((y12 + y13) + (y14 + y15)))) + y16)
+    return math.isfinite(acc)
 
 
 @numba.njit(cache=True, nogil=True, error_model='numpy')
@@ -191,3 +362,105 @@ def spherical_fourbar_acceleration_kernel(d, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz,
         out13[i] = -Py_i*x18 + Pz_i*x17 - x23*x25 + x26*x27
         out14[i] = Px_i*x18 - Pz_i*x16 + x23*x28 - x24*x27
         out15[i] = -Px_i*x17 + Py_i*x16 + x24*x25 - x26*x28
+
+
+@numba.njit(cache=True, nogil=True, error_model='numpy')
+def spherical_fourbar_acceleration_fused_kernel(d, Bx, By, Bz, Cx, Cy, Cz, Px, Py, Pz, omega, alpha, dpsi, lam, scales, out0, out1, out2, out3, out4, out5, out6, out7, out8, out9, out10, out11, out12, out13, out14, out15):
+    """`spherical_fourbar_acceleration_kernel`, each output k times ``scales[k]``.
+
+    Returns True if the sum of every output at every point is finite (so each is);
+    False if one is NaN or infinite, or the sum overflows."""
+    x1 = math.cos(d)
+    x2 = math.sin(d)
+    scale0 = scales[0]
+    scale1 = scales[1]
+    scale2 = scales[2]
+    scale3 = scales[3]
+    scale4 = scales[4]
+    scale5 = scales[5]
+    scale6 = scales[6]
+    scale7 = scales[7]
+    scale8 = scales[8]
+    scale9 = scales[9]
+    scale10 = scales[10]
+    scale11 = scales[11]
+    scale12 = scales[12]
+    scale13 = scales[13]
+    scale14 = scales[14]
+    scale15 = scales[15]
+    acc = 0.0
+    for i in range(out0.shape[0]):
+        Bx_i = Bx[i]
+        By_i = By[i]
+        Bz_i = Bz[i]
+        Cx_i = Cx[i]
+        Cy_i = Cy[i]
+        Cz_i = Cz[i]
+        Px_i = Px[i]
+        Py_i = Py[i]
+        Pz_i = Pz[i]
+        omega_i = omega[i]
+        alpha_i = alpha[i]
+        dpsi_i = dpsi[i]
+        lam_i = lam[i]
+        x0 = Bx_i*Cy_i - By_i*Cx_i
+        x3 = 1/(x0*x1 + x2*(By_i*Cz_i - Bz_i*Cy_i))
+        x4 = Cx_i*x1
+        x5 = Cz_i*x2
+        x6 = x4 - x5
+        x7 = By_i*Cy_i
+        x8 = Bx_i*x6 + x1*x7
+        x9 = -Bx_i*Cx_i - x7
+        x10 = dpsi_i*(x1*x8 + x2*(-Bz_i*x6 + x2*x7)) + omega_i*(Bx_i*x5 + x1*x9)
+        x11 = alpha_i*x0 - dpsi_i*x10 + omega_i*(dpsi_i*x8 + omega_i*x9)
+        x12 = x11*x3
+        x13 = Cy_i*x2
+        x14 = x3*(alpha_i*x13 + dpsi_i*omega_i*x2*x6 - lam_i*x10)
+        x15 = lam_i*omega_i
+        x16 = Bx_i*x14 - By_i*x15
+        x17 = Bx_i*x15 + By_i*x14
+        x18 = Bz_i*x14 + alpha_i
+        x19 = x1*x12
+        x20 = omega_i**2
+        x21 = dpsi_i*(dpsi_i*x4 - dpsi_i*x5)
+        x22 = Cy_i*dpsi_i**2
+        x23 = Bz_i*lam_i + omega_i
+        x24 = Bx_i*lam_i
+        x25 = Px_i*x23 - Pz_i*x24
+        x26 = By_i*lam_i
+        x27 = -Px_i*x26 + Py_i*x24
+        x28 = -Py_i*x23 + Pz_i*x26
+        y0 = (x12)*scale0
+        y1 = (x16)*scale1
+        y2 = (x17)*scale2
+        y3 = (x18)*scale3
+        y4 = (x12*x2)*scale4
+        y5 = (0)*scale5
+        y6 = (x19)*scale6
+        y7 = (-Bx_i*x20 - By_i*alpha_i)*scale7
+        y8 = (Bx_i*alpha_i - By_i*x20)*scale8
+        y9 = (0)*scale9
+        y10 = (-Cy_i*x19 - x1*x21)*scale10
+        y11 = (Cx_i*x1*x11*x3 - x1**2*x22 - x12*x5 - x2**2*x22)*scale11
+        y12 = (x12*x13 + x2*x21)*scale12
+        y13 = (-Py_i*x18 + Pz_i*x17 - x23*x25 + x26*x27)*scale13
+        y14 = (Px_i*x18 - Pz_i*x16 + x23*x28 - x24*x27)*scale14
+        y15 = (-Px_i*x17 + Py_i*x16 + x24*x25 - x26*x28)*scale15
+        out0[i] = y0
+        out1[i] = y1
+        out2[i] = y2
+        out3[i] = y3
+        out4[i] = y4
+        out5[i] = y5
+        out6[i] = y6
+        out7[i] = y7
+        out8[i] = y8
+        out9[i] = y9
+        out10[i] = y10
+        out11[i] = y11
+        out12[i] = y12
+        out13[i] = y13
+        out14[i] = y14
+        out15[i] = y15
+        acc += ((((y0 + y1) + (y2 + y3)) + ((y4 + y5) + (y6 + y7))) + (((y8 + y9) + (y10 + y11)) + ((y12 + y13) + (y14 + y15))))
+    return math.isfinite(acc)

@@ -245,6 +245,12 @@ class FourBar:
         close_gap = self._gaps[0] if c_ > b_ else self._gaps[1]  # as in dead_points_near
         self._may_meet_dead_point = (self._gaps[2] != 0.0 and self._gaps[2] <= tol) or (
             close_gap != 0.0 and close_gap <= tol)
+        # positions alone may take the numba kernel that scales and masks in one pass
+        # (`_solve_fused`): no kite, no dead point to snap, points that scale back exactly
+        self._fused = not self._kite and not self._may_meet_dead_point and (
+            0 <= self._exponent <= _EXACT_EXPONENT)
+        flags = (self._m23, self._m4) if self.change_point else ()
+        self._fused_tail = (self._branch, *self._gaps, *flags)
 
     a = property(lambda self: self._a, doc="Crank length AB.")
     b = property(lambda self: self._b, doc="Coupler length BC.")
@@ -308,9 +314,17 @@ class FourBar:
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size
-        out = {name: np.empty(size, dtype=complex if name in _COMPLEX else float)
-               for name in _FIELDS[: _FIELD_COUNT[order]]}
+        if (order == 0 and self._fused and _backend.use_numba(size)):
+            return self._solve_fused(theta, shape, flat[0], strict)
+        names = _FIELDS[: _FIELD_COUNT[order]]
+        # the complex fields are the rows of one array: each block is scaled and checked by
+        # one call each, and the solve makes one allocation for them
+        complex_fields = [name for name in names if name in _COMPLEX]
+        points = np.empty((len(complex_fields), size), dtype=complex)
+        rows = iter(points)
+        out = {name: next(rows) if name in _COMPLEX else np.empty(size) for name in names}
         out["valid"] = np.empty(size, dtype=bool)
+        real_fields = [name for name in names if name not in _COMPLEX]
         # numba: fused loops over blocks of NUMBA_BLOCK points; NumPy: blocks that fit in
         # cache, every temporary in one reused work array (no allocation per block)
         numba = _backend.use_numba(size) and not self._kite
@@ -320,7 +334,6 @@ class FourBar:
         # unit, which scale back exactly: then every field is scaled in place, block by
         # block while the block is in cache, and checked finite there (Pose's promise)
         exact = 0 <= self._exponent <= _EXACT_EXPONENT
-        complex_fields = [name for name in out if name in _COMPLEX]
         finite, scale = True, 2.0**self._exponent
         # over: 1 / |BD|^2 where B all but meets D (theta ~ 1e-160 with a = d) cannot
         # assemble, and a point beyond the float range (links near 1e308) becomes inf
@@ -329,11 +342,11 @@ class FourBar:
                 block = slice(start, start + step)
                 views = {k: v[block] for k, v in out.items()}
                 self._solve_block([x[block] for x in flat], order, views, numba)
+                parts = points[:, block].view(float)     # real and imaginary parts of a block
                 if exact and self._exponent:
                     # a product by a normal power of two rounds once, as ldexp
-                    for name in complex_fields:
-                        np.multiply(views[name].view(float), scale, out=views[name].view(float))
-                finite = finite and all(_finite_sum(views[name]) for name in views if name != "valid")
+                    np.multiply(parts, scale, out=parts)
+                finite = finite and _finite_sum(parts) and all(_finite_sum(views[k]) for k in real_fields)
         valid = out["valid"]
         if strict and not np.all(valid):
             bad = float(flat[0][~valid][0])
@@ -346,6 +359,50 @@ class FourBar:
         fields = {name: value.reshape(shape)[()] for name, value in out.items()}
         fields["theta"] = np.broadcast_to(theta, shape)[()]
         return FourBarPose(unit, order, fields, finite)
+
+    def _solve_fused(self, theta, shape, flat, strict):
+        """Positions by the numba kernel that scales, checks and masks in its one pass.
+
+        For a linkage without kites and dead points in reach, whose points scale back
+        exactly (`_fused`): the same bits as `_solve_block` followed by the scaling.
+        """
+        size = flat.shape[0]
+        points = np.empty((3, size), dtype=complex)
+        B, C, P = points
+        valid = np.empty(size, dtype=bool)
+        step = _backend.NUMBA_BLOCK
+        S = _backend.workspace("fourbar_numba", 1, min(size, step))[0]
+        kernel, args, scales = self._fused_call
+        outs = (B.real, B.imag, C.real, C.imag, P.real, P.imag)
+        finite = True
+        for start in range(0, size, step):
+            stop = min(start + step, size)
+            s, v = S[: stop - start], valid[start:stop]
+            blocks = outs if size <= step else [x[start:stop] for x in outs]
+            if not kernel(*args, flat[start:stop], *self._fused_tail, scales, *blocks, s, v):
+                # a field is NaN or infinite somewhere: where the pose does not exist (S is
+                # NaN, so `valid` is False), which is as promised; anywhere else (a point
+                # beyond the float range) `Pose` checks every field
+                finite = finite and all(_finite_sum(x[v]) for x in blocks)
+        if strict and not valid.all():
+            bad = float(flat[~valid][0])
+            raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
+        if len(shape) != 1:
+            B, C, P, valid = (x.reshape(shape) for x in (B, C, P, valid))
+        fields = {"B": B[()], "C": C[()], "P": P[()], "valid": valid[()],
+                  "theta": np.broadcast_to(theta, shape)[()]}
+        return FourBarPose((B, C, self._unit[3], self._exponent), 0, fields, finite)
+
+    @property
+    def _fused_call(self):
+        """The fused kernel, its scalar arguments before theta, and the scales of its outputs."""
+        call = self.__dict__.get("_fused_cache")
+        if call is None:
+            name = "fourbar_position_signed" if self.change_point else "fourbar_position"
+            kernel = getattr(_backend.numba_kernels("fourbar_position"), f"{name}_fused_kernel")
+            scale = 2.0**self._exponent
+            call = self._fused_cache = (kernel, self._unit, (scale,) * 6 + (1.0,))
+        return call
 
     def _solve_block(self, inputs, order, out, numba=False):
         """Solve one block of flat inputs, writing into the views in `out`."""
