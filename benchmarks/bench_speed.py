@@ -329,13 +329,14 @@ def measure(sizes, methods, rounds, calls, log):
                 got = spawn(m, n, k)
                 samples[m] += got["times"]
                 firsts[m].append(got["first_call_s"])
+        load = os.getloadavg()[0]                  # after this N's rounds
         for m in todo:
             t = np.array(samples[m])
             subject, order, _, desc = METHODS[m]
             rows.append({"method": m, "subject": subject, "order": order, "n": n, "description": desc,
                          "median_s": float(np.median(t)), "min_s": float(t.min()), "samples": int(t.size),
                          "ns_per_point": float(np.median(t) / n * 1e9),
-                         "first_call_median_s": float(np.median(firsts[m]))})
+                         "first_call_median_s": float(np.median(firsts[m])), "load_1min": load})
             log(f"N={n:>9} {m:<22} {rows[-1]['ns_per_point']:10.1f} ns/point  (median of {t.size})")
     return rows
 
@@ -409,16 +410,21 @@ def main(argv=None):
     methods = [m for m in METHODS if available(m)]
     log = lambda s: print(s, flush=True)  # noqa: E731
     start = time.perf_counter()
+    load_start = os.getloadavg()
     if args.quick:
         rows = measure((10**2, 10**3, 10**4), methods, 1, 3, log)
         mem = []
     else:
         rows = measure(SIZES, methods, ROUNDS, CALLS, log)
         mem = memory(MEMORY_SIZES, methods, log)
+    log(f"load average {load_start} at the start, {os.getloadavg()} at the end")
     result = {
         "benchmark": "speed",
         "date": _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds"),
-        "machine": {"platform": platform.platform(), "processor": platform.processor(), "cpus": os.cpu_count()},
+        "machine": {"platform": platform.platform(), "processor": platform.processor(), "cpus": os.cpu_count(),
+                    # 1-, 5- and 15-minute load averages when the run started and ended (the
+                    # machine is shared: other processes compete for its cores)
+                    "load_average_start": list(load_start), "load_average_end": list(os.getloadavg())},
         "versions": versions(),
         "protocol": {"rounds": ROUNDS, "calls": CALLS, "rounds_1e7": ROUNDS_LARGE, "calls_1e7": CALLS_LARGE,
                      "fresh_process_per_measurement": True, "interleaved": True},

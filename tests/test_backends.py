@@ -85,6 +85,32 @@ def test_backends_agree_in_the_last_places_on_positions(backend):
     _assert_ulps(got, 4)
 
 
+@pytest.mark.parametrize("lengths, coupler", [
+    ((1.0, 4.0, 3.0, 3.5), (2.0, 1.0)),           # crank-rocker (exponent 3)
+    ((0.2, 0.9, 0.7, 0.8), (0.25, 0.1)),          # exponent 0: scale 1
+    ((2.0, 3.0, 2.5, 3.0), (1.0, -0.5)),          # double rocker: NaN where it cannot assemble
+    ((1.0, 2.0, 1.0, 2.0), (0.5, 0.5)),           # parallelogram: the signed kernel
+    ((3e250, 1.2e251, 9e250, 1.05e251), (6e250, 3e250)),  # points near 1e251, exponent 835
+])
+def test_fused_position_kernel_gives_the_same_bits(backend, lengths, coupler):
+    """Order 0 on numba runs the fused kernel (scaling, mask and finiteness check in its
+    loop); order 2 runs the plain kernel and scales afterwards: the same bits."""
+    pytest.importorskip("numba")
+    backend("numba")
+    theta = np.linspace(-7.0, 7.0, 40001).reshape(1, -1)    # several blocks, a 2-D shape
+    linkage = FourBar(*lengths, coupler=coupler)
+    fused, plain = linkage.solve(theta), linkage.solve(theta, order=2)
+    np.testing.assert_array_equal(fused.valid, plain.assembled)
+    assert fused.valid.shape == theta.shape
+    for name in ("B", "C", "P", "phi", "psi"):
+        a, b = getattr(fused, name), getattr(plain, name)
+        np.testing.assert_array_equal(a[fused.valid], b[fused.valid])
+    assert np.isnan(fused.C[~fused.valid]).all()
+    if not fused.valid.all():
+        with pytest.raises(mech.AssemblyError, match="theta"):
+            linkage.solve(theta, strict=True)
+
+
 def _run(code, env=None):
     import os
 
