@@ -9,7 +9,11 @@ For a `Function` that declares its per-point (``vector``) arguments, ``_codegen`
   temporary is dead, so a block of a few thousand points stays in cache and a solve makes
   no allocation per block. Subexpressions of the scalar arguments alone are computed once.
 - a numba kernel ``<name>_kernel(args..., out...)``: one fused loop over the points, the
-  same expressions written with ``math`` on scalars, in ``mech/_generated/<stem>_numba.py``.
+  same expressions written with ``math`` on scalars, in ``mech/_generated/<stem>_numba.py``;
+- beside it ``<name>_fused_kernel(args..., scales, out..., [valid])``, the solvers' variant of
+  that loop: each output times a power of two (the solver's scaling of lengths, undone in
+  the same pass), the mask ``valid`` where the function declares a ``mask`` output, and a
+  returned flag that every output is finite, so no second pass over the outputs is needed.
 
 Both come from one call of ``sympy.cse``, so the two backends evaluate the same
 expression tree and agree to a few units in the last place.
