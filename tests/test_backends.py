@@ -109,6 +109,12 @@ def test_fused_position_kernel_gives_the_same_bits(backend, lengths, coupler):
     if not fused.valid.all():
         with pytest.raises(mech.AssemblyError, match="theta"):
             linkage.solve(theta, strict=True)
+    # the fused path checks theta through its outputs: NaN and infinities still raise
+    for bad in (np.nan, np.inf, -np.inf):
+        angles = theta.copy()
+        angles[0, 30000] = bad
+        with pytest.raises(ValueError, match=r"Expected finite `theta`, got (nan|inf|-inf)"):
+            linkage.solve(angles)
 
 
 def _run(code, env=None):

@@ -7,7 +7,7 @@ import numpy as np
 from mech import _backend
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
-from mech._validate import bool_flag, branch_sign, motion_inputs, nonnegative_number, positive_length, real_tuple
+from mech._validate import bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_number, positive_length, real_tuple
 from mech._pose import Pose, _finite_sum
 from mech._scaling import DEAD_POINT_RTOL
 from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
@@ -311,11 +311,14 @@ class FourBar:
         ([True, True], (2,))
         """
         strict = bool_flag("strict", strict)
+        if (type(order) is int and order == 0 and self._fused and type(theta) is np.ndarray
+                and theta.dtype == np.float64 and _backend.use_numba(theta.size)):
+            # positions of an array of floats: the fused kernel's own finiteness check
+            # covers theta too (a NaN or infinite angle makes its outputs NaN)
+            return self._solve_fused(theta, strict)
         order, shape, inputs = motion_inputs("theta", theta, order, omega, alpha)
         flat = [x.reshape(-1) for x in inputs]
         size = flat[0].size
-        if (order == 0 and self._fused and _backend.use_numba(size)):
-            return self._solve_fused(theta, shape, flat[0], strict)
         names = _FIELDS[: _FIELD_COUNT[order]]
         # the complex fields are the rows of one array: each block is scaled and checked by
         # one call each, and the solve makes one allocation for them
@@ -360,12 +363,16 @@ class FourBar:
         fields["theta"] = np.broadcast_to(theta, shape)[()]
         return FourBarPose(unit, order, fields, finite)
 
-    def _solve_fused(self, theta, shape, flat, strict):
+    def _solve_fused(self, theta, strict):
         """Positions by the numba kernel that scales, checks and masks in its one pass.
 
         For a linkage without kites and dead points in reach, whose points scale back
-        exactly (`_fused`): the same bits as `_solve_block` followed by the scaling.
+        exactly (`_fused`), and `theta` a float64 array, not yet checked: the same bits as
+        `_solve_block` followed by the scaling. Where the kernel reports a field that is not
+        finite, `theta` is checked first (ValueError for NaN or an infinity, as `solve`
+        raises for every other input), then the fields of the valid poses.
         """
+        shape, flat = theta.shape, theta.reshape(-1)
         size = flat.shape[0]
         points = np.empty((3, size), dtype=complex)
         B, C, P = points
@@ -374,12 +381,15 @@ class FourBar:
         S = _backend.workspace("fourbar_numba", 1, min(size, step))[0]
         kernel, args, scales = self._fused_call
         outs = (B.real, B.imag, C.real, C.imag, P.real, P.imag)
-        finite = True
+        finite, checked = True, False
         for start in range(0, size, step):
             stop = min(start + step, size)
             s, v = S[: stop - start], valid[start:stop]
             blocks = outs if size <= step else [x[start:stop] for x in outs]
             if not kernel(*args, flat[start:stop], *self._fused_tail, scales, *blocks, s, v):
+                if not checked:
+                    finite_array("theta", theta)            # raises for NaN or an infinity
+                    checked = True
                 # a field is NaN or infinite somewhere: where the pose does not exist (S is
                 # NaN, so `valid` is False), which is as promised; anywhere else (a point
                 # beyond the float range) `Pose` checks every field
@@ -389,8 +399,9 @@ class FourBar:
             raise AssemblyError(f"Cannot assemble {self!r} at theta = {bad!r}")
         if len(shape) != 1:
             B, C, P, valid = (x.reshape(shape) for x in (B, C, P, valid))
-        fields = {"B": B[()], "C": C[()], "P": P[()], "valid": valid[()],
-                  "theta": np.broadcast_to(theta, shape)[()]}
+        view = theta.view()                         # read-only, as `motion_inputs` gives it
+        view.flags.writeable = False
+        fields = {"B": B[()], "C": C[()], "P": P[()], "valid": valid[()], "theta": view[()]}
         return FourBarPose((B, C, self._unit[3], self._exponent), 0, fields, finite)
 
     @property
