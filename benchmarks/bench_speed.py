@@ -24,7 +24,7 @@ each at order 0 (positions) and, for mech, the loop and pylinkage, order 2. Then
 cosines per pose, and the spherical four-bar against the generated numba kernel.
 Results go to ``benchmarks/results/speed.json``; the book's benchmark page plots them.
 
-    python benchmarks/bench_speed.py            # full run (about half an hour on a busy machine)
+    python benchmarks/bench_speed.py            # full run (10 to 25 minutes, with the load)
     python benchmarks/bench_speed.py --quick    # small sizes, nothing written
 """
 
