@@ -85,6 +85,8 @@ from mech.spherical.guidance import (
     sixbar_orientations,
     SphericalOptimalSixBar,
     optimal_guidance_watt2,
+    SphericalGuidanceStephenson3,
+    guidance_stephenson3,
     guidance_slider_crank,
     optimal_guidance,
     planar_orientations,
@@ -107,6 +109,7 @@ from mech.spherical.path import (
     path_verify,
 )
 from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
+from mech.spherical.linkage import SphericalStephenson3, stephenson3
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
@@ -141,6 +144,8 @@ __all__ = [
     "sixbar_orientations",
     "SphericalOptimalSixBar",
     "optimal_guidance_watt2",
+    "SphericalGuidanceStephenson3",
+    "guidance_stephenson3",
     "guidance_slider_crank",
     "optimal_guidance",
     "planar_orientations",
@@ -211,6 +216,8 @@ __all__ = [
     "stephenson2",
     "watt1",
     "watt2",
+    "stephenson3",
+    "SphericalStephenson3",
     "SphericalPathDesign",
     "path_fourbar",
     "path_stephenson1",
