@@ -1570,6 +1570,45 @@ CASES.update({
 })
 
 
+
+def _s3():
+    return sph.stephenson3(0.35, 0.9, 0.8, 1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6),
+                           coupler=(0.3, 0.4), mu=0.8)
+
+
+def _s3_task():
+    theta = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
+    return _s3().orientations(theta), theta
+
+
+RECORDS["spherical.SphericalGuidanceStephenson3"] = "result record built by the package"
+CASES.update({
+    "spherical.stephenson3": E(lambda: sph.stephenson3,
+                               {**_ABCD, "E": ("scalar", first), "arcs": ("scalar", first), "H": ("scalar", first),
+                                "coupler": ("scalar", first), "mu": "scalar", "branch": "branch", "frame": "matrix?"},
+                               a=0.35, b=0.9, c=0.8, d=1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6),
+                               coupler=(0.3, 0.4), mu=0.8, branch=1, frame=np.eye(3)),
+    "spherical.SphericalStephenson3": E(lambda: sph.SphericalStephenson3,
+                                        {"points": ("vec3", lambda v: {**_s3().assembly, "C": v}, "points['C']"),
+                                         "coupler": "vec3?"},
+                                        points=_s3().assembly, coupler=None),
+    "spherical.SphericalStephenson3.rotations": E(lambda: _s3().rotations, {"theta": "real"}, theta=[0.0, 0.5]),
+    "spherical.SphericalStephenson3.orientations": E(lambda: _s3().orientations, {"theta": "real"},
+                                                     theta=[0.0, 0.5]),
+    "spherical.SphericalStephenson3.solve": E(lambda: _s3().solve, {"theta": "real", "strict": "bool"},
+                                              theta=[0.0, 0.5], strict=False),
+    "spherical.SphericalStephenson3.closure": E(lambda: _s3().closure, {"pose": "instance"},
+                                                pose=_s3().solve([0.0, 0.5])),
+    "spherical.guidance_stephenson3": E(lambda: sph.guidance_stephenson3,
+                                        {"R": "matrix", "theta": "real", "crank_pivot": "real", "subset": "int?",
+                                         "rtol": "scalar"},
+                                        R=_s3_task()[0], theta=_s3_task()[1], crank_pivot=[0.0, 0.0, 1.0],
+                                        subset=None, rtol=1e-9),
+    "spherical.SphericalGuidanceStephenson3.guided_orientations": E(
+        lambda: sph.guidance_stephenson3(*_s3_task(), [0.0, 0.0, 1.0])[0].guided_orientations,
+        {"theta": "real"}, theta=[0.2, 0.5]),
+})
+
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():
     """Qualified names of every public function, class and public method of a public class."""

@@ -58,7 +58,9 @@ class SphericalGuidanceStephenson3:
     passes : bool
         ``in_order`` and ``pose_error <= rtol``.
     first_orientation : ndarray, shape (3, 3)
-        The task's first orientation R_1 (the linkage is assembled there).
+        The guided body's orientation in the assembly at the first input: R_1 for an exact
+        design; beyond five orientations the nearest orientation where the dyads' mean arcs
+        close (the body is turned from R_1 to assemble the linkage).
     """
 
     linkage: SphericalStephenson3
@@ -137,7 +139,29 @@ def _design(R, theta, A, ground, crank, rtol):
     (d1, r1), (d2, r2) = crank
     B, c = d1.centre_point, d1.circle_point
     E, g = d2.centre_point, d2.circle_point
-    pts = {"A": A, "D": D, "B": B, "E": E, "C": R[0] @ c, "G": R[0] @ g, "H": R[0] @ h}
+    # assemble at the first input with the dyads' arcs (their means over the orientations;
+    # for an exact design the arcs at every orientation): turn the body from R_1 by the
+    # small rotation W that closes the three arcs (Newton, the rows of eq. (8))
+    W = np.eye(3)
+    target = np.cos([d1.arc, d2.arc, ground[0].arc])
+    for _ in range(20):
+        C, G, H = W @ R[0] @ c, W @ R[0] @ g, W @ R[0] @ h
+        r = np.array([B @ C, E @ G, D @ H]) - target
+        if np.max(np.abs(r)) <= 1e-15:
+            break
+        J = np.array([np.cross(C, B), np.cross(G, E), np.cross(H, D)])
+        try:
+            w = np.linalg.solve(J, -r)
+        except np.linalg.LinAlgError:
+            return None
+        t = np.linalg.norm(w)
+        if not t < 0.5:
+            return None
+        k = w / t if t > 0 else w
+        Kx = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
+        W = (np.eye(3) + np.sin(t) * Kx + (1.0 - np.cos(t)) * (Kx @ Kx)) @ W
+    R1 = W @ R[0]
+    pts = {"A": A, "D": D, "B": B, "E": E, "C": R1 @ c, "G": R1 @ g, "H": R1 @ h}
     for p, q in (("A", "B"), ("A", "E"), ("B", "E"), ("A", "D"), ("C", "G"), ("C", "H"), ("G", "H")):
         if np.linalg.norm(np.cross(pts[p], pts[q])) < 1e-6:
             return None
@@ -150,18 +174,18 @@ def _design(R, theta, A, ground, crank, rtol):
     # the determinant of eq. (8) at the exact poses: skip those without marching
     signs = []
     for j in range(R.shape[0]):
-        Q = R[j] @ R[0].T
+        Q = R[j] @ R1.T
         signs.append(np.sign(np.linalg.det(lk._jacobian(Q, float(theta[j] - theta[0])))))
     if len(set(signs)) > 1:
         return None
     Q = lk.rotations(theta + offset)
-    got = Q @ R[0]
+    got = Q @ R1
     errors = _rotation_gap(got, R)
     in_order = bool(np.all(np.isfinite(errors)))
     errors = np.where(np.isfinite(errors), errors, np.pi)
     res = max(ground[1], r1, r2)
     return SphericalGuidanceStephenson3(lk, offset, ground[0], (d1, d2), res, errors, float(errors.max()),
-                                        in_order, in_order and float(errors.max()) <= rtol, R[0].copy())
+                                        in_order, in_order and float(errors.max()) <= rtol, R1)
 
 
 def guidance_stephenson3(R, theta, crank_pivot, *, subset=None, rtol=1e-9):

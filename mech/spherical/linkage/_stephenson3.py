@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
-from mech._validate import bool_flag, finite_array, real_tuple
+from mech._validate import _show, bool_flag, finite_array, real_tuple
 from mech.spherical.linkage._linkage import SphericalLinkagePose
 
 __all__ = ["SphericalStephenson3"]
@@ -155,8 +155,14 @@ class SphericalStephenson3:
 
     # ------------------------------------------------------------------ the triad
     def _crank(self, turn):
-        K = _rodrigues(self._p["A"], turn)
-        return K @ self._p["B"], K @ self._p["E"]
+        """B and E after the crank turns by `turn` about A (Rodrigues on the two vectors)."""
+        cached = self.__dict__.get("_last_turn")
+        if cached is not None and cached[0] == turn:
+            return cached[1]
+        A, c, s = self._p["A"], np.cos(turn), np.sin(turn)
+        out = tuple(p * c + _cx(A, p) * s + A * ((A @ p) * (1.0 - c)) for p in (self._p["B"], self._p["E"]))
+        self.__dict__["_last_turn"] = (turn, out)
+        return out
 
     def _residual(self, Q, turn):
         B, E = self._crank(turn)
@@ -342,7 +348,7 @@ class SphericalStephenson3:
         True
         """
         if not isinstance(pose, SphericalLinkagePose):
-            raise InputTypeError(f"Expected `pose` to be the result of `solve`, got {type(pose).__name__}")
+            raise InputTypeError(f"Expected `pose` to be the result of `solve`, got {_show(pose)}")
         P = pose.points
         v = np.asarray(pose.valid)
         worst = 0.0
