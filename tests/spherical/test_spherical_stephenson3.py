@@ -180,5 +180,5 @@ def test_bad_inputs():
         guidance_stephenson3(R, THETA, [0, 0, 1], subset=[0, 1, 2, 3, 3])
     with pytest.raises(ValueError, match="`points`"):
         SphericalStephenson3({"A": [0, 0, 1]})
-    with pytest.raises(ValueError, match="assemble"):
+    with pytest.raises(AssemblyError, match="assemble"):
         stephenson3(0.35, 0.2, 0.1, 1.1, E=(0.5, 0.7), arcs=(0.2, 0.1), H=(0.1, -0.6), coupler=(0.3, 0.4), mu=0.8)

@@ -31,6 +31,8 @@ _GUARD = 64
 _MAX_NFEV = 4000
 #: the optimiser stops when a step changes the cost or the variables by less than this (relative)
 _TOL = 1e-8
+#: relative step of the forward differences (about the square root of the machine epsilon)
+_FD_STEP = 1.5e-8
 
 
 @dataclass(frozen=True)
@@ -115,9 +117,9 @@ def _joint(P1, P2, c1, c2, sign):
 
 
 def _turn(p, axis, angle):
-    """Rodrigues: p turned by `angle` (shape (m,)) about the unit `axis`, counter-clockwise."""
-    c, s = np.cos(angle)[:, None], np.sin(angle)[:, None]
-    return p * c + _cross(axis, p) * s + axis * (axis @ p) * (1.0 - c)
+    """Rodrigues: p turned by `angle` about the unit `axis`, counter-clockwise (broadcast)."""
+    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
+    return p * c + _cross(axis, p) * s + axis * np.sum(axis * p, axis=-1, keepdims=True) * (1.0 - c)
 
 
 def _heights(P1, P2, J):
@@ -129,15 +131,21 @@ def _heights(P1, P2, J):
 
 def _guided_frames(pts, branches, turn, heights=False):
     """Frames of EG after the crank turns by `turn` from the assembly `pts` (closed form);
-    with ``heights=True`` also the dyads' `_heights` at every turn."""
+    with ``heights=True`` also the dyads' `_heights` at every turn. The points may be
+    batches of shape (k, 1, 3) (k designs at once, for the Jacobian): then the frames have
+    shape (k, m, 3, 3)."""
     A, D, F, B0, C0, E0, G0 = (pts[k] for k in _NAMES)
+
+    def dot(p, q):
+        return np.sum(p * q, axis=-1)
+
     B = _turn(B0, A, turn)
     Ds = np.broadcast_to(D, B.shape)
-    C = _joint(B, Ds, np.dot(B0, C0), np.dot(D, C0), branches[0])
+    C = _joint(B, Ds, dot(B0, C0), dot(D, C0), branches[0])
     u, w = _cross(D, C0), _cross(D, C)                       # the rocker's turn about D
-    E = _turn(E0, D, np.arctan2(_cross(u, w) @ D, w @ u))
+    E = _turn(E0, D, np.arctan2(dot(_cross(u, w), D), dot(w, u)))
     Fs = np.broadcast_to(F, E.shape)
-    G = _joint(E, Fs, np.dot(E0, G0), np.dot(F, G0), branches[1])
+    G = _joint(E, Fs, dot(E0, G0), dot(F, G0), branches[1])
     with np.errstate(invalid="ignore"):
         t = G - np.sum(E * G, axis=-1, keepdims=True) * E
         t = t / np.linalg.norm(t, axis=-1, keepdims=True)
@@ -242,19 +250,34 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
         lk, built = _build(pts["A"], pts["D"], pts["F"], pts["B"], pts["C"], pts["E"], pts["G"], branches)
         return lk, body, built - float(theta[0]) + shift
 
-    def residual(x):
+    turns = np.concatenate((theta - theta[0] + shift0, guard))
+
+    def residuals(X):
+        """The residuals of the designs X (shape (k, 16)) at once, shape (k, 9 n + 2 _GUARD)."""
+        k = X.shape[0]
+        xa = np.concatenate((X[:, :1], np.zeros((k, 1)), X[:, 1:13]), axis=1)
+        pts = {key: _point(P0[key], T[key], xa[:, 2 * i:2 * i + 2])[:, None, :] for i, key in enumerate(_NAMES)}
+        bodies = np.stack([body0 @ _rotvec(x[13:16]) for x in X])
         # the closed-form poses, eq. (5), for speed; the result is checked by SphericalLinkage
-        pts, body, shift = unpack(x)
-        frames, h = _guided_frames(pts, branches, np.concatenate((theta - theta[0] + shift, guard)), heights=True)
-        gap = frames[:n] @ body - R
+        frames, h = _guided_frames(pts, branches, turns, heights=True)
+        gap = frames[:, :n] @ bodies[:, None] - R[None]
         # the constraint (eq. (6a)): every dyad stays clear of its dead point between the first
         # and the last input, so the optimum keeps one branch in order
-        keep = np.maximum(0.0, _HEIGHT - np.nan_to_num(h[:, n:], nan=-1.0)).ravel()
-        return np.concatenate((np.nan_to_num(gap, nan=2.0).ravel(), keep))
+        keep = np.maximum(0.0, _HEIGHT - np.nan_to_num(h[:, :, n:], nan=-1.0)).transpose(1, 0, 2)
+        return np.concatenate((np.nan_to_num(gap, nan=2.0).reshape(k, -1), keep.reshape(k, -1)), axis=1)
 
-    # Levenberg-Marquardt with a forward-difference Jacobian on unit-scaled variables (all
-    # are angles of the order of the design's own)
-    sol = least_squares(residual, np.zeros(16), method="lm", xtol=_TOL, ftol=_TOL, gtol=_TOL,
+    def residual(x):
+        return residuals(x[None])[0]
+
+    def jacobian(x):
+        # forward differences, all 16 columns in one batched evaluation
+        step = _FD_STEP * np.maximum(1.0, np.abs(x))
+        F = residuals(np.vstack((x, x + np.diag(step))))
+        return (F[1:] - F[0]).T / step
+
+    # Levenberg-Marquardt on unit-scaled variables (all are angles of the order of the
+    # design's own)
+    sol = least_squares(residual, np.zeros(16), jac=jacobian, method="lm", xtol=_TOL, ftol=_TOL, gtol=_TOL,
                         max_nfev=_MAX_NFEV)
     lk, body, offset = model(sol.x)
     pts, _, _ = unpack(sol.x)

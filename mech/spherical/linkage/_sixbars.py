@@ -173,6 +173,7 @@ def _dyad_joint(P1, P2, c1, c2, sign):
 
 
 def stephenson3(a, b, c, d, *, E, arcs, H, coupler, mu, branch=1, frame=None):
+    from mech._errors import AssemblyError
     from mech._generated import spherical_linkage as _g
     from mech._validate import real_number
     from mech.spherical.linkage._stephenson3 import SphericalStephenson3
@@ -218,14 +219,18 @@ def stephenson3(a, b, c, d, *, E, arcs, H, coupler, mu, branch=1, frame=None):
                 else:
                     hi = mid
             found.append(0.5 * (lo + hi))
+    given = (f"`a`={a!r}, `b`={b!r}, `c`={c!r}, `d`={d!r}, `E`={E!r}, `arcs`={arcs!r}, `H`={H!r}, "
+             f"`branch`={branch}")
     if not found:
-        raise ValueError(f"Expected a Stephenson-3 that assembles at theta = 0 on branch {branch}, got none for "
-                         f"a={a!r}, b={b!r}, c={c!r}, d={d!r}, E={E!r}, arcs={arcs!r}, H={H!r}")
+        raise AssemblyError(f"Cannot assemble the Stephenson-3 at theta = 0 with {given}")
     gap = [abs(np.angle(np.exp(1j * (x - mu)))) for x in found]
     m0 = found[int(np.argmin(gap))]
     C, G, Hp = (v[0] for v in pose(m0))
     P = at(C[None], G[None], coupler[0], coupler[1])[0]
-    return SphericalStephenson3({"A": A, "D": D, "B": B, "E": Ep, "C": C, "G": G, "H": Hp}, coupler=P)
+    try:
+        return SphericalStephenson3({"A": A, "D": D, "B": B, "E": Ep, "C": C, "G": G, "H": Hp}, coupler=P)
+    except ValueError as exc:
+        raise AssemblyError(f"Cannot assemble the Stephenson-3 at theta = 0 with {given}: {exc}") from None
 
 
 stephenson3.__doc__ = """The Stephenson-3 spherical six-bar (monograph chapter 4): a binary link of
@@ -265,7 +270,9 @@ stephenson3.__doc__ = """The Stephenson-3 spherical six-bar (monograph chapter 4
     Raises
     ------
     ValueError
-        If an arc is outside (0, pi) or the linkage cannot assemble at theta = 0 on `branch`.
+        If an arc is outside (0, pi).
+    AssemblyError
+        If the linkage cannot assemble at theta = 0 on `branch` (a `ValueError`).
 
     Examples
     --------
