@@ -107,6 +107,19 @@ def test_the_branch_ends_at_a_dead_point_of_the_triad():
         lk.solve(th, strict=True)
 
 
+def test_a_revolving_crank_repeats_after_one_turn():
+    """A branch without dead points closes after one crank turn: far inputs are reduced by the
+    period and land where the march over one turn does, links intact."""
+    lk = stephenson3(0.2, 1.26, 0.62, 1.26, E=(0.16, 2.54), arcs=(1.06, 0.73), H=(0.53, -2.83), coupler=(0.3, 0.4),
+                     mu=1.5)
+    turn = lk.solve(np.linspace(0.0, 2 * np.pi, 200))
+    assert turn.valid.all() and lk.closure(turn) < 1e-12
+    assert np.abs(turn.points["P"][-1] - turn.points["P"][0]).max() < 1e-9
+    far = lk.solve([0.3, 0.3 + 2 * np.pi, 0.3 - 6 * np.pi, 0.3 + 40 * np.pi])
+    assert far.valid.all() and lk.closure(far) < 1e-12
+    assert np.abs(far.points["H"] - far.points["H"][0]).max() < 1e-9
+
+
 def test_designs_reach_five_orientations_by_analysis_and_recover_the_task():
     """Monograph chapter 4, the Stephenson-3 by the constant-length condition, five orientations:
     square system, exact designs; the six-bar that made the task is among them."""

@@ -37,6 +37,8 @@ _NAMES = ("A", "D", "B", "E", "C", "G", "H")
 _STEP = 0.05
 #: the closure is solved to this (cosines of the arcs)
 _CLOSE = 1e-15
+#: crank turns searched for the period of a branch that does not stop at a dead point
+_TURNS = 4
 
 
 def _unit(name, value):
@@ -97,7 +99,10 @@ class SphericalStephenson3:
     three arc conditions (7) (a 3 x 3 solve per step, to 1e-15 in the cosines). The branch
     is the assembly's: the determinant of (8) keeps its sign along it; where it would
     change sign the triad is at a dead point (two assemblies meet, the input cannot pass),
-    and every input beyond it is NaN (``valid`` False), never the other assembly.
+    and every input beyond it is NaN (``valid`` False), never the other assembly. A branch
+    with no dead point is followed until it is back at the assembly (its period, a whole
+    number of crank turns up to four) and inputs further away are reduced by the period;
+    one that does not return within four turns is NaN beyond them.
 
     Examples
     --------
@@ -223,6 +228,21 @@ class SphericalStephenson3:
             out.append(None if Q is None else Q.copy())
         return out
 
+    def _period(self):
+        """The turn of the crank after which the branch is back at the assembly (2 pi k for
+        the first k <= _TURNS that closes), or None (a dead point first, or no return)."""
+        if "_period_found" not in self.__dict__:
+            found = None
+            marks = 2.0 * np.pi * np.arange(1, _TURNS + 1)
+            for k, Q in enumerate(self._march(marks)):
+                if Q is None:
+                    break
+                if np.abs(Q - np.eye(3)).max() < 1e-9:
+                    found = float(marks[k])
+                    break
+            self.__dict__["_period_found"] = found
+        return self.__dict__["_period_found"]
+
     def rotations(self, theta):
         """Rotation Q of the guided link CGH from the given pose at input angles `theta`.
 
@@ -247,16 +267,30 @@ class SphericalStephenson3:
         True
         """
         theta = finite_array("theta", theta)
+        return self._rotations(self._turns(theta)).reshape(theta.shape + (3, 3))
+
+    def _turns(self, theta):
+        """The crank's turns from the assembly, reduced by the period where one is needed."""
         flat = theta.reshape(-1) - self.theta0
+        if np.any(np.abs(flat) > 2.0 * np.pi):
+            period = self._period()
+            if period is not None:
+                flat = np.mod(flat, period)
+            else:
+                # not back at the assembly within _TURNS turns: no input that far is solved
+                flat = np.where(np.abs(flat) > 2.0 * np.pi * _TURNS, np.nan, flat)
+        return flat
+
+    def _rotations(self, flat):
         Q = np.full((flat.size, 3, 3), np.nan)
         with np.errstate(all="ignore"):
-            for side in (flat >= 0, flat < 0):
+            for side in (flat >= 0, flat < 0):          # NaN (beyond _TURNS turns) in neither
                 idx = np.flatnonzero(side)
                 order = idx[np.argsort(np.abs(flat[idx]))]
                 for i, q in zip(order, self._march(flat[order])):
                     if q is not None:
                         Q[i] = q
-        return Q.reshape(theta.shape + (3, 3))
+        return Q
 
     def orientations(self, theta):
         """Orientation of the guided link CGH at the input angles `theta`.
@@ -316,18 +350,17 @@ class SphericalStephenson3:
         """
         strict = bool_flag("strict", strict)
         theta = finite_array("theta", theta)
-        Q = self.rotations(theta)
-        turn = theta - self.theta0
+        turn = self._turns(theta)
+        Q = self._rotations(turn).reshape(theta.shape + (3, 3))
         ok = np.isfinite(Q).all(axis=(-2, -1))
         if strict and not ok.all():
             bad = float(theta.reshape(-1)[np.argmin(ok.reshape(-1))])
             raise AssemblyError(f"Cannot reach theta = {bad!r} from the assembly at theta0 = {self.theta0!r} "
                                 f"on its branch of {self!r}")
         p = self._p
-        K = np.stack([_rodrigues(p["A"], t) for t in turn.reshape(-1)]).reshape(theta.shape + (3, 3))
-        pts = {"A": np.broadcast_to(p["A"], theta.shape + (3,)).copy(),
-               "D": np.broadcast_to(p["D"], theta.shape + (3,)).copy()}
+        K = np.stack([_rodrigues(p["A"], t) for t in np.nan_to_num(turn)]).reshape(theta.shape + (3, 3))
         nan = np.where(ok[..., None], 0.0, np.nan)
+        pts = {k: np.broadcast_to(p[k], theta.shape + (3,)) + nan for k in ("A", "D")}
         for k in ("B", "E"):
             pts[k] = np.einsum("...ij,j->...i", K, p[k]) + nan
         for k in ("C", "G", "H", "P"):
