@@ -59,8 +59,8 @@ class SphericalOptimalSixBar:
     passes : bool
         ``in_order`` and ``pose_error <= rtol``.
     nfev : int
-        Residual evaluations of the optimiser (those of its finite-difference Jacobians
-        included).
+        Residual evaluations of the optimiser (not counting its forward-difference
+        Jacobians, each one batched evaluation of the 17 designs it needs).
     converged : bool
         The optimiser stopped on its tolerance (a stationary point), not on its cap of
         evaluations.
