@@ -16,7 +16,7 @@ import numpy as np
 from mech._validate import InputTypeError, _show, finite_array, integer, nonnegative_number
 from mech.spherical._rigid_body import angle_at, rotation_matrix
 from mech.spherical.guidance._burmester import burmester, circle_point_curve
-from mech.spherical.guidance._dyads import arc_between, dyad_for_circle_point
+from mech.spherical.guidance._dyads import SphericalDyad, arc_between, dyad_for_circle_point
 from mech.spherical.guidance._fourbar import _rotation_gap
 from mech.spherical.guidance._orientations import orientation_set
 from mech.spherical.guidance._sixbar import _frame
@@ -108,16 +108,25 @@ def _carry(p1, q1, pj, qj):
     return _frame(pj, qj) @ _frame(p1, q1).T
 
 
-def _stage_dyads(M, choice, n):
-    """Guidance dyads of the orientations M (M[0] = I): Burmester (5), the circle-point cubic
-    at the direction `choice` (4), or the circle point `choice` (2, 3)."""
+def _stage_dyads(M, choice, along, n):
+    """Guidance dyads of the orientations M (M[0] = I): the Burmester dyads (five); the
+    point of the circle-point cubic nearest the circle point `choice` among 720 tracing
+    great circles (four); the dyad of the circle point `choice` (three; for two, its centre
+    at the angle `along` on the bisecting great circle)."""
     try:
         if n == 5:
             return list(burmester(M).dyads)
         if n == 4:
-            curve = circle_point_curve(M, phi=[choice])
-            return [curve.dyad(0, k) for k in (0, 1) if curve.valid[0, k]]
-        return [dyad_for_circle_point(M, choice)]
+            curve = circle_point_curve(M, samples=720)
+            cos = np.einsum("...i,i->...", np.nan_to_num(curve.moving_pivot), choice)
+            gap = np.where(curve.valid, 1.0 - np.abs(cos), np.inf)
+            if not np.isfinite(gap.min()):
+                return []
+            i, k = np.unravel_index(np.argmin(gap), gap.shape)
+            d = curve.dyad(i, k)
+            # an axis and its antipode are one joint: keep the end on the side of `choice`
+            return [d if cos[i, k] > 0 else SphericalDyad(-d.circle_point, -d.moving_pivot, -d.centre_point, d.arc)]
+        return [dyad_for_circle_point(M, choice, along=along)]
     except ValueError:
         return []
 
@@ -187,39 +196,40 @@ def _assemble(kind, P, motion, R1, theta, rtol, sweep):
                                 g_pose, gamma_min, bool(in_order and not branch_defect and pose_error <= rtol))
 
 
-def _candidates(kind, Rb, K, A, choices):
+def _candidates(kind, Rb, K, A, choices, along):
     """Every joint set of the three stages (eqs. (7)-(12)), with each link's rotations."""
     n = Rb.shape[0]
     I = np.broadcast_to(np.eye(3), Rb.shape)
     T = np.swapaxes(K, -1, -2) @ Rb                           # guided link seen from the crank
     out = []
     if kind == "stephenson1":
-        for s1 in _stage_dyads(Rb, choices[0], n):            # (7): E on EG, D on the ground
+        for s1 in _stage_dyads(Rb, choices[0], along[0], n):        # (7): E on EG, D on the ground
             E, D = s1.circle_point, s1.centre_point
             Q = _turn_to(D, E, Rb @ E)                        # the rocker DCE
-            for s2 in _stage_dyads(np.swapaxes(Q, -1, -2) @ K, choices[1], n):   # (8): B on crank, C on rocker
-                for s3 in _stage_dyads(T, choices[2], n):     # G on EG, F on the crank
+            # (8): B on the crank, C on the rocker
+            for s2 in _stage_dyads(np.swapaxes(Q, -1, -2) @ K, choices[1], along[1], n):
+                for s3 in _stage_dyads(T, choices[2], along[2], n):  # (9): G on EG, F on the crank
                     P = dict(A=A, B=s2.circle_point, C=s2.centre_point, D=D, E=E, F=s3.centre_point,
                              G=s3.circle_point)
                     out.append((P, dict(B=K, C=Q, E=Rb, F=K, G=Rb), (s1, s2, s3)))
         return out
-    for s1 in _stage_dyads(T, choices[0], n):                 # (10): E on EG, B on the crank
+    for s1 in _stage_dyads(T, choices[0], along[0], n):             # (10): E on EG, B on the crank
         E, B = s1.circle_point, s1.centre_point
         U = _carry(B, E, K @ B, Rb @ E)                       # the coupler BCE
-        for s2 in _stage_dyads(U, choices[1], n):             # (11): C on the coupler, D on the ground
+        for s2 in _stage_dyads(U, choices[1], along[1], n):         # (11): C on the coupler, D on the ground
             C, D = s2.circle_point, s2.centre_point
             if kind == "stephenson2":
                 Q, third = I, Rb                              # (12): G on EG, F on the ground
             else:
                 Q = _turn_to(D, C, U @ C)                     # the rocker DCF
                 third = np.swapaxes(Q, -1, -2) @ Rb           # (12'): G on EG, F on the rocker
-            for s3 in _stage_dyads(third, choices[2], n):
+            for s3 in _stage_dyads(third, choices[2], along[2], n):
                 P = dict(A=A, B=B, C=C, D=D, E=E, F=s3.centre_point, G=s3.circle_point)
                 out.append((P, dict(B=K, C=U, E=Rb, F=Q, G=Rb), (s1, s2, s3)))
     return out
 
 
-def _design(kind, R, theta, crank_pivot, circle_points, curve_phi, rtol, sweep):
+def _design(kind, R, theta, crank_pivot, circle_points, along, rtol, sweep):
     R = orientation_set("R", R, (2, 3, 4, 5))
     n = R.shape[0]
     theta = finite_array("theta", theta)
@@ -233,25 +243,22 @@ def _design(kind, R, theta, crank_pivot, circle_points, curve_phi, rtol, sweep):
     A = A / np.linalg.norm(A)
     rtol = nonnegative_number("rtol", rtol)
     sweep = integer("sweep", sweep, minimum=2)
-    if n <= 3:
-        if circle_points is None:
-            raise ValueError(f"Expected `circle_points` (three unit vectors) for {n} orientations, got None")
+    along = finite_array("along", along)
+    if along.shape != (3,):
+        raise ValueError(f"Expected `along` of three angles (one per stage), got {_show(along)}")
+    choices = [None] * 3
+    if circle_points is not None:
         z = finite_array("circle_points", circle_points)
         if z.shape != (3, 3) or not np.all(np.linalg.norm(z, axis=-1) > 0):
             raise ValueError(f"Expected `circle_points` of shape (3, 3) with non-zero rows, got {_show(circle_points)}")
         choices = list(z / np.linalg.norm(z, axis=-1, keepdims=True))
-    elif n == 4:
-        phi = finite_array("curve_phi", (0.5, 0.5, 0.5) if curve_phi is None else curve_phi)
-        if phi.shape != (3,):
-            raise ValueError(f"Expected `curve_phi` of three angles, got {_show(curve_phi)}")
-        choices = list(phi)
-    else:
-        choices = [None] * 3
+    elif n <= 4:
+        raise ValueError(f"Expected `circle_points` (three unit vectors) for {n} orientations, got None")
     # the body frame is the ground frame at the first orientation: every joint is given there
     Rb = R @ R[0].T
     K = rotation_matrix(A, theta - theta[0])
     found = []
-    for P, motion, stages in _candidates(kind, Rb, K, A, choices):
+    for P, motion, stages in _candidates(kind, Rb, K, A, choices, along):
         made = _assemble(kind, P, motion, R[0], theta, rtol, sweep)
         if made is not None:
             found.append(replace(made, stages=stages))
@@ -269,11 +276,14 @@ _DOC = """
     crank_pivot : array_like, shape (3,)
         The fixed axis A of the input crank (a free choice of the design).
     circle_points : array_like, shape (3, 3), optional
-        For n <= 3 (required there): the circle points of the three stages, the joints
-        {joints} at the first orientation (ground frame).
-    curve_phi : array_like, shape (3,), optional
-        For n = 4: the direction (radians) of the great circle through the pole at which
-        each stage's circle-point cubic is cut (`circle_point_curve`); default 0.5 each.
+        Required for n <= 4 (ignored for five): the circle points of the three stages,
+        the joints {joints} at the first orientation (ground frame). For n = 4 each is
+        replaced by the nearest point of its stage's circle-point cubic
+        (`circle_point_curve`, 720 tracing great circles).
+    along : array_like, shape (3,), optional
+        For n = 2: where each stage's centre point lies on the great circle bisecting the
+        two positions of its circle point, as in `dyad_for_circle_point`, radians
+        (0 is the mid-point, a half turn of the link; pi/2 the pole, an arc of pi/2).
     rtol : float, optional
         Largest accepted orientation error, radians.
     sweep : int, optional
@@ -292,16 +302,16 @@ _DOC = """
 """
 
 
-def guidance_stephenson1(R, theta, crank_pivot, *, circle_points=None, curve_phi=None, rtol=1e-9, sweep=721):
-    return _design("stephenson1", R, theta, crank_pivot, circle_points, curve_phi, rtol, sweep)
+def guidance_stephenson1(R, theta, crank_pivot, *, circle_points=None, along=(1.0, 1.0, 1.0), rtol=1e-9, sweep=721):
+    return _design("stephenson1", R, theta, crank_pivot, circle_points, along, rtol, sweep)
 
 
-def guidance_stephenson2(R, theta, crank_pivot, *, circle_points=None, curve_phi=None, rtol=1e-9, sweep=721):
-    return _design("stephenson2", R, theta, crank_pivot, circle_points, curve_phi, rtol, sweep)
+def guidance_stephenson2(R, theta, crank_pivot, *, circle_points=None, along=(1.0, 1.0, 1.0), rtol=1e-9, sweep=721):
+    return _design("stephenson2", R, theta, crank_pivot, circle_points, along, rtol, sweep)
 
 
-def guidance_watt1(R, theta, crank_pivot, *, circle_points=None, curve_phi=None, rtol=1e-9, sweep=721):
-    return _design("watt1", R, theta, crank_pivot, circle_points, curve_phi, rtol, sweep)
+def guidance_watt1(R, theta, crank_pivot, *, circle_points=None, along=(1.0, 1.0, 1.0), rtol=1e-9, sweep=721):
+    return _design("watt1", R, theta, crank_pivot, circle_points, along, rtol, sweep)
 
 
 guidance_stephenson1.__doc__ = """Stephenson-1 six-bars guiding a body through orientations at prescribed input angles.
