@@ -1570,6 +1570,25 @@ CASES.update({
 })
 
 
+def _sx_watt1():
+    lk = sph.watt1(0.3, 0.9, 0.7, 1.0, E=(0.5, 0.6), F=(0.4, 0.9), arcs=(0.7, 0.8), coupler=(0.3, 0.4))
+    theta = np.array([0.0, 0.3, 0.6, 0.9, 1.2])
+    return sph.sixbar_orientations(lk, theta), theta
+
+
+_SX_EXACT = {"R": "matrix", "theta": "real", "crank_pivot": "real", "circle_points": "real?", "along": "real",
+             "rtol": "scalar", "sweep": "count"}
+CASES.update({
+    f"spherical.{name}": E((lambda name=name: getattr(sph, name)), _SX_EXACT, R=_sx_watt1()[0], theta=_sx_watt1()[1],
+                           crank_pivot=[0.0, 0.0, 1.0], circle_points=None, along=(1.0, 1.0, 1.0), rtol=1e-9, sweep=41)
+    for name in ("guidance_stephenson1", "guidance_stephenson2", "guidance_watt1")
+})
+RECORDS["spherical.SphericalExactSixBar"] = "result record built by the package"
+CASES["spherical.SphericalExactSixBar.guided_orientations"] = E(
+    lambda: sph.guidance_watt1(*_sx_watt1(), [0.0, 0.0, 1.0], sweep=41)[0].guided_orientations,
+    {"theta": "real"}, theta=[0.2, 0.5])
+
+
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():
     """Qualified names of every public function, class and public method of a public class."""
