@@ -1,6 +1,7 @@
 """Exact design of Stephenson-1, Stephenson-2 and Watt-1 guidance six-bars for two to five
 orientations with prescribed input angles, by kinematic inversion (the spherical monograph,
-§4.1.2 and the matching subsections of §4.2 and §4.3).
+chapter 4: §4.1.2 for the Stephenson-1; the seed's table of contents stops there, so the
+sections of the other two are not known).
 
 Each type is designed as three guidance dyads in turn. The rotations of one link seen from
 another link whose motion is already known are a set of orientations; a guidance dyad of
@@ -315,6 +316,8 @@ def guidance_watt1(R, theta, crank_pivot, *, circle_points=None, along=(1.0, 1.0
 
 
 guidance_stephenson1.__doc__ = """Stephenson-1 six-bars guiding a body through orientations at prescribed input angles.
+
+    The exact design of the monograph's §4.1.2, derived anew.
 
     The Stephenson-1 chain with its ternary links the crank (A, B, F) and the rocker
     (D, C, E); the guided link EG is the one of the chain E-G-F next to the rocker (the
