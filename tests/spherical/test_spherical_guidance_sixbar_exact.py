@@ -277,3 +277,30 @@ def test_random_six_bars_are_designed_again(kind):
         # leaves about 1e-6 in a joint (seen here) while the design stays exact for its own roots
         assert any(all(_same_axis(x.points[k], p[k], 1e-5) for k in "BCDEFG") for x in passing)
         assert max(x.pose_error for x in passing) < 1e-9
+
+
+def test_book_example_three_types_for_one_task():
+    """The worked example of book/spherical/guidance-sixbar.md (monograph §4.1.2 and chapter
+    4): five orientations at five inputs met by all three types; the best by transmission
+    angle is a Stephenson-2, whose loops close at 50 digits."""
+    from itertools import combinations
+
+    from mech.spherical import rotation_matrix
+
+    axes = np.array([[0.3, 0.1, 1.0], [0.25, 0.15, 1.0], [0.2, 0.2, 1.0], [0.1, 0.25, 1.0], [0.0, 0.3, 1.0]])
+    R = rotation_matrix(axes, np.radians([0.0, 12.0, 25.0, 37.0, 50.0]))
+    theta = np.radians([0.0, 30.0, 60.0, 90.0, 120.0])
+
+    def apart(d):
+        s = [np.linalg.norm(np.cross(d.points[p], d.points[q])) for p, q in combinations("ABCDEFG", 2)]
+        return np.degrees(np.arcsin(min(s)))
+
+    best = {}
+    for kind, design in DESIGN.items():
+        ok = [d for d in design(R, theta, [0.6, 0.0, 0.8], sweep=361) if d.passes and apart(d) >= 5.0]
+        assert ok, kind
+        best[kind] = max(ok, key=lambda d: d.gamma_min)
+        assert np.abs(best[kind].guided_orientations(theta) - R).max() < 1e-9
+    assert max(best, key=lambda k: best[k].gamma_min) == "stephenson2"
+    assert np.degrees(best["stephenson2"].gamma_min) == pytest.approx(38.4, abs=0.1)
+    assert _loop_gap("stephenson2", best["stephenson2"], R, theta) < 1e-12
