@@ -100,7 +100,7 @@ class SphericalExactSixBar:
 
 
 def _turn_to(centre, p1, pj):
-    """Rotations about `centre` carrying p1 to each pj (equal arcs to `centre`), eq. (9)."""
+    """Rotations about `centre` carrying p1 to each pj (equal arcs to `centre`), eqs. (8) and (11)."""
     return _frame(np.broadcast_to(centre, pj.shape), pj) @ _frame(centre, p1).T
 
 
@@ -204,27 +204,30 @@ def _candidates(kind, Rb, K, A, choices, along):
     T = np.swapaxes(K, -1, -2) @ Rb                           # guided link seen from the crank
     out = []
     if kind == "stephenson1":
-        for s1 in _stage_dyads(Rb, choices[0], along[0], n):        # (7): E on EG, D on the ground
+        thirds = _stage_dyads(T, choices[2], along[2], n)      # (9): G on EG, F on the crank
+        for s1 in _stage_dyads(Rb, choices[0], along[0], n):   # (7), the ground as reference: E, D
             E, D = s1.circle_point, s1.centre_point
-            Q = _turn_to(D, E, Rb @ E)                        # the rocker DCE
-            # (8): B on the crank, C on the rocker
+            Q = _turn_to(D, E, Rb @ E)                        # (8): the rocker DCE
+            # (4): B on the crank, C on the rocker
             for s2 in _stage_dyads(np.swapaxes(Q, -1, -2) @ K, choices[1], along[1], n):
-                for s3 in _stage_dyads(T, choices[2], along[2], n):  # (9): G on EG, F on the crank
+                for s3 in thirds:
                     P = dict(A=A, B=s2.circle_point, C=s2.centre_point, D=D, E=E, F=s3.centre_point,
                              G=s3.circle_point)
                     out.append((P, dict(B=K, C=Q, E=Rb, F=K, G=Rb), (s1, s2, s3)))
         return out
-    for s1 in _stage_dyads(T, choices[0], along[0], n):             # (10): E on EG, B on the crank
+    # (12): G, F of the body's orientations (Stephenson-2) does not depend on the other stages
+    fixed_third = _stage_dyads(Rb, choices[2], along[2], n) if kind == "stephenson2" else None
+    for s1 in _stage_dyads(T, choices[0], along[0], n):       # (9): E on EG, B on the crank
         E, B = s1.circle_point, s1.centre_point
-        U = _carry(B, E, K @ B, Rb @ E)                       # the coupler BCE
-        for s2 in _stage_dyads(U, choices[1], along[1], n):         # (11): C on the coupler, D on the ground
+        U = _carry(B, E, K @ B, Rb @ E)                       # (10): the coupler BCE
+        for s2 in _stage_dyads(U, choices[1], along[1], n):   # C on the coupler, D on the ground
             C, D = s2.circle_point, s2.centre_point
             if kind == "stephenson2":
-                Q, third = I, Rb                              # (12): G on EG, F on the ground
+                Q, thirds = I, fixed_third                    # F on the ground
             else:
-                Q = _turn_to(D, C, U @ C)                     # the rocker DCF
-                third = np.swapaxes(Q, -1, -2) @ Rb           # (12'): G on EG, F on the rocker
-            for s3 in _stage_dyads(third, choices[2], along[2], n):
+                Q = _turn_to(D, C, U @ C)                     # (11): the rocker DCF
+                thirds = _stage_dyads(np.swapaxes(Q, -1, -2) @ Rb, choices[2], along[2], n)   # (12')
+            for s3 in thirds:
                 P = dict(A=A, B=B, C=C, D=D, E=E, F=s3.centre_point, G=s3.circle_point)
                 out.append((P, dict(B=K, C=U, E=Rb, F=Q, G=Rb), (s1, s2, s3)))
     return out
@@ -300,6 +303,15 @@ _DOC = """
     ValueError
         For bad input: wrong shapes, non-rotations, angles not increasing, a missing
         free parameter.
+
+    Notes
+    -----
+    Each joint set is built on the branches of the first orientation and solved at the
+    prescribed inputs by `SphericalLinkage`; a design whose joints change side at some
+    orientation (a branch defect) or that cannot run from the first input to the last (an
+    order defect) is reported, not dropped. Degenerate sets (two joints on one axis, such
+    as the crank's own axis found as a dyad) are dropped. The free choices are the crank
+    axis, and for fewer than five orientations `circle_points` (and `along`).
 """
 
 
@@ -322,10 +334,10 @@ guidance_stephenson1.__doc__ = """Stephenson-1 six-bars guiding a body through o
     The Stephenson-1 chain with its ternary links the crank (A, B, F) and the rocker
     (D, C, E); the guided link EG is the one of the chain E-G-F next to the rocker (the
     link next to the crank turns about a pin on it, so it meets only two orientations in
-    general, eq. (7) of :ref:`deriv-spherical-guidance-sixbar`). Kinematic inversion in
+    general, eq. (7') of :ref:`deriv-spherical-guidance-sixbar`). Kinematic inversion in
     three stages: E, D a dyad of the orientations; B, C a dyad of the crank's rotations
     seen from the rocker; G, F a dyad of the guided link's rotations seen from the crank,
-    eqs. (7) to (9). Every six-bar is built as a `SphericalLinkage` and analysed.
+    eqs. (4), (7) to (9). Every six-bar is built as a `SphericalLinkage` and analysed.
 """ + _DOC.format(joints="E, B, G") + """
     Examples
     --------
@@ -344,7 +356,7 @@ guidance_stephenson2.__doc__ = """Stephenson-2 six-bars guiding a body through o
     The guided link EG is pinned to the coupler (B, C, E) at E and joined to a third
     ground pivot F through FG. Kinematic inversion in three stages: E, B a dyad of the
     guided link's rotations seen from the crank, which then fixes the coupler's rotations;
-    C, D a dyad of the coupler's rotations; G, F a dyad of the orientations, eqs. (10) to
+    C, D a dyad of the coupler's rotations; G, F a dyad of the orientations, eqs. (9) to
     (12) of :ref:`deriv-spherical-guidance-sixbar`. Every six-bar is built as a
     `SphericalLinkage` and analysed.
 """ + _DOC.format(joints="E, C, G") + """
@@ -366,7 +378,7 @@ guidance_watt1.__doc__ = """Watt-1 six-bars guiding a body through orientations 
     (D, C, F) through FG. Kinematic inversion in three stages: E, B a dyad of the guided
     link's rotations seen from the crank (the coupler's rotations follow); C, D a dyad of
     the coupler's rotations (the rocker's follow); G, F a dyad of the guided link's
-    rotations seen from the rocker, eqs. (10) to (12') of
+    rotations seen from the rocker, eqs. (9) to (12') of
     :ref:`deriv-spherical-guidance-sixbar`. Every six-bar is built as a `SphericalLinkage`
     and analysed.
 """ + _DOC.format(joints="E, C, G") + """
