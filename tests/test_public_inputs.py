@@ -698,7 +698,7 @@ CASES = {
                                      "branches": ("branch", first), "tol": "tolerance",
                                      "min_transmission": "scalar?"},
                                     points=_SPH_PATH6[0], theta=_SPH_PATH6[1], start=_SPH_PATH6[2], metric="chord",
-                                    branches=(1, 1), tol=1e-3, min_transmission=0.1),
+                                    branches=(1, 1), tol=1e-3, min_transmission=0.5),
     "spherical.path_verify": E(lambda: sph.path_verify,
                                {"linkage": "instance", "points": "vec3", "theta": "real", "tol": "tolerance"},
                                linkage=_sfb(), points=_SPH_PATH[0], theta=_SPH_PATH[1], tol=1e-3),

@@ -293,7 +293,7 @@ def test_example3_noisy_sixbar_from_random_starts():
     sp = lk.solve(sweep)
     assert sp.assembled.all()
     s = transmission_sines(sp.points, lk)
-    assert s.min() > 0.05
+    assert s.min() > np.sin(np.radians(30.0)) - 1e-3   # the default min_transmission, to the penalty's give
     # (3) in order: the sweep moves without jumps and passes the points in the given order
     path = sp.points["P"]
     steps = np.linalg.norm(np.diff(path, axis=0), axis=1)
@@ -301,6 +301,6 @@ def test_example3_noisy_sixbar_from_random_starts():
     nearest = np.argmin(np.linalg.norm(path[None, :, :] - Q[:, None, :], axis=2), axis=1)
     assert np.all(np.diff(nearest) > 0)
     # (4) the path is found, not the parameters: over the whole range the designed curve
-    # stays within a few noise levels of the curve that made the task
+    # stays within a few noise levels of the curve that made the task (at equal inputs)
     truth = _stephenson(X6, (1, 1)).solve(sweep).points["P"]
-    assert np.max(arcs(path, truth)) < 3e-3
+    assert np.max(arcs(path, truth)) < 4e-3

@@ -109,7 +109,8 @@ def _matching_branches(x, branches, th, P):
     return branches
 
 
-def path_stephenson1(points, theta, start, *, metric="arc", branches=(1, 1), tol=1e-3, min_transmission=0.1):
+def path_stephenson1(points, theta, start, *, metric="arc", branches=(1, 1), tol=1e-3,
+                     min_transmission=np.radians(30.0)):
     """Synthesise a Stephenson-1 spherical six-bar path generator with prescribed input angles.
 
     Minimises ``sum_i dist(P(x, theta_i), Q_i)^2`` over the fifteen parameters ``x = (lon,
@@ -138,8 +139,9 @@ def path_stephenson1(points, theta, start, *, metric="arc", branches=(1, 1), tol
         Arc error allowed for `SphericalPathDesign.passes`, radians.
     min_transmission : float or None, optional
         Smallest transmission angle of either dyad allowed between the first and the
-        last prescribed input, radians in [0, pi/2); 0 asks only that the linkage
-        assembles there, None drops the constraint (the points alone).
+        last prescribed input, radians in [0, pi/2) (default 30 degrees, as the planar
+        `path_synthesis_model`); 0 asks only that the linkage assembles there, None
+        drops the constraint (the points alone).
 
     Returns
     -------
