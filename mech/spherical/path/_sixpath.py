@@ -33,6 +33,7 @@ _SWEEP = 64                                   # samples of the assembly constrai
 _STEP = 1e-7                                  # relative step of the central differences
 _NFEV = 500                                   # residual evaluations of a full refinement
 _SCREEN, _KEEP = 30, 3                        # with more starts: a short run each, keep 3
+_STALL = (20, 1e-3)                           # stop after 20 iterations that gain < 1e-3 of the cost
 
 
 def _xyz(v):
@@ -199,8 +200,18 @@ def path_stephenson1(points, theta, start, *, metric="arc", branches=(1, 1), tol
         return ((R[:15] - R[15:]) / (2.0 * h[:, None])).T
 
     def refine(x0, max_nfev):
+        costs = []
+
+        def stalled(intermediate_result):
+            # a noisy fit creeps along a flat valley of the fifteen parameters: stop when
+            # the cost fell by less than 1e-3 of itself over the last 20 iterations
+            costs.append(intermediate_result.cost)
+            if len(costs) > _STALL[0] and costs[-1 - _STALL[0]] - costs[-1] < _STALL[1] * costs[-1]:
+                raise StopIteration
+
         sol = least_squares(lambda x: residuals(x[None])[0], np.clip(x0, lo + 1e-12, hi - 1e-12), jac=jac,
-                            bounds=(lo, hi), xtol=1e-10, ftol=1e-9, gtol=1e-12, max_nfev=max_nfev)
+                            bounds=(lo, hi), xtol=1e-10, ftol=1e-9, gtol=1e-12, max_nfev=max_nfev,
+                            callback=stalled)
         return sol, sol.nfev + 30 * sol.njev
 
     t0 = time.perf_counter()
