@@ -9,7 +9,7 @@ gives at each prescribed input angle to its prescribed point, as for the four-ba
   prescribed angle, the sine of each dyad's transmission angle (the angle at its joint)
   must stay above ``sin(min_transmission)``. Without it, a fit to noisy points may pass
   a dead point between two prescribed angles: every point is reached, but the linkage
-  cannot move from one to the next (the points are then on different assembly circuits);
+  cannot move from one to the next by turning its crank;
 * a fast batch evaluation of the chain (crank, dyad B-C-D, points E and F, dyad E-G-F,
   point P) straight from the generated formulas, for many parameter vectors at once, so
   that the central-difference Jacobian costs one vectorised call. The designed linkage is
@@ -148,7 +148,7 @@ def path_stephenson1(points, theta, start, *, metric="arc", branches=(1, 1), tol
     -------
     SphericalPathDesign
         ``evaluations`` counts residual evaluations of one linkage, the batched Jacobian
-        included (31 per Jacobian); ``seconds`` covers all starts.
+        included (30 per Jacobian); ``seconds`` covers all starts.
 
     Notes
     -----
