@@ -6,7 +6,8 @@ optimisation (§2.5): `path_fourbar`, `path_stephenson1`, verified by `path_veri
 """
 
 from mech.spherical.path._octic import CouplerOctic, coupler_octic, coupler_quartic, nine_parameters
-from mech.spherical.path._synthesis import SphericalPathDesign, path_fourbar, path_stephenson1, path_verify
+from mech.spherical.path._sixpath import path_stephenson1
+from mech.spherical.path._synthesis import SphericalPathDesign, path_fourbar, path_verify
 
 __all__ = ["CouplerOctic", "SphericalPathDesign", "coupler_octic", "coupler_quartic", "nine_parameters",
            "path_fourbar", "path_stephenson1", "path_verify"]
