@@ -14,7 +14,8 @@ points ``Q_i`` on the unit sphere at prescribed input angles ``theta_i``. Two fo
   when P is at ``Q_i``. Every residual is a dot product, but nothing ties C_i to one
   branch; the result is proved by the same analysis.
 
-Derivation of the objective and its gradient: ``derivations/spherical/path_synthesis.md``.
+Derivation of the objective and its gradient: the section "Derivation: the objective and its
+gradient (§2.5)" of ``book/spherical/path-synthesis.md``.
 The six-bar (`path_stephenson1`) is in ``_sixpath``, which adds an assembly constraint
 and a batch evaluation. SciPy is imported when a synthesis runs, never at ``import mech``.
 """
