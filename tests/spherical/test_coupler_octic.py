@@ -278,3 +278,67 @@ def test_coupler_quartic_is_not_homogeneous_but_octic_factors_on_sphere():
     F = coupler_octic(params, P)[0]
     assert np.allclose(F, coupler_quartic(params, P)[0] * coupler_quartic(params, -P)[0], rtol=1e-10, atol=0)
     assert not np.allclose(coupler_quartic(params, 2 * P)[0], 2**4 * coupler_quartic(params, P)[0])
+
+
+# ----------------------------------------------------------------------------- the gradient
+def _mp_octic_placed(params, x):
+    """F at 50 digits by another route: the placement by rotations (_mp_frame), the quartic by
+    solving the 3x3 system (2) numerically (_mp_quartic), then F = |x|**8 Q(x^) Q(-x^)."""
+    lon, lat, heading, a, b, c, d, r, gamma = (mpmath.mpf(float(v)) for v in params)
+    frame = _mp_frame(lon, lat, heading)
+    std = frame.T * mpmath.matrix(x)
+    rho = mpmath.norm(std)
+    unit = std / rho
+    return rho**8 * _mp_quartic(unit, a, b, c, d, r, gamma) * _mp_quartic(-unit, a, b, c, d, r, gamma)
+
+
+def _mp_quartic_placed(params, x):
+    lon, lat, heading, a, b, c, d, r, gamma = (mpmath.mpf(float(v)) for v in params)
+    return _mp_quartic(_mp_frame(lon, lat, heading).T * mpmath.matrix(x), a, b, c, d, r, gamma)
+
+
+def _mp_central_gradient(function, params, x, h=mpmath.mpf(10) ** -15):
+    """Central differences of `function` at the point x (mpmath), step h: error O(h**2)."""
+    x = [mpmath.mpf(float(v)) for v in x]
+    grad = []
+    for k in range(3):
+        up, down = list(x), list(x)
+        up[k] += h
+        down[k] -= h
+        grad.append((function(params, up) - function(params, down)) / (2 * h))
+    return np.array([float(g) for g in grad])
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_coupler_octic_gradient_central_differences(seed):
+    """The generated gradient of F (and of Q) against central differences of F at 50 digits
+    computed by another route (numeric elimination, rotations), for random linkages in
+    arbitrary placement, at points off the curve (any length) and on it: relative 1e-9."""
+    rng = np.random.default_rng(1420 + seed)
+    params = _random_params(rng)
+    points = list(rng.normal(size=(4, 3)) * rng.uniform(0.5, 2.0, (4, 1)))
+    with mpmath.workdps(DPS):
+        on_curve = _mp_coupler_points(params, rng.uniform(0, 2 * np.pi, 6), 1)
+        on_curve += _mp_coupler_points(params, rng.uniform(0, 2 * np.pi, 6), -1)
+        points += [np.array([float(p[i]) for i in range(3)]) for p in on_curve[:4]]
+        worst_F = worst_Q = 0.0
+        for x in points:
+            _, grad = coupler_octic(params, x)
+            reference = _mp_central_gradient(_mp_octic_placed, params, x)
+            worst_F = max(worst_F, float(np.linalg.norm(grad - reference) / np.linalg.norm(reference)))
+            _, grad = coupler_quartic(params, x)
+            reference = _mp_central_gradient(_mp_quartic_placed, params, x)
+            worst_Q = max(worst_Q, float(np.linalg.norm(grad - reference) / np.linalg.norm(reference)))
+    assert len(points) >= 6
+    assert worst_F < 1e-9 and worst_Q < 1e-9, (worst_F, worst_Q)
+
+
+def test_coupler_octic_gradient_euler_relation():
+    """F is homogeneous of degree 8: x . grad F = 8 F (Euler), an identity the generated
+    gradient must keep."""
+    rng = np.random.default_rng(1430)
+    params = _random_params(rng)
+    x = rng.normal(size=(50, 3)) * rng.uniform(0.3, 3.0, (50, 1))
+    value, grad = coupler_octic(params, x)
+    scale = np.linalg.norm(grad, axis=-1) * np.linalg.norm(x, axis=-1)
+    assert np.max(np.abs(np.sum(x * grad, axis=-1) - 8 * value) / scale) < 1e-12
