@@ -309,11 +309,13 @@ def _mp_central_gradient(function, params, x, h=mpmath.mpf(10) ** -15):
     return np.array([float(g) for g in grad])
 
 
+@pytest.mark.parametrize("form", ["direct", "scaled"])
 @pytest.mark.parametrize("seed", range(4))
-def test_coupler_octic_gradient_central_differences(seed):
-    """The generated gradient of F (and of Q) against central differences of F at 50 digits
-    computed by another route (numeric elimination, rotations), for random linkages in
-    arbitrary placement, at points off the curve (any length) and on it: relative 1e-9."""
+def test_coupler_octic_gradient_central_differences(seed, form):
+    """The generated gradient of F (eq. (4), or eqs. (7)-(9) on A's half of the sphere) and
+    of Q against central differences of F at 50 digits computed by another route (numeric
+    elimination, rotations), for random linkages in arbitrary placement, at points off the
+    curve (any length) and on it: relative 1e-9."""
     rng = np.random.default_rng(1420 + seed)
     params = _random_params(rng)
     points = list(rng.normal(size=(4, 3)) * rng.uniform(0.5, 2.0, (4, 1)))
@@ -323,7 +325,7 @@ def test_coupler_octic_gradient_central_differences(seed):
         points += [np.array([float(p[i]) for i in range(3)]) for p in on_curve[:4]]
         worst_F = worst_Q = 0.0
         for x in points:
-            _, grad = coupler_octic(params, x)
+            _, grad = coupler_octic(params, x, form=form)
             reference = _mp_central_gradient(_mp_octic_placed, params, x)
             worst_F = max(worst_F, float(np.linalg.norm(grad - reference) / np.linalg.norm(reference)))
             _, grad = coupler_quartic(params, x)

@@ -110,7 +110,7 @@ def _evaluate(function, degree, linkage, points, *, form="direct", frame=None, s
     value = np.empty(u.shape[0])
     grad = np.empty((u.shape[0], 3))
     scaled = np.zeros(u.shape[0], dtype=bool)
-    if form != "direct":
+    if form == "scaled" or (form == "auto" and np.any(_octic_small.linkage_size(p) <= small)):
         R = _octic_small.frames(p) if frame is None else frame
         flat_R = np.broadcast_to(R, shape + (3, 3)).reshape(-1, 3, 3)
         cosine = np.einsum("ni,ni->n", u, flat_R[:, :, 2])           # cos of the arc from A to the point
@@ -280,8 +280,8 @@ class CouplerOctic:
     """The implicit coupler curve of one `SphericalFourBar` (from
     `SphericalFourBar.coupler_curve_polynomial`).
 
-    Calling it evaluates the octic F (value, gradient) as `coupler_octic` does; `quartic`
-    evaluates Q, `lonlat` the longitude-latitude form ``Q(to_xyz(lon, lat))``; `params` are
+    Calling it evaluates the octic F (value, gradient) as `coupler_octic` does, in the
+    linkage's own frame (with the same `form` and `small` options); `quartic` evaluates Q, `lonlat` the longitude-latitude form ``Q(to_xyz(lon, lat))``; `params` are
     the nine parameters. Other forms: the parametric curve is `SphericalFourBar.solve`
     (P, vP, aP over the input angle).
 
