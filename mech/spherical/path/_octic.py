@@ -192,7 +192,7 @@ def coupler_octic(linkage, points, *, form="auto", small=0.1):
     form, built from terms of order one, then keeps only about 1e-16 / eps**2 of relative
     accuracy (1e-8 at eps = 1e-4), while the scaled form divides the powers of eps out
     symbolically and keeps about 1e-15 down to eps = 1e-8 and beyond (measured on
-    :ref:`book-spherical-planar-limit`); it costs about three times as much per point. For
+    :ref:`book-spherical-planar-limit`); it costs about five times as much per point. For
     a `SphericalFourBar` its own frame is used as stored (exact for ``frame=None``); from
     nine parameters the frame is rounded, which moves A by about 1e-16, a relative change
     of about 1e-16 / eps in a linkage of size eps.
