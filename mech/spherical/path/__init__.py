@@ -1,6 +1,7 @@
 """Path generation with spherical four-bars (the monograph's chapter 2): the eighth-order
 implicit coupler curve in its nine parameters (§2.1), with the quartic that cuts it from
-the sphere and its longitude-latitude form. The parametric coupler curve, with velocities
+the sphere and its longitude-latitude form, and a scaled form of the octic that keeps its
+digits for small linkages. The parametric coupler curve, with velocities
 and accelerations of the coupler point (§2.3), is `mech.spherical.SphericalFourBar.solve`. Path synthesis by
 optimisation (§2.5): `path_fourbar`, `path_stephenson1`, verified by `path_verify`.
 """
