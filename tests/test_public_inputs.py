@@ -684,8 +684,10 @@ CASES = {
                                         points=[[0.0, 0.6, 0.8]]),
     "spherical.CouplerOctic.lonlat": E(lambda: _sfb().coupler_curve_polynomial().lonlat, {"lon": "real", "lat": "real"},
                                        lon=0.3, lat=[0.2, 0.4]),
-    "spherical.coupler_octic": E(lambda: sph.coupler_octic, {"linkage": "vec3", "points": "vec3"},
-                                 linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
+    "spherical.coupler_octic": E(lambda: sph.coupler_octic, {"linkage": "vec3", "points": "vec3", "form": "option",
+                                                             "small": "scalar"},
+                                 linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]],
+                                 form="auto", small=0.1),
     "spherical.coupler_quartic": E(lambda: sph.coupler_quartic, {"linkage": "vec3", "points": "vec3"},
                                    linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
     "spherical.path_fourbar": E(lambda: sph.path_fourbar,
@@ -695,9 +697,10 @@ CASES = {
                                 metric="arc", branch=1, tol=1e-3),
     "spherical.path_stephenson1": E(lambda: sph.path_stephenson1,
                                     {"points": "vec3", "theta": "real", "start": "vec3", "metric": "option",
-                                     "branches": ("branch", first), "tol": "tolerance"},
+                                     "branches": ("branch", first), "tol": "tolerance",
+                                     "min_transmission": "scalar?"},
                                     points=_SPH_PATH6[0], theta=_SPH_PATH6[1], start=_SPH_PATH6[2], metric="chord",
-                                    branches=(1, 1), tol=1e-3),
+                                    branches=(1, 1), tol=1e-3, min_transmission=0.5),
     "spherical.path_verify": E(lambda: sph.path_verify,
                                {"linkage": "instance", "points": "vec3", "theta": "real", "tol": "tolerance"},
                                linkage=_sfb(), points=_SPH_PATH[0], theta=_SPH_PATH[1], tol=1e-3),
@@ -1569,6 +1572,24 @@ CASES.update({
 })
 
 
+def _sx_watt1():
+    lk = sph.watt1(0.3, 0.9, 0.7, 1.0, E=(0.5, 0.6), F=(0.4, 0.9), arcs=(0.7, 0.8), coupler=(0.3, 0.4))
+    theta = np.array([0.0, 0.3, 0.6, 0.9, 1.2])
+    return sph.sixbar_orientations(lk, theta), theta
+
+
+_SX_EXACT = {"R": "matrix", "theta": "real", "crank_pivot": "real", "circle_points": "real?", "along": "real",
+             "rtol": "scalar", "sweep": "count"}
+CASES.update({
+    f"spherical.{name}": E((lambda name=name: getattr(sph, name)), _SX_EXACT, R=_sx_watt1()[0], theta=_sx_watt1()[1],
+                           crank_pivot=[0.0, 0.0, 1.0], circle_points=None, along=(1.0, 1.0, 1.0), rtol=1e-9, sweep=41)
+    for name in ("guidance_stephenson1", "guidance_stephenson2", "guidance_watt1")
+})
+RECORDS["spherical.SphericalExactSixBar"] = "result record built by the package"
+CASES["spherical.SphericalExactSixBar.guided_orientations"] = E(
+    lambda: sph.guidance_watt1(*_sx_watt1(), [0.0, 0.0, 1.0], sweep=41)[0].guided_orientations,
+    {"theta": "real"}, theta=[0.2, 0.5])
+
 
 def _s3():
     return sph.stephenson3(0.35, 0.9, 0.8, 1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6),
@@ -1607,6 +1628,7 @@ CASES.update({
         lambda: sph.guidance_stephenson3(*_s3_task(), [0.0, 0.0, 1.0])[0].guided_orientations,
         {"theta": "real"}, theta=[0.2, 0.5]),
 })
+
 
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():

@@ -98,7 +98,7 @@ def test_the_branch_ends_at_a_dead_point_of_the_triad():
     pose = lk.solve(th)
     assert pose.valid[0] and not pose.valid[-1]
     last = th[pose.valid][-1]
-    # there the triad's equations (8) are singular: their smallest singular value falls
+    # there the triad's equations (14) are singular: their smallest singular value falls
     sv = [np.linalg.svd(lk._jacobian(lk.rotations(t), t - lk.theta0), compute_uv=False)[-1] for t in (0.0, last)]
     assert sv[1] < 0.25 * sv[0]
     # never the other assembly: everything beyond the dead point is NaN

@@ -12,7 +12,7 @@ links are three independent constant-arc conditions:
 Each is solved for its two axes and its arc (five unknowns) from the residuals of the
 constant arc (one per orientation): a square system for five orientations (exact), a least
 squares problem beyond. SciPy is imported lazily. Derivation:
-:ref:`deriv-spherical-guidance-sixbar`, eqs. (9)-(10).
+:ref:`deriv-spherical-guidance-sixbar`, eqs. (15)-(16).
 """
 
 from dataclasses import dataclass
@@ -141,7 +141,7 @@ def _design(R, theta, A, ground, crank, rtol):
     E, g = d2.centre_point, d2.circle_point
     # assemble at the first input with the dyads' arcs (their means over the orientations;
     # for an exact design the arcs at every orientation): turn the body from R_1 by the
-    # small rotation W that closes the three arcs (Newton, the rows of eq. (8))
+    # small rotation W that closes the three arcs (Newton, the rows of eq. (14))
     W = np.eye(3)
     target = np.cos([d1.arc, d2.arc, ground[0].arc])
     for _ in range(20):
@@ -171,7 +171,7 @@ def _design(R, theta, A, ground, crank, rtol):
         return None
     offset = lk.theta0 - float(theta[0])
     # a dead point of the triad between two orientations shows as a change of the sign of
-    # the determinant of eq. (8) at the exact poses: skip those without marching
+    # the determinant of eq. (14) at the exact poses: skip those without marching
     signs = []
     for j in range(R.shape[0]):
         Q = R[j] @ R1.T
@@ -191,7 +191,7 @@ def _design(R, theta, A, ground, crank, rtol):
 def guidance_stephenson3(R, theta, crank_pivot, *, subset=None, rtol=1e-9):
     """Stephenson-3 spherical six-bars guiding a body through orientations at given input angles.
 
-    The constant-length route of the monograph's chapter 4 (eqs. (9)-(10) of
+    The constant-length route of the monograph's chapter 4 (eqs. (15)-(16) of
     :ref:`deriv-spherical-guidance-sixbar`): with the crank axis A chosen, each of the three
     binary links D-H, B-C and E-G is found from the residuals of its constant arc over the
     orientations (over R_j for D-H, over the rotations S_j = K(A, theta_j - theta_1)^T R_j

@@ -18,7 +18,7 @@ The orientation Q of CGH is found from the three constant arcs
 
     (B . C) = cos b,    (E . G) = cos e,    (D . H) = cos c,    C, G, H = Q C0, Q G0, Q H0,
 
-by Newton's method on Q (eq. (7) of :ref:`deriv-spherical-guidance-sixbar`), continued in
+by Newton's method on Q (eq. (13) of :ref:`deriv-spherical-guidance-sixbar`), continued in
 small steps from the assembly, so a solution stays on the assembly's branch and never jumps.
 """
 
@@ -93,11 +93,11 @@ class SphericalStephenson3:
 
     Notes
     -----
-    Derivation: :ref:`deriv-spherical-guidance-sixbar`, eqs. (7)-(8). `solve` continues the
+    Derivation: :ref:`deriv-spherical-guidance-sixbar`, eqs. (13)-(14). `solve` continues the
     motion from `theta0` to each input in steps of at most 0.05 rad, predicting the guided
-    link's turn from the rate equation (8) and correcting it with Newton's method on the
-    three arc conditions (7) (a 3 x 3 solve per step, to 1e-15 in the cosines). The branch
-    is the assembly's: the determinant of (8) keeps its sign along it; where it would
+    link's turn from the rate equation (14) and correcting it with Newton's method on the
+    three arc conditions (13) (a 3 x 3 solve per step, to 1e-15 in the cosines). The branch
+    is the assembly's: the determinant of (14) keeps its sign along it; where it would
     change sign the triad is at a dead point (two assemblies meet, the input cannot pass),
     and every input beyond it is NaN (``valid`` False), never the other assembly. A branch
     with no dead point is followed until it is back at the assembly (its period, a whole
@@ -175,7 +175,7 @@ class SphericalStephenson3:
         return np.array([B @ (Q @ p["C"]), E @ (Q @ p["G"]), p["D"] @ (Q @ p["H"])]) - self._cos
 
     def _jacobian(self, Q, turn):
-        """Rows d/dw of the three closures for Q -> exp(w) Q: (Q y) x X, eq. (8)."""
+        """Rows d/dw of the three closures for Q -> exp(w) Q: (Q y) x X, eq. (14)."""
         B, E = self._crank(turn)
         p = self._p
         return np.array([_cx(Q @ p["C"], B), _cx(Q @ p["G"], E), _cx(Q @ p["H"], p["D"])])
