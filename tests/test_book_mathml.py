@@ -1,0 +1,124 @@
+"""The book's LaTeX -> MathML step (book/_ext/mathml.py) on the constructs the pages use.
+
+Each expected structure is written out by hand from what MathML Core needs to draw the
+formula (not taken from the converter's output); a formula that cannot be converted must
+raise, so the build stops instead of showing raw TeX.
+"""
+
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("latex2mathml")
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "book" / "_ext"))
+import mathml  # noqa: E402
+
+NS = "{http://www.w3.org/1998/Math/MathML}"
+
+
+def tree(tex, display=False):
+    text, tag = mathml.tex_to_mathml(tex, display=display)
+    root = ET.fromstring(text)
+    return root, tag, text
+
+
+def tokens(root, kind):
+    return [el.text for el in root.iter(NS + kind)]
+
+
+def test_inline_and_display():
+    root, tag, text = tree(r"\theta + 1")
+    assert root.tag == NS + "math" and "display" not in root.attrib and tag is None
+    assert tokens(root, "mi") == ["θ"] and tokens(root, "mn") == ["1"]
+    root, _, _ = tree(r"\theta + 1", display=True)
+    assert root.attrib["display"] == "block"
+
+
+def test_tag_becomes_the_equation_number():
+    root, tag, text = tree(r"\cos\psi = K_1 \tag{2-53}", display=True)
+    assert tag == "2-53"
+    assert "2-53" not in text and "tag" not in text
+
+
+def test_tag_in_inline_math_is_an_error():
+    with pytest.raises(mathml.MathMLError, match="tag"):
+        mathml.tex_to_mathml(r"x \tag{1}")
+
+
+def test_aligned_becomes_a_table_of_right_and_left_cells():
+    root, _, _ = tree(r"\begin{aligned} a &= b + c,\\ d &= e \end{aligned}", display=True)
+    table = root.find(f".//{NS}mtable")
+    rows = table.findall(f"{NS}mtr")
+    assert len(rows) == 2
+    cells = rows[0].findall(f"{NS}mtd")
+    assert [c.attrib["columnalign"] for c in cells] == ["right", "left"]
+    assert tokens(cells[0], "mi") == ["a"]
+    assert tokens(cells[1], "mo")[0] == "="  # the relation starts the left-aligned cell
+    assert "&" not in ET.tostring(root, encoding="unicode")
+
+
+def test_rows_without_environment_and_equation_star_wrapper():
+    root, tag, _ = tree("\\begin{equation*}\nx = 1 \\\\\ny = 2 \\tag{5}\n\\end{equation*}", display=True)
+    assert tag == "5"
+    assert len(root.findall(f".//{NS}mtr")) == 2
+
+
+def test_matrix_keeps_its_cells():
+    root, _, _ = tree(r"\begin{bmatrix} 1 & 0 \\ 0 & 1 \end{bmatrix}", display=True)
+    assert len(root.findall(f".//{NS}mtd")) == 4
+    assert tokens(root, "mo")[0] == "[" and tokens(root, "mo")[-1] == "]"
+
+
+def test_matrix_whose_first_cell_starts_with_a_bracket():
+    root, _, _ = tree(r"\begin{bmatrix}[\mathbf z]_\times & 0\\0&0\end{bmatrix}", display=True)
+    assert len(root.findall(f".//{NS}mtd")) == 4
+
+
+def test_operatorname_and_mathrm_are_upright():
+    root, _, _ = tree(r"\operatorname{atan2}(y, x) + e^{\mathrm{i}\theta} + \operatorname{Im} z")
+    mis = [(el.text, el.attrib.get("mathvariant")) for el in root.iter(NS + "mi")]
+    assert ("atan2", None) in mis  # a multi-letter <mi> is upright
+    assert ("i", "normal") in mis  # a single letter needs mathvariant="normal"
+    assert ("Im", None) in mis
+
+
+def test_bold_letters_become_unicode_bold():
+    # MathML Core draws no mathvariant="bold": the letters must be the bold code points.
+    root, _, text = tree(r"\mathbf z + \boldsymbol\omega + \mathbf{R}")
+    assert "mathvariant" not in text
+    assert "\U0001D433" in text  # MATHEMATICAL BOLD SMALL Z
+    assert "\U0001D74E" in text  # MATHEMATICAL BOLD ITALIC SMALL OMEGA
+    assert "\U0001D411" in text  # MATHEMATICAL BOLD CAPITAL R
+
+
+@pytest.mark.parametrize("variant, letter, code", [
+    ("bold", "A", 0x1D400), ("bold", "a", 0x1D41A), ("bold", "Ω", 0x1D6C0), ("bold", "α", 0x1D6C2),
+    ("italic", "h", 0x210E), ("bold-italic", "θ", 0x1D73D), ("bold", "7", 0x1D7D5),
+])
+def test_styled_letters(variant, letter, code):
+    assert mathml.styled(letter, variant) == chr(code)
+
+
+def test_plus_minus_is_an_operator():
+    root, _, _ = tree(r"a \pm b")
+    assert "±" in tokens(root, "mo")
+
+
+def test_big_delimiters_and_control_space():
+    root, _, text = tree("\\bigl\\lVert x \\bigr\\rVert + a\\\nb + \\arg z")
+    assert "\\" not in text
+    assert tokens(root, "mo").count("‖") == 2
+    assert "arg" in tokens(root, "mi")
+
+
+@pytest.mark.parametrize("bad", [r"\unknowncommand x", r"a & b", r"\frac{a}{b"])
+def test_what_cannot_be_converted_raises(bad):
+    with pytest.raises(mathml.MathMLError):
+        mathml.tex_to_mathml(bad)
+
+
+def test_split_top_ignores_nested_groups():
+    assert mathml.split_top(r"a & \begin{matrix} 1 & 2 \end{matrix} & {c & d}", "&") == [
+        "a ", r" \begin{matrix} 1 & 2 \end{matrix} ", " {c & d}"]
