@@ -122,3 +122,24 @@ def test_what_cannot_be_converted_raises(bad):
 def test_split_top_ignores_nested_groups():
     assert mathml.split_top(r"a & \begin{matrix} 1 & 2 \end{matrix} & {c & d}", "&") == [
         "a ", r" \begin{matrix} 1 & 2 \end{matrix} ", " {c & d}"]
+
+
+def test_fences_around_short_content_are_not_stretched():
+    # Chromium would stretch them and set them apart from a single letter: sin ( x ).
+    root, _, _ = tree(r"\sin{\left(\alpha_{1} \right)}")
+    assert {mo.attrib.get("stretchy") for mo in root.iter(NS + "mo")} == {"false"}
+    root, _, _ = tree(r"\left(\frac{a}{b}\right)")  # a fraction: the fences stretch
+    assert [mo.attrib.get("stretchy") for mo in root.iter(NS + "mo")] == ["true", "true"]
+
+
+def test_big_delimiters_are_the_normal_glyph_enlarged():
+    root, _, _ = tree(r"\bigl(x\bigr)")
+    mos = list(root.iter(NS + "mo"))
+    assert [mo.attrib.get("style") for mo in mos] == ["font-size:1.2em"] * 2
+    assert all("minsize" not in mo.attrib and mo.attrib["stretchy"] == "false" for mo in mos)
+
+
+def test_thin_space_after_a_function_name_only_before_an_ordinary_symbol():
+    assert mathml._function_spaces(r"\cos\alpha_1\cos\alpha_2") == r"\cos\,\alpha_1\cos\,\alpha_2"
+    assert mathml._function_spaces(r"\sin^2(\theta) + \tan\left(x\right)") == r"\sin^2(\theta) + \tan\left(x\right)"
+    assert mathml._function_spaces(r"\max_{k} x_k") == r"\max_{k}\, x_k"

@@ -187,10 +187,41 @@ def _convert(tex):
 
 
 _TOKENS = {"mi", "mn", "mo", "mtext", "ms"}
+_TALL = {"mfrac", "mtable", "msqrt", "mroot", "munderover"}
+
+
+def _local(el):
+    return el.tag.split("}")[-1]
+
+
+def _fences(tree):
+    """Fences that Chromium should not stretch.
+
+    Chromium stretches a ``stretchy`` parenthesis even around a single letter, and Latin
+    Modern's stretched glyphs then stand apart from what they enclose: ``sin ( x )``.
+    TeX's ``\\left( x \\right)`` keeps the normal glyph when the content is no taller
+    than a letter, so a fence pair around content without fractions, tables, roots or big
+    operators becomes ``stretchy="false"``; a ``\\bigl(`` (latex2mathml: ``minsize``)
+    becomes the normal glyph enlarged by its factor, as TeX's bigger sizes look.
+    """
+    for mrow in tree.iter():
+        kids = list(mrow)
+        if (_local(mrow) == "mrow" and len(kids) >= 2 and _local(kids[0]) == "mo" and _local(kids[-1]) == "mo"
+                and kids[0].attrib.get("stretchy") == "true"
+                and not any(_local(el) in _TALL for el in mrow.iter())):
+            for mo in (kids[0], kids[-1]):
+                mo.attrib["stretchy"] = "false"
+    for mo in tree.iter():
+        size = mo.attrib.get("minsize", "")
+        if _local(mo) == "mo" and size.endswith("em") and mo.attrib.get("maxsize") == size:
+            del mo.attrib["minsize"], mo.attrib["maxsize"]
+            mo.attrib["stretchy"] = "false"
+            mo.attrib["style"] = f"font-size:{size}"
 
 
 def _repair(tree):
-    """Unicode bold letters for mathvariant, operators for ±/∓; raises on leftover TeX."""
+    """Unicode bold letters for mathvariant, operators for ±/∓, fences; raises on leftover TeX."""
+    _fences(tree)
     for el in tree.iter():
         tag = el.tag.split("}")[-1]
         variant = el.attrib.get("mathvariant")
