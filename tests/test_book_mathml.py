@@ -139,7 +139,18 @@ def test_big_delimiters_are_the_normal_glyph_enlarged():
     assert all("minsize" not in mo.attrib and mo.attrib["stretchy"] == "false" for mo in mos)
 
 
-def test_thin_space_after_a_function_name_only_before_an_ordinary_symbol():
-    assert mathml._function_spaces(r"\cos\alpha_1\cos\alpha_2") == r"\cos\,\alpha_1\cos\,\alpha_2"
+def test_thin_space_around_a_function_name_as_in_tex():
+    # TeX: a thin space between a function name and an ordinary symbol on either side,
+    # none next to an opening, an operator or a relation.
+    assert mathml._function_spaces(r"\cos\alpha_1\cos\alpha_2") == r"\cos\,\alpha_1\,\cos\,\alpha_2"
+    assert mathml._function_spaces(r"X^-\cos\theta = (\sin x)") == r"X^-\,\cos\,\theta = (\sin\, x)"
     assert mathml._function_spaces(r"\sin^2(\theta) + \tan\left(x\right)") == r"\sin^2(\theta) + \tan\left(x\right)"
     assert mathml._function_spaces(r"\max_{k} x_k") == r"\max_{k}\, x_k"
+
+
+def test_bars_and_signs_are_spaced_as_in_tex():
+    root, _, _ = tree(r"Y = -(X + |P|)")
+    mos = [(mo.text, mo.attrib) for mo in root.iter(NS + "mo")]
+    assert mos[1][0] == "−" and mos[1][1].get("form") == "prefix"  # a sign after "="
+    assert [a.get("form") for t, a in mos if t == "+"] == [None]  # X + |P|: binary
+    assert all(a.get("lspace") == "0" == a.get("rspace") for t, a in mos if t == "|")

@@ -219,8 +219,33 @@ def _fences(tree):
             mo.attrib["style"] = f"font-size:{size}"
 
 
+_CLOSING = {")", "]", "}", "|", "‖", "⟩", "⌋", "⌉"}
+
+
+def _spacing(tree):
+    """TeX's spacing where MathML Core's operator dictionary differs.
+
+    ``|`` and ``‖`` are ordinary symbols in TeX (no space around ``|P|``); as an infix
+    ``<mo>`` Chromium gives them thick spaces. A ``+``/``−`` right after another operator,
+    a relation or an opening (``= −(x)``, ``(−x``) is a sign in TeX, with no space; Chromium
+    sets it as a binary operator unless its form is prefix.
+    """
+    for parent in tree.iter():
+        previous = None
+        for el in parent:
+            if _local(el) == "mo":
+                text = el.text or ""
+                if text in ("|", "‖"):
+                    el.attrib.setdefault("lspace", "0")
+                    el.attrib.setdefault("rspace", "0")
+                elif text in ("−", "+", "±", "∓") and previous is not None and _local(previous) == "mo" \
+                        and (previous.text or "") not in _CLOSING:
+                    el.attrib.setdefault("form", "prefix")
+            previous = el
+
+
 def _repair(tree):
-    """Unicode bold letters for mathvariant, operators for ±/∓, fences; raises on leftover TeX."""
+    """Unicode bold letters for mathvariant, operators for ±/∓, fences, spacing; raises on leftover TeX."""
     _fences(tree)
     for el in tree.iter():
         tag = el.tag.split("}")[-1]
@@ -298,6 +323,28 @@ _NO_SPACE_BEFORE = re.compile(r"\s*(?:$|[()\[\]|,;.=+\-*/<>!&}']|\\(?:[,;:! {}\\
                               r"|\{\s*\\left)")
 
 
+_ORD_COMMANDS = re.compile(r"\\(alpha|beta|gamma|delta|epsilon|varepsilon|zeta|eta|theta|vartheta|iota|kappa|lambda|"
+                           r"mu|nu|xi|pi|varpi|rho|varrho|sigma|varsigma|tau|upsilon|phi|varphi|chi|psi|omega|Gamma|"
+                           r"Delta|Theta|Lambda|Xi|Pi|Sigma|Upsilon|Phi|Psi|Omega|ell|infty|partial|prime|hbar|"
+                           r"sin|cos|tan|cot|sec|csc|arcsin|arccos|arctan|sinh|cosh|tanh|coth|log|ln|lg|exp|det|dim|"
+                           r"ker|deg|gcd|min|max|sup|inf|lim|Pr|right[)\]|.]|rvert|rVert|[bB]igg?r[)\]|])$")
+
+
+def _space_before(prefix):
+    """True when TeX puts a thin space between ``prefix`` and a function name after it:
+    after an ordinary symbol or a closing (``X^-\\cos``, ``(a)\\sin``), not after an
+    operator, a relation, an opening, punctuation or a space."""
+    stripped = prefix.rstrip()
+    if not stripped:
+        return False
+    if re.search(r"[\^_]\s*[^\s{}\\]$", stripped):  # a one-character script: X^-, a_1
+        return True
+    command = re.search(r"\\[A-Za-z]+\S?$", stripped)
+    if command:
+        return bool(_ORD_COMMANDS.search(stripped))
+    return stripped[-1].isalnum() or stripped[-1] in ")]}'!"
+
+
 def _function_spaces(tex):
     """A thin space after \\sin, \\cos, ... before an argument without parentheses.
 
@@ -309,6 +356,11 @@ def _function_spaces(tex):
     for m in _FUNCTIONS.finditer(tex):
         if m.start() < i:
             continue
+        before = tex[i:m.start()]
+        if _space_before(tex[:m.start()]):
+            before += "\\,"
+        out.append(before)
+        i = m.start()
         end = m.end()
         while True:  # skip the name's sub- and superscripts: \sin^2, \max_{k}
             s = _SCRIPT.match(tex, end)
@@ -435,6 +487,7 @@ def tex_to_mathml(tex, display=False):
     except ET.ParseError as exc:
         raise MathMLError(f"malformed MathML for {tex!r}: {exc}") from exc
     _repair(tree)
+    _spacing(tree)
     ET.register_namespace("", MATHML_NS)
     text = ET.tostring(tree, encoding="unicode", short_empty_elements=True)
     # ElementTree writes the namespace once on the root; HTML needs no prefix anywhere.
