@@ -154,3 +154,23 @@ def test_bars_and_signs_are_spaced_as_in_tex():
     assert mos[1][0] == "−" and mos[1][1].get("form") == "prefix"  # a sign after "="
     assert [a.get("form") for t, a in mos if t == "+"] == [None]  # X + |P|: binary
     assert all(a.get("lspace") == "0" == a.get("rspace") for t, a in mos if t == "|")
+
+
+def test_sums_and_limits_put_their_limits_under_the_operator():
+    root, _, _ = tree(r"\sum_{k=1}^{n} a_k + \lim_{x\to 0} f + \max_k x_k", display=True)
+    over = root.find(f".//{NS}munderover")
+    assert over is not None and over[0].text == "∑" and over[0].attrib["movablelimits"] == "true"
+    assert [el[0].text for el in root.iter(NS + "munder")] == ["lim", "max"]
+    assert root.find(f".//{NS}msubsup") is None
+
+
+def test_operatorname_with_a_subscript_stays_well_formed():
+    root, _, _ = tree(r"\operatorname{atan}_2\left(y, x\right)")
+    sub = root.find(f".//{NS}msub")
+    assert [child.text for child in sub] == ["atan", "2"]
+
+
+def test_a_script_on_a_matrix_belongs_to_the_whole_matrix():
+    root, _, _ = tree(r"\begin{bmatrix}X\\Y\end{bmatrix}_{j\to k} = 0", display=True)
+    sub = root.find(f".//{NS}msub")
+    assert len(sub) == 2 and sub[0].find(f".//{NS}mtable") is not None

@@ -244,9 +244,37 @@ def _spacing(tree):
             previous = el
 
 
+_BIG_OPS = {"∑", "∏", "∐", "⋂", "⋃", "⨀", "⨁", "⨂", "⨄", "⨆", "lim", "max", "min", "sup", "inf", "liminf", "limsup"}
+_LIMITS = {"msub": "munder", "msup": "mover", "msubsup": "munderover"}
+_ARITY = {"mfrac": 2, "msub": 2, "msup": 2, "msubsup": 3, "munder": 2, "mover": 2, "munderover": 3, "mroot": 2}
+
+
+def _big_operators(tree):
+    """``\\sum_k``, ``\\lim_{x\\to 0}``, ``\\max_k``: limits under and over the operator in a
+    display formula and a large ∑, as in TeX (``movablelimits`` puts them back beside the
+    operator in inline math); latex2mathml writes them as sub/superscripts."""
+    for el in tree.iter():
+        kids = list(el)
+        if _local(el) in _LIMITS and kids and _local(kids[0]) == "mo" and (kids[0].text or "") in _BIG_OPS:
+            el.tag = el.tag.replace(_local(el), _LIMITS[_local(el)])
+            kids[0].attrib["movablelimits"] = "true"
+            if len(kids[0].text) == 1:
+                kids[0].attrib["largeop"] = "true"
+
+
+def _check_arity(tree):
+    for el in tree.iter():
+        n = _ARITY.get(_local(el))
+        if n is not None and len(el) != n:
+            raise MathMLError(f"<{_local(el)}> with {len(el)} children instead of {n}")
+
+
 def _repair(tree):
-    """Unicode bold letters for mathvariant, operators for ±/∓, fences, spacing; raises on leftover TeX."""
+    """Unicode bold letters for mathvariant, operators for ±/∓, fences, limits, spacing;
+    raises on leftover TeX or malformed MathML."""
+    _check_arity(tree)
     _fences(tree)
+    _big_operators(tree)
     for el in tree.iter():
         tag = el.tag.split("}")[-1]
         variant = el.attrib.get("mathvariant")
@@ -310,7 +338,26 @@ def preprocess(tex):
     tex = re.sub(r"(?<!\\)((?:\\\\)*)\\\s", r"\1\\ ", tex)
     # a matrix whose first cell starts with [ : latex2mathml takes it for an optional argument
     tex = re.sub(r"(\\begin\{[pbvBV]?matrix\})\s*\[", r"\1{}[", tex)
-    return _function_spaces(tex)
+    return _function_spaces(_group_scripted_matrices(tex))
+
+
+def _group_scripted_matrices(tex):
+    """``\\begin{bmatrix}...\\end{bmatrix}_{j}``: braces around the matrix, so that the
+    script belongs to the whole matrix (latex2mathml gives it to its closing bracket)."""
+    out, i = [], 0
+    pattern = re.compile(r"\\begin\{([pbvBV]?matrix)\}")
+    while True:
+        m = pattern.search(tex, i)
+        if not m:
+            out.append(tex[i:])
+            return "".join(out)
+        _, after = _env_end(tex, m.group(1), m.end())
+        out.append(tex[i:m.start()])
+        if re.match(r"\s*[_^]", tex[after:]):
+            out.append("{" + tex[m.start():after] + "}")
+        else:
+            out.append(tex[m.start():after])
+        i = after
 
 
 _FUNCTIONS = re.compile(r"\\(?:arcsin|arccos|arctan|sinh|cosh|tanh|coth|sin|cos|tan|cot|sec|csc|log|ln|lg|"
@@ -433,7 +480,7 @@ def _to_mathml(tex):
             name = name.replace(" ", "")
             variant = ' mathvariant="normal"' if len(name) == 1 else ""
             markup = f"<mi{variant}>{name}</mi>"
-            if m.group(1).startswith("operatorname") and not re.match(r"\s*(\(|\\left|\\[bB]igg?l?\(|\\[bB]igg?l|\[|\\\{)", tex[i:]):
+            if m.group(1).startswith("operatorname") and not re.match(r"\s*(\(|\\left|\\[bB]igg?l?\(|\\[bB]igg?l|\[|\\\{|[_^])", tex[i:]):
                 markup += '<mspace width="0.167em"/>'  # a thin space before an argument without parentheses
             out.append(hold(markup))
         else:  # \mathrm{\Delta x} and the like: upright through latex2mathml
