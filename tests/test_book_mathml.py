@@ -96,6 +96,8 @@ def test_bold_letters_become_unicode_bold():
 @pytest.mark.parametrize("variant, letter, code", [
     ("bold", "A", 0x1D400), ("bold", "a", 0x1D41A), ("bold", "Ω", 0x1D6C0), ("bold", "α", 0x1D6C2),
     ("italic", "h", 0x210E), ("bold-italic", "θ", 0x1D73D), ("bold", "7", 0x1D7D5),
+    ("sans-serif", "F", 0x1D5A5), ("double-struck", "R", 0x211D), ("double-struck", "S", 0x1D54A),
+    ("script", "L", 0x2112), ("fraktur", "g", 0x1D524),
 ])
 def test_styled_letters(variant, letter, code):
     assert mathml.styled(letter, variant) == chr(code)

@@ -140,28 +140,41 @@ def extract_tag(tex):
 _GREEK_UPPER = "ΑΒΓΔΕΖΗΘΙΚΛΜΝΞΟΠΡϴΣΤΥΦΧΨΩ∇"
 _GREEK_LOWER = "αβγδεζηθικλμνξοπρςστυφχψω∂ϵϑϰϕϱϖ"
 # first code point of A, a, Α (Greek capital), α and 0 in each Unicode mathematical style
+# (None: the style has no such letters), and the letters that live elsewhere in Unicode
 _STYLES = {
     "bold": (0x1D400, 0x1D41A, 0x1D6A8, 0x1D6C2, 0x1D7CE),
     "italic": (0x1D434, 0x1D44E, 0x1D6E2, 0x1D6FC, None),
     "bold-italic": (0x1D468, 0x1D482, 0x1D71C, 0x1D736, 0x1D7CE),
+    "sans-serif": (0x1D5A0, 0x1D5BA, None, None, 0x1D7E2),
+    "bold-sans-serif": (0x1D5D4, 0x1D5EE, 0x1D756, 0x1D770, 0x1D7EC),
+    "double-struck": (0x1D538, 0x1D552, None, None, 0x1D7D8),
+    "script": (0x1D49C, 0x1D4B6, None, None, None),
+    "fraktur": (0x1D504, 0x1D51E, None, None, None),
+    "monospace": (0x1D670, 0x1D68A, None, None, 0x1D7F6),
 }
-_ITALIC_HOLES = {"h": "\u210E"}
+_HOLES = {
+    "italic": {"h": "\u210E"},
+    "double-struck": dict(zip("CHNPQRZ", "\u2102\u210D\u2115\u2119\u211A\u211D\u2124")),
+    "script": dict(zip("BEFHILMRego", "\u212C\u2130\u2131\u210B\u2110\u2112\u2133\u211B\u212F\u210A\u2134")),
+    "fraktur": dict(zip("CHIRZ", "\u212D\u210C\u2111\u211C\u2128")),
+}
 
 
 def styled(text, variant):
-    """``text`` in the Unicode mathematical alphabet of ``variant`` (bold, italic, bold-italic)."""
+    """``text`` in the Unicode mathematical alphabet of ``variant`` (bold, italic, sans-serif, ...)."""
     upper, lower, gupper, glower, digit = _STYLES[variant]
+    holes = _HOLES.get(variant, {})
     out = []
     for c in text:
-        if variant == "italic" and c in _ITALIC_HOLES:
-            out.append(_ITALIC_HOLES[c])
+        if c in holes:
+            out.append(holes[c])
         elif "A" <= c <= "Z":
             out.append(chr(upper + ord(c) - ord("A")))
         elif "a" <= c <= "z":
             out.append(chr(lower + ord(c) - ord("a")))
-        elif c in _GREEK_UPPER:
+        elif c in _GREEK_UPPER and gupper is not None:
             out.append(chr(gupper + _GREEK_UPPER.index(c)))
-        elif c in _GREEK_LOWER:
+        elif c in _GREEK_LOWER and glower is not None:
             out.append(chr(glower + _GREEK_LOWER.index(c)))
         elif c.isdigit() and digit is not None:
             out.append(chr(digit + ord(c) - ord("0")))
