@@ -156,6 +156,9 @@ def test_bars_and_signs_are_spaced_as_in_tex():
     assert mos[1][0] == "−" and mos[1][1].get("form") == "prefix"  # a sign after "="
     assert [a.get("form") for t, a in mos if t == "+"] == [None]  # X + |P|: binary
     assert all(a.get("lspace") == "0" == a.get("rspace") for t, a in mos if t == "|")
+    root, _, _ = tree(r"a + b \ge c + d.")
+    stop = [mo for mo in root.iter(NS + "mo") if mo.text == "."]
+    assert stop and stop[0].attrib.get("lspace") == "0"
 
 
 def test_sums_and_limits_put_their_limits_under_the_operator():

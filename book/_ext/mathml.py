@@ -238,8 +238,8 @@ _CLOSING = {")", "]", "}", "|", "‖", "⟩", "⌋", "⌉"}
 def _spacing(tree):
     """TeX's spacing where MathML Core's operator dictionary differs.
 
-    ``|`` and ``‖`` are ordinary symbols in TeX (no space around ``|P|``); as an infix
-    ``<mo>`` Chromium gives them thick spaces. A ``+``/``−`` right after another operator,
+    ``|``, ``‖`` and ``.`` are ordinary symbols in TeX (no space around ``|P|``, none
+    before a full stop); as an ``<mo>`` Chromium gives them thick spaces. A ``+``/``−`` right after another operator,
     a relation or an opening (``= −(x)``, ``(−x``) is a sign in TeX, with no space; Chromium
     sets it as a binary operator unless its form is prefix.
     """
@@ -248,7 +248,7 @@ def _spacing(tree):
         for el in parent:
             if _local(el) == "mo":
                 text = el.text or ""
-                if text in ("|", "‖"):
+                if text in ("|", "‖", "."):  # "." is not in the operator dictionary: thick spaces
                     el.attrib.setdefault("lspace", "0")
                     el.attrib.setdefault("rspace", "0")
                 elif text in ("−", "+", "±", "∓") and previous is not None and _local(previous) == "mo" \
