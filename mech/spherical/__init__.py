@@ -105,6 +105,8 @@ from mech.spherical.path import (
     path_fourbar,
     path_stephenson1,
     path_verify,
+    SIXBAR_CURVE_ORDERS,
+    sixbar_curve,
 )
 from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
@@ -215,4 +217,6 @@ __all__ = [
     "path_fourbar",
     "path_stephenson1",
     "path_verify",
+    "SIXBAR_CURVE_ORDERS",
+    "sixbar_curve",
 ]
