@@ -181,3 +181,25 @@ def test_sixbar_curve_rejects_other_linkages():
         sixbar_curve(SphericalFourBar(0.5, 1.1, 0.9, 1.2), [0.0, 0.0, 1.0])
     with pytest.raises(ValueError, match="Expected non-zero `points`"):
         sixbar_curve(_build("watt1", _design(np.random.default_rng(1))), [0.0, 0.0, 0.0])
+
+
+def test_sixbar_curve_stephenson1_crank_axis_is_continuous():
+    """Along the crank axis one root theta goes to infinity: the value tends to its limit."""
+    lk = stephenson1(0.3, 0.9, 0.7, 1.0, E=(0.25, 0.8), F=(0.35, -1.2), arcs=(0.8, 0.7), coupler=(0.4, 0.6))
+    for pole in (1.0, -1.0):
+        at = sixbar_curve(lk, [0.0, 0.0, pole])
+        near = sixbar_curve(lk, [[1e-9, 3e-10, pole], [1e-6, -2e-6, pole]])
+        assert np.isfinite(at)
+        np.testing.assert_allclose(near, at, rtol=1e-4)
+
+
+def test_sixbar_curve_watt1_at_the_pivot_D():
+    """At P = +-D the Dixon determinant and |P x D|**4 both vanish: the limit is returned."""
+    d = 1.0
+    lk = watt1(0.3, 0.9, 0.7, d, E=(0.5, 0.6), F=(0.4, 0.9), arcs=(0.7, 0.8), coupler=(0.3, 0.4))
+    D = np.array([np.sin(d), 0.0, np.cos(d)])
+    for sign in (1.0, -1.0):
+        at = sixbar_curve(lk, sign * D)
+        scale = np.abs(sixbar_curve(lk, sign * D + np.array([0.0, 0.1, 0.0])))
+        near = sixbar_curve(lk, sign * D + np.array([0.0, 1e-3, 0.0]))
+        assert np.isfinite(at) and abs(at - near) < 0.05 * max(scale, abs(at))

@@ -172,13 +172,23 @@ def _stephenson1(geo, P):
     a1, b1, c1 = (v.real for v in _psi_parts(np.swapaxes(g1, -1, -2))[:3])
     a1, b1, c1 = a1[..., 2], b1[..., 2], c1[..., 2]
     n2 = a1**2 + b1**2
-    s = np.sqrt((n2 - c1**2).astype(complex))
-    value = n2.astype(complex) ** 4
     parts = _psi_parts(L) + _psi_parts(g2)
-    for sign in (1.0, -1.0):
-        z = ((-a1 * c1 - sign * b1 * s) + 1j * (-b1 * c1 + sign * a1 * s)) / n2
+    # P along the crank axis (n2 -> 0): one root theta goes to infinity and the product
+    # tends to (2 c1)**8 R_4 R_-4, R's extreme Fourier coefficients (those of the parts)
+    limit = (n2 <= 1e-24 * c1**2)
+    n2_safe = np.where(limit, 1.0, n2)
+    s = np.sqrt((n2_safe - c1**2).astype(complex))
+    value = n2_safe.astype(complex) ** 4
+    # the roots z = e^{i theta} of g1: the larger one by the formula, the other from their
+    # product (a1 + i b1) / (a1 - i b1), without cancellation
+    z1, z2 = (((-a1 * c1 - sign * b1 * s) + 1j * (-b1 * c1 + sign * a1 * s)) / n2_safe for sign in (1.0, -1.0))
+    big = np.where(limit, 1.0, np.where(np.abs(z1) >= np.abs(z2), z1, z2))
+    product = np.where(limit, 1.0, a1 + 1j * b1) / np.where(limit, 1.0, a1 - 1j * b1)
+    for z in (big, product / big):
         value = value * _gen.sixbar_cramer(*(_at(p, z) for p in parts))
-    return value.real
+    extreme = (2 * c1) ** 8 * (_gen.sixbar_cramer(*(p[..., 3] for p in parts))
+                               * _gen.sixbar_cramer(*(p[..., 1] for p in parts)))
+    return np.where(limit, extreme.real, value.real)
 
 
 def _watt2(geo, P):
@@ -196,8 +206,26 @@ def _dixon(geo, P):
     M = np.stack([np.broadcast_to(x, P.shape[:1]) for x in entries], axis=-1).reshape(-1, 8, 8)
     value = np.linalg.det(M)
     if geo["kind"] == "watt1":           # the fixed pivot's factor |P x D|^4 (derivation, "Extraneous factors")
-        value = value / np.sum(np.cross(P, geo["D"]) ** 2, axis=-1) ** 2
+        pivot = np.sum(np.cross(P, geo["D"]) ** 2, axis=-1) ** 2
+        at_pivot = pivot == 0.0
+        value = value / np.where(at_pivot, 1.0, pivot)
+        if np.any(at_pivot):
+            value = np.where(at_pivot, _ring_limit(geo, geo["D"] * np.sign(P @ geo["D"])[..., None]), value)
     return value
+
+
+def _ring_limit(geo, P):
+    """Q at the pivot directions P = +-D (Watt-1, where the division is 0/0): the mean over
+    rings of arcs h and 2h about P, extrapolated (Richardson) to h = 0; error O(h**4)."""
+    h = 0.01
+    e1 = _unit(np.cross(P, np.where(np.abs(P[..., :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])))
+    e2 = np.cross(P, e1)
+    means = []
+    for arc in (h, 2 * h):
+        ring = [np.cos(arc) * P + np.sin(arc) * (np.cos(k * np.pi / 4) * e1 + np.sin(k * np.pi / 4) * e2)
+                for k in range(8)]
+        means.append(sum(_dixon(geo, q) for q in ring) / 8)
+    return (4 * means[0] - means[1]) / 3
 
 
 _EVALUATE = {"stephenson1": _stephenson1, "stephenson2": _dixon, "watt1": _dixon, "watt2": _watt2}
@@ -240,8 +268,10 @@ def sixbar_curve(linkage, points, *, cone=False):
     Derivation: :ref:`deriv-spherical-sixbar-curves`, eqs. (1)-(3). Nothing is expanded;
     a point costs a few hundred operations and, for two kinds, an 8 x 8 determinant. The
     value is zero (to rounding) where the curve is; no gradient is returned (difference
-    quotients serve). Near the pivots where a coefficient vanishes (P along the crank axis
-    for Stephenson-1, P = +-D for Watt-1) the value is ill-conditioned.
+    quotients serve). Near the directions where a coefficient vanishes the value loses
+    accuracy: P along the crank axis for Stephenson-1 (handled through its limit), and P
+    near +-D for Watt-1, where the Dixon determinant is divided by ``|P x D|**4`` (relative
+    error about 1e-16 / |P x D|**4; at +-D exactly, a ring mean extrapolated to the pivot).
 
     Examples
     --------
