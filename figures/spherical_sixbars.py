@@ -66,6 +66,8 @@ def implicit_map(ax, make, theta, values, lon, lat, *, title=None):
         P = pose.points["P"][pose.valid]
         ax.plot(np.degrees(np.arctan2(P[:, 1], P[:, 0])), np.degrees(np.arcsin(np.clip(P[:, 2], -1, 1))), ".",
                 color=colour, ms=1.5)
+    ax.set_xlim(np.degrees(lon.min()), np.degrees(lon.max()))
+    ax.set_ylim(np.degrees(lat.min()), np.degrees(lat.max()))
     ax.set_xlabel("longitude (deg)")
     ax.set_ylabel("latitude (deg)")
     if title:
