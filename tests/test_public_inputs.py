@@ -1630,6 +1630,11 @@ CASES.update({
 })
 
 
+CASES.update({
+    "spherical.sixbar_curve": E(lambda: sph.sixbar_curve, {"linkage": "instance", "points": "vec3", "cone": "bool"},
+                                linkage=_sx_watt2()[0], points=[[0.0, 0.6, 0.8]], cone=False),
+})
+
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():
     """Qualified names of every public function, class and public method of a public class."""

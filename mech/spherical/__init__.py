@@ -111,6 +111,8 @@ from mech.spherical.path import (
     path_fourbar,
     path_stephenson1,
     path_verify,
+    SIXBAR_CURVE_ORDERS,
+    sixbar_curve,
 )
 from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
 from mech.spherical.linkage import SphericalStephenson3, stephenson3
@@ -230,4 +232,6 @@ __all__ = [
     "path_fourbar",
     "path_stephenson1",
     "path_verify",
+    "SIXBAR_CURVE_ORDERS",
+    "sixbar_curve",
 ]
