@@ -243,6 +243,10 @@ def _target(target, closed):
     x = _sphere_curves(target, "target")
     if x.ndim != 2:
         raise ValueError(f"Expected one curve in `target`, got shape {x.shape}")
+    # a target of one point has no size to measure the error against; points that differ by a
+    # few units of rounding after scaling to the sphere are one point
+    if not np.max(np.linalg.norm(x - x[0], axis=1)) > 8.0 * np.finfo(float).eps:
+        raise ValueError(f"Expected `target` that are not all equal (on the unit sphere), got {_show(target)}")
     return x
 
 
