@@ -198,7 +198,7 @@ def circle_point_curve(R, *, samples=360, phi=None):
     Notes
     -----
     Eq. (8) of :ref:`deriv-spherical-guidance`. As the arcs shrink the curves tend to the
-    planar ones of `mech.planar.circle_point_curve` (tested).
+    planar ones of `mech.planar.synthesis.circle_point_curve` (tested).
 
     Examples
     --------
@@ -254,7 +254,7 @@ def slider_point_curve(R, *, samples=360, phi=None):
     Notes
     -----
     Eq. (7) of :ref:`deriv-spherical-guidance`. In the planar limit the cubic tends to the
-    slider-point circle of three poses (`mech.planar.slider_point_circle`).
+    slider-point circle of three poses (`mech.planar.synthesis.slider_point_circle`).
 
     Examples
     --------
@@ -343,7 +343,7 @@ def burmester(R, *, imag_tol=1e-6):
     directions and its coefficients taken by a discrete Fourier transform, exact for a form
     of degree 8. Near a double root (two Burmester points about to merge) the accuracy
     drops to about sqrt(machine epsilon), before polishing. The planar counterpart has at
-    most four solutions (`mech.planar.burmester`); as the arcs shrink four spherical
+    most four solutions (`mech.planar.synthesis.burmester`); as the arcs shrink four spherical
     solutions tend to the planar ones and the other two become complex.
 
     Examples

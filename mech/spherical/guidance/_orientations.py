@@ -142,7 +142,7 @@ def rotation_pole(R_1, R_j):
     Notes
     -----
     Eq. (3) of :ref:`deriv-spherical-guidance`. As the turns shrink to zero about points
-    near the north pole, the pole tends to the planar pole of `mech.planar.pole`.
+    near the north pole, the pole tends to the planar pole of `mech.planar.synthesis.pole`.
 
     Examples
     --------
