@@ -491,3 +491,12 @@ def test_crank_rocker_near_a_change_point_is_rejected_by_name():
     assert not mech.planar.grashof(*q.lengths).change_point
     check = q.check()
     assert abs(check.time_ratio - K) < 1e-8 and abs(check.output_range - swing) < 1e-8
+
+
+@pytest.mark.parametrize("lengths", [(1.0, 3.0, 2.0, 2.0), (0.06643943019070922, 0.06802770547188149, 1.0,
+                                                               0.9984117247188289)])
+def test_simulate_change_point_linkage_is_named(lengths):
+    """A change-point crank-rocker (s + l = p + q) made `simulate_quick_return` fail inside SciPy
+    ("f(a) and f(b) must have different signs"); the error now names `linkage`."""
+    with pytest.raises(ValueError, match=r"Expected `linkage` whose output repeats every crank turn.*change-point"):
+        simulate_quick_return(FourBar(*lengths))
