@@ -389,14 +389,8 @@ def burmester(R, *, imag_tol=1e-6):
     Pa = _axis_angle(K[a] * sizes[a])[0]
     Pb = _axis_angle(K[b] * sizes[b])[0]
     Pab = _axis_angle((np.eye(3) + K[a].T * sizes[a]) @ (K[b] * sizes[b] - K[a] * sizes[a]))[0]
-    e1, e2 = _basis(Pa)
-    phi = np.arange(16) * (np.pi / 16)
-    v = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
-    f1, f2, f3 = _cubic_on_circles([K[a], K[b], K[c]], Pa, v)
-    g1, g2, g3 = _cubic_on_circles([K[a], K[b], K[d]], Pa, v)
-    rho = (f1 * g3 - f3 * g1) ** 2 - (f1 * g2 - f2 * g1) * (f2 * g3 - f3 * g2)
-    spectrum = np.fft.fft(rho) / 16.0
-    coef = np.array([spectrum[m % 16] for m in range(-4, 5)])        # x^0 .. x^8, x = exp(2j phi)
+    Ma, Mb = [K[a], K[b], K[c]], [K[a], K[b], K[d]]
+    coef, e1, e2 = _pencil_resultant(Ma, Mb, Pa)                     # x^0 .. x^8, x = exp(2j phi)
     top = np.max(np.abs(coef))
     if not top > 0.0:
         raise ValueError("Expected five orientations with finitely many Burmester dyads, got `R` whose two "
@@ -412,14 +406,7 @@ def burmester(R, *, imag_tol=1e-6):
         if abs(abs(x) - 1.0) > imag_tol:
             n_complex += 1
             continue
-        ph = 0.5 * np.angle(x)
-        vv = np.cos(ph) * e1 + np.sin(ph) * e2
-        F = _cubic_on_circles([K[a], K[b], K[c]], Pa, vv[None])
-        G = _cubic_on_circles([K[a], K[b], K[d]], Pa, vv[None])
-        (h1,), (h2,), (h3,) = F
-        (k1,), (k2,), (k3,) = G
-        w = (h2 * k3 - h3 * k2) * Pa - (h1 * k3 - h3 * k1) * vv
-        w /= np.linalg.norm(w)
+        w = _common_point(Ma, Mb, Pa, e1, e2, x)
         u = _null(np.stack([Kj @ w for Kj in K]))
         u, w = _polish(K, u, w)
         worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
