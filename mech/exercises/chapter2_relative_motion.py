@@ -266,6 +266,14 @@ def _solve_2_16(p):
     D = complex(xd, yd)
     bd = abs(D - ab * np.exp(1j * phi))
     kind = grashof(ab, bc, cd, abs(D)).kind
+    # the note follows the lengths given: a variant may make the crank revolve
+    links = sorted((ab, bc, cd, abs(D)))
+    sums = f"shortest + longest = {links[0] + links[3]:.1f} mm against {links[1] + links[2]:.1f} mm for the other two"
+    if kind in ("crank-rocker", "double-crank"):
+        grashof_note = f"The four-bar is a {kind} ({sums}): the crank AB turns fully."
+    else:
+        grashof_note = (f"The four-bar is a {kind} ({sums}): the crank cannot turn fully, which does not "
+                        "matter for one instant but casts doubt on the reading of the lost figure.")
     assumptions = (
         f"A is the crank's fixed pivot at the origin, D = ({xd:g}, {yd:g}) mm the fixed pivot of the "
         "rocker CD; x to the right, y up. A-B-C-D is a four-bar: crank AB (1), coupler BC (2), rocker "
@@ -288,8 +296,7 @@ def _solve_2_16(p):
     ), ("Polygons: v_C = v_B + v_CB (v_C ⊥ DC); then the coincident points F5 and F3: "
         "v_F4 = v_F3 + v_F4F3 with v_F4 = v_F5 vertical and v_F4F3 along DC, and "
         "a_F4 = a_F3 + a^k_F4F3 + a^r_F4F3 with the Coriolis term 2 ω3 v_F4F3.",
-        f"The four-bar is a {kind} (AB + CD > AD + BC): the crank cannot turn fully, which does "
-        "not matter for one instant but casts doubt on the reading of the lost figure.",))
+        grashof_note,))
     return Solution("2-16", EXERCISE_2_16.title, dict(p), (), (part,), assumptions=assumptions)
 
 
