@@ -265,6 +265,16 @@ def _solve_2_16(p):
     how = "`Linkage.solve(-φ1, order=2, omega=-ω1)` of the assumed layout"
     D = complex(xd, yd)
     bd = abs(D - ab * np.exp(1j * phi))
+    # why clockwise: for the given lengths the counter-clockwise reading may or may not close
+    if bd < cd - bc:
+        ccw_note = (f"Measured counter-clockwise, B would be only {bd:.1f} mm from D, less than CD − BC = "
+                    f"{cd - bc:g} mm, and the loop could not close.")
+    elif bd > cd + bc:
+        ccw_note = (f"Measured counter-clockwise, B would be {bd:.1f} mm from D, more than CD + BC = "
+                    f"{cd + bc:g} mm, and the loop could not close.")
+    else:
+        ccw_note = (f"Measured counter-clockwise the loop would close too (BD = {bd:.1f} mm); the clockwise "
+                    "reading is kept because with the default lengths it is the only one that closes.")
     kind = grashof(ab, bc, cd, abs(D)).kind
     # the note follows the lengths given: a variant may make the crank revolve
     links = sorted((ab, bc, cd, abs(D)))
@@ -280,9 +290,7 @@ def _solve_2_16(p):
         "DC (3).",
         "Member 5 is a slider on the vertical guide x = x_F; its pin F carries a block (member 4) that "
         "slides along the rocker's line DC. No length ends at F, which is why F needs only x_F.",
-        "φ1 is measured from +x clockwise (B below AD), and the crank turns clockwise. Measured "
-        f"counter-clockwise, B would be only {bd:.1f} mm from D, less than CD − BC = {cd - bc:g} mm, and "
-        "the loop could not close.",
+        "φ1 is measured from +x clockwise (B below AD), and the crank turns clockwise. " + ccw_note,
         "C lies to the right of the line from B to D, so that F falls between D and C.",
     )
     v, a = complex(sol.velocities["F"]), complex(sol.accelerations["F"])

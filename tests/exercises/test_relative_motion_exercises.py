@@ -231,3 +231,16 @@ def test_exercise_2_16_grashof_note_matches_the_lengths(seed):
     assert ("the crank AB turns fully" in text) == revolves
     assert ("the crank cannot turn fully" in text) == (not revolves)
     assert f"{links[0] + links[3]:.1f} mm against {links[1] + links[2]:.1f} mm" in text
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_exercise_2_16_counter_clockwise_note_matches_the_lengths(seed):
+    """The assumptions said the counter-clockwise reading of φ1 leaves B too near D to close
+    the loop; for 198 of 300 sampled variants it closes. The sentence now follows BD."""
+    p = rm._sample_2_16(np.random.default_rng(seed))
+    text = " ".join(rm.EXERCISE_2_16.solve(p).assumptions)
+    bd = abs(complex(p["xD"], p["yD"]) - p["AB"] * np.exp(1j * math.radians(p["phi1"])))
+    closes = p["CD"] - p["BC"] <= bd <= p["CD"] + p["BC"]
+    assert ("the loop would close too" in text) == closes
+    assert ("the loop could not close" in text) == (not closes)
+    assert f"{bd:.1f} mm" in text
