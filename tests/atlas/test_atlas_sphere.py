@@ -219,3 +219,11 @@ def test_query_sphere_rejects_a_target_of_one_point(atlas, closed):
     # the same point given at other lengths (all scaled to the sphere) is one point too
     with pytest.raises(ValueError, match=r"Expected `target` that are not all equal"):
         query_sphere(atlas, np.array([[0.0, 0.6, 0.8], [0.0, 6.0, 8.0], [0.0, 0.3, 0.4]]), k=1)
+
+
+def test_build_sphere_atlas_with_no_usable_linkage_is_named():
+    """A min_transmission that no sample meets made a block with no linkage, and the build
+    failed in NumPy ('cannot reshape array of size 0'); now, as in the planar build, the
+    error names the design space after the blocks tried."""
+    with pytest.raises(ValueError, match=r"Expected `arcs`, `coupler_arc` and `min_transmission`.*none in"):
+        build_sphere_atlas(20, min_transmission=1.5, block=16)
