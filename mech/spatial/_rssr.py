@@ -312,7 +312,8 @@ class RSSR:
         rates of the rocker and its pin are NaN (the crank pin's stay finite). The
         formulas run on the lengths and offsets divided by a power of two near the
         largest (`mech._scaling`): angles do not depend on the unit of length, and points
-        and linear rates scale exactly with it.
+        and linear rates scale exactly with it. More than 16384 crank angles are solved in
+        blocks of that many, with the same results.
 
         Examples
         --------

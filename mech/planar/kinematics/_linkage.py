@@ -435,7 +435,9 @@ class Linkage:
 
         Notes
         -----
-        The modes through change points and the unit of length: see `Linkage`.
+        The modes through change points and the unit of length: see `Linkage`. More than
+        16384 poses are solved in blocks of that many, each while its temporaries stay in
+        the cache (`mech.planar.kinematics._linkage_blocks`), with the same results.
 
         Examples
         --------
