@@ -381,6 +381,8 @@ def ratios(rows):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="N = 10^3, 10^4, 1 round of 3 calls; nothing written")
+    parser.add_argument("--sizes", help="comma-separated N to measure again; their rows replace those "
+                        "of the last run (memory rows kept)")
     parser.add_argument("--worker", nargs=3, metavar=("METHOD", "N", "CALLS"), help=argparse.SUPPRESS)
     parser.add_argument("--memory", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
@@ -390,8 +392,14 @@ def main(argv=None):
     methods = list(METHODS)
     log = lambda s: print(s, flush=True)  # noqa: E731
     start = time.perf_counter()
+    previous = json.loads(OUTPUT.read_text()).get(KEY) if OUTPUT.exists() else None
     if args.quick:
         rows, mem = measure((10**3, 10**4), methods, 1, 3, log), []
+    elif args.sizes and previous:
+        sizes = tuple(int(float(x)) for x in args.sizes.split(","))
+        rows = [r for r in previous["rows"] if r["n"] not in sizes] + measure(sizes, methods, ROUNDS, CALLS, log)
+        rows.sort(key=lambda r: (r["n"], methods.index(r["method"])))
+        mem = previous["memory"]
     else:
         rows = measure(SIZES, methods, ROUNDS, CALLS, log)
         mem = memory(MEMORY_SIZES, methods, log)
