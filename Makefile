@@ -32,17 +32,19 @@ generate: $(STAMP)
 check-generated: $(STAMP)
 	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check
 
-## System packages of the browser test (tests/browser): Debian's chromium and a CJK font,
-## installed with apt-get only when missing (as root, or with password-less sudo).
-CHROME_DEBS := chromium fonts-noto-cjk
+## System packages of the browser test (tests/browser): Debian's chromium, a CJK font and
+## an OpenType math font for the MathML (Latin Modern Math), installed with apt-get only
+## when missing (as root, or with password-less sudo).
+CHROME_DEBS := chromium fonts-noto-cjk fonts-lmodern
 browser-deps:
-	@if command -v chromium >/dev/null && fc-list :lang=zh 2>/dev/null | grep -q .; then :; \
+	@if command -v chromium >/dev/null && fc-list :lang=zh 2>/dev/null | grep -q . \
+	    && fc-list 2>/dev/null | grep -q "Latin Modern Math"; then :; \
 	elif [ "$$(id -u)" = 0 ]; then \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $(CHROME_DEBS); \
 	elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then \
 	  sudo apt-get update && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y $(CHROME_DEBS); \
 	else \
-	  echo "browser-deps: chromium or a CJK font is missing and apt-get needs root;" \
+	  echo "browser-deps: chromium, a CJK font or the math font is missing and apt-get needs root;" \
 	       "the browser test will skip (and fail with MECH_BROWSER_TEST=required)"; \
 	fi
 

@@ -438,6 +438,9 @@ def main(argv=None):
         goal = "" if r["goal"] is None else f" (goal {r['goal']}: {'PASS' if r['pass'] else 'FAIL'})"
         log(f"{name:<34} {r['value']:8.2f}{goal}")
     if not args.quick:
+        # keep what other scripts store in the same file (bench_speed_linkage.py's "linkages")
+        previous = json.loads(OUTPUT.read_text()) if OUTPUT.exists() else {}
+        result.update({k: v for k, v in previous.items() if k not in result})
         OUTPUT.write_text(json.dumps(result, indent=1) + "\n")
         log(f"wrote {OUTPUT}")
     return 0

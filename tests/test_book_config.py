@@ -117,10 +117,16 @@ def test_config_no_mathjax_path_or_intersphinx():
     assert "sphinx.ext.intersphinx" not in extensions
 
 
-def test_config_mathjax_offline_extension():
-    extensions = _config()["sphinx"]["extra_extensions"]
-    # With underscores the package fails to import (STYLE.md): the hyphenated name is required.
-    assert "sphinx-mathjax-offline" in extensions
+def test_config_math_is_mathml_written_at_build_time():
+    """No MathJax (1.2 MB on every page, issue 17): book/_ext/mathml.py writes MathML."""
+    sphinx = _config()["sphinx"]
+    assert "sphinx-mathjax-offline" not in (sphinx.get("extra_extensions") or [])
+    assert sphinx["local_extensions"]["mathml"] == "_ext/"
+    assert sphinx["config"]["html_math_renderer"] == "mathml"
+
+
+def test_config_page_weight_extension():
+    assert _config()["sphinx"]["local_extensions"]["page_weight"] == "_ext/"
 
 
 def test_config_launch_buttons_off():

@@ -684,8 +684,10 @@ CASES = {
                                         points=[[0.0, 0.6, 0.8]]),
     "spherical.CouplerOctic.lonlat": E(lambda: _sfb().coupler_curve_polynomial().lonlat, {"lon": "real", "lat": "real"},
                                        lon=0.3, lat=[0.2, 0.4]),
-    "spherical.coupler_octic": E(lambda: sph.coupler_octic, {"linkage": "vec3", "points": "vec3"},
-                                 linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
+    "spherical.coupler_octic": E(lambda: sph.coupler_octic, {"linkage": "vec3", "points": "vec3", "form": "option",
+                                                             "small": "scalar"},
+                                 linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]],
+                                 form="auto", small=0.1),
     "spherical.coupler_quartic": E(lambda: sph.coupler_quartic, {"linkage": "vec3", "points": "vec3"},
                                    linkage=[0.1, 0.2, 0.3, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], points=[[0.0, 0.6, 0.8]]),
     "spherical.path_fourbar": E(lambda: sph.path_fourbar,
@@ -695,9 +697,10 @@ CASES = {
                                 metric="arc", branch=1, tol=1e-3),
     "spherical.path_stephenson1": E(lambda: sph.path_stephenson1,
                                     {"points": "vec3", "theta": "real", "start": "vec3", "metric": "option",
-                                     "branches": ("branch", first), "tol": "tolerance"},
+                                     "branches": ("branch", first), "tol": "tolerance",
+                                     "min_transmission": "scalar?"},
                                     points=_SPH_PATH6[0], theta=_SPH_PATH6[1], start=_SPH_PATH6[2], metric="chord",
-                                    branches=(1, 1), tol=1e-3),
+                                    branches=(1, 1), tol=1e-3, min_transmission=0.5),
     "spherical.path_verify": E(lambda: sph.path_verify,
                                {"linkage": "instance", "points": "vec3", "theta": "real", "tol": "tolerance"},
                                linkage=_sfb(), points=_SPH_PATH[0], theta=_SPH_PATH[1], tol=1e-3),
@@ -1535,17 +1538,16 @@ def _sx_watt2():
 
 
 def _sx_nine():
-    lk, _ = _sx_watt2()
-    theta = np.linspace(0.2, 2.6, 6)
-    R = sph.sixbar_orientations(lk, theta)
-    R[3] = R[3] @ np.array([[1, 0, 0], [0, np.cos(0.01), -np.sin(0.01)], [0, np.sin(0.01), np.cos(0.01)]])
-    return R, theta
+    # five exact orientations: the optimiser, started from an exact design clear of its
+    # dead points, stops at once (a search through noisy orientations takes seconds, and the
+    # walk calls it at many values)
+    lk, theta = _sx_watt2()
+    return sph.sixbar_orientations(lk, theta), theta
 
 
 def _sx_start():
     R, theta = _sx_nine()
-    five = [0, 1, 2, 4, 5]
-    return [d for d in sph.guidance_watt2(R[five], theta[five], [0.3, -0.2, 0.93], sweep=41) if d.passes][0]
+    return [d for d in sph.guidance_watt2(R, theta, [0.3, -0.2, 0.93], sweep=41) if d.passes][1]
 
 
 CASES.update({
@@ -1569,6 +1571,69 @@ CASES.update({
         {"theta": "real"}, theta=[0.2, 0.5]),
 })
 
+
+def _sx_watt1():
+    lk = sph.watt1(0.3, 0.9, 0.7, 1.0, E=(0.5, 0.6), F=(0.4, 0.9), arcs=(0.7, 0.8), coupler=(0.3, 0.4))
+    theta = np.array([0.0, 0.3, 0.6, 0.9, 1.2])
+    return sph.sixbar_orientations(lk, theta), theta
+
+
+_SX_EXACT = {"R": "matrix", "theta": "real", "crank_pivot": "real", "circle_points": "real?", "along": "real",
+             "rtol": "scalar", "sweep": "count"}
+CASES.update({
+    f"spherical.{name}": E((lambda name=name: getattr(sph, name)), _SX_EXACT, R=_sx_watt1()[0], theta=_sx_watt1()[1],
+                           crank_pivot=[0.0, 0.0, 1.0], circle_points=None, along=(1.0, 1.0, 1.0), rtol=1e-9, sweep=41)
+    for name in ("guidance_stephenson1", "guidance_stephenson2", "guidance_watt1")
+})
+RECORDS["spherical.SphericalExactSixBar"] = "result record built by the package"
+CASES["spherical.SphericalExactSixBar.guided_orientations"] = E(
+    lambda: sph.guidance_watt1(*_sx_watt1(), [0.0, 0.0, 1.0], sweep=41)[0].guided_orientations,
+    {"theta": "real"}, theta=[0.2, 0.5])
+
+
+def _s3():
+    return sph.stephenson3(0.35, 0.9, 0.8, 1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6),
+                           coupler=(0.3, 0.4), mu=0.8)
+
+
+def _s3_task():
+    theta = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
+    return _s3().orientations(theta), theta
+
+
+RECORDS["spherical.SphericalGuidanceStephenson3"] = "result record built by the package"
+CASES.update({
+    "spherical.stephenson3": E(lambda: sph.stephenson3,
+                               {**_ABCD, "E": ("scalar", first), "arcs": ("scalar", first), "H": ("scalar", first),
+                                "coupler": ("scalar", first), "mu": "scalar", "branch": "branch", "frame": "matrix?"},
+                               a=0.35, b=0.9, c=0.8, d=1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6),
+                               coupler=(0.3, 0.4), mu=0.8, branch=1, frame=np.eye(3)),
+    "spherical.SphericalStephenson3": E(lambda: sph.SphericalStephenson3,
+                                        {"points": ("vec3", lambda v: {**_s3().assembly, "C": v}, "points['C']"),
+                                         "coupler": "vec3?"},
+                                        points=_s3().assembly, coupler=None),
+    "spherical.SphericalStephenson3.rotations": E(lambda: _s3().rotations, {"theta": "real"}, theta=[0.0, 0.5]),
+    "spherical.SphericalStephenson3.orientations": E(lambda: _s3().orientations, {"theta": "real"},
+                                                     theta=[0.0, 0.5]),
+    "spherical.SphericalStephenson3.solve": E(lambda: _s3().solve, {"theta": "real", "strict": "bool"},
+                                              theta=[0.0, 0.5], strict=False),
+    "spherical.SphericalStephenson3.closure": E(lambda: _s3().closure, {"pose": "instance"},
+                                                pose=_s3().solve([0.0, 0.5])),
+    "spherical.guidance_stephenson3": E(lambda: sph.guidance_stephenson3,
+                                        {"R": "matrix", "theta": "real", "crank_pivot": "real", "subset": "int?",
+                                         "rtol": "scalar"},
+                                        R=_s3_task()[0], theta=_s3_task()[1], crank_pivot=[0.0, 0.0, 1.0],
+                                        subset=None, rtol=1e-9),
+    "spherical.SphericalGuidanceStephenson3.guided_orientations": E(
+        lambda: sph.guidance_stephenson3(*_s3_task(), [0.0, 0.0, 1.0])[0].guided_orientations,
+        {"theta": "real"}, theta=[0.2, 0.5]),
+})
+
+
+CASES.update({
+    "spherical.sixbar_curve": E(lambda: sph.sixbar_curve, {"linkage": "instance", "points": "vec3", "cone": "bool"},
+                                linkage=_sx_watt2()[0], points=[[0.0, 0.6, 0.8]], cone=False),
+})
 
 # ----------------------------------------------------------------------------- the walk
 def _public_callables():

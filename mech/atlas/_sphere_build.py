@@ -41,6 +41,8 @@ def build_sphere_block(seed, index, block, harmonics, samples, arcs, coupler_arc
     drawn = sample_sphere_fourbars(block, seed=block_seed(seed, index), arcs=arcs, coupler_arc=coupler_arc,
                                    min_transmission=min_transmission)
     good = drawn.take(drawn.usable)
+    if len(good) == 0:      # a block with nothing usable (a strict min_transmission): no curves to draw
+        return good.columns(), np.empty((0, 3 * (harmonics + 1)))
     sig = sphere_signatures_of(good, harmonics, samples)
     finite = np.all(np.isfinite(sig), axis=1)
     return good.take(finite).columns(), sig[finite]

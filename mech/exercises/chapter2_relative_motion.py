@@ -265,16 +265,32 @@ def _solve_2_16(p):
     how = "`Linkage.solve(-φ1, order=2, omega=-ω1)` of the assumed layout"
     D = complex(xd, yd)
     bd = abs(D - ab * np.exp(1j * phi))
+    # why clockwise: for the given lengths the counter-clockwise reading may or may not close
+    if bd < cd - bc:
+        ccw_note = (f"Measured counter-clockwise, B would be only {bd:.1f} mm from D, less than CD − BC = "
+                    f"{cd - bc:g} mm, and the loop could not close.")
+    elif bd > cd + bc:
+        ccw_note = (f"Measured counter-clockwise, B would be {bd:.1f} mm from D, more than CD + BC = "
+                    f"{cd + bc:g} mm, and the loop could not close.")
+    else:
+        ccw_note = (f"Measured counter-clockwise the loop would close too (BD = {bd:.1f} mm); the clockwise "
+                    "reading is kept because with the default lengths it is the only one that closes.")
     kind = grashof(ab, bc, cd, abs(D)).kind
+    # the note follows the lengths given: a variant may make the crank revolve
+    links = sorted((ab, bc, cd, abs(D)))
+    sums = f"shortest + longest = {links[0] + links[3]:.1f} mm against {links[1] + links[2]:.1f} mm for the other two"
+    if kind in ("crank-rocker", "double-crank"):
+        grashof_note = f"The four-bar is a {kind} ({sums}): the crank AB turns fully."
+    else:
+        grashof_note = (f"The four-bar is a {kind} ({sums}): the crank cannot turn fully, which does not "
+                        "matter for one instant but casts doubt on the reading of the lost figure.")
     assumptions = (
         f"A is the crank's fixed pivot at the origin, D = ({xd:g}, {yd:g}) mm the fixed pivot of the "
         "rocker CD; x to the right, y up. A-B-C-D is a four-bar: crank AB (1), coupler BC (2), rocker "
         "DC (3).",
         "Member 5 is a slider on the vertical guide x = x_F; its pin F carries a block (member 4) that "
         "slides along the rocker's line DC. No length ends at F, which is why F needs only x_F.",
-        "φ1 is measured from +x clockwise (B below AD), and the crank turns clockwise. Measured "
-        f"counter-clockwise, B would be only {bd:.1f} mm from D, less than CD − BC = {cd - bc:g} mm, and "
-        "the loop could not close.",
+        "φ1 is measured from +x clockwise (B below AD), and the crank turns clockwise. " + ccw_note,
         "C lies to the right of the line from B to D, so that F falls between D and C.",
     )
     v, a = complex(sol.velocities["F"]), complex(sol.accelerations["F"])
@@ -288,8 +304,7 @@ def _solve_2_16(p):
     ), ("Polygons: v_C = v_B + v_CB (v_C ⊥ DC); then the coincident points F5 and F3: "
         "v_F4 = v_F3 + v_F4F3 with v_F4 = v_F5 vertical and v_F4F3 along DC, and "
         "a_F4 = a_F3 + a^k_F4F3 + a^r_F4F3 with the Coriolis term 2 ω3 v_F4F3.",
-        f"The four-bar is a {kind} (AB + CD > AD + BC): the crank cannot turn fully, which does "
-        "not matter for one instant but casts doubt on the reading of the lost figure.",))
+        grashof_note,))
     return Solution("2-16", EXERCISE_2_16.title, dict(p), (), (part,), assumptions=assumptions)
 
 

@@ -11,7 +11,7 @@ from mech._validate import (
     bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_number, positive_length, real_number,
     real_tuple,
 )
-from mech._pose import mask_singular_rates, Pose
+from mech._pose import _keep_promise, mask_singular_rates, Pose
 from mech._scaling import DEAD_POINT_RTOL, length_scale
 from mech.spatial._rssr_change import change_points
 
@@ -24,6 +24,10 @@ _MIN_L1_L3 = 2.0 ** -500
 # fields that scale with the unit of length, and the rates found from the loop equation
 _LINEAR = frozenset({"B", "C", "P", "vB", "vC", "aB", "aC"})
 _SOLVED_RATES = ("omega_output", "vC", "alpha_output", "aC")
+#: Crank angles per block of a large solve: the block's temporaries (a few dozen arrays of
+#: this length) stay in cache, and Python's cost per block vanishes (measured with
+#: benchmarks/bench_speed_linkage.py).
+_BLOCK = 16384
 
 
 def _stack(*components):
@@ -308,7 +312,8 @@ class RSSR:
         rates of the rocker and its pin are NaN (the crank pin's stay finite). The
         formulas run on the lengths and offsets divided by a power of two near the
         largest (`mech._scaling`): angles do not depend on the unit of length, and points
-        and linear rates scale exactly with it.
+        and linear rates scale exactly with it. More than 16384 crank angles are solved in
+        blocks of that many, with the same results.
 
         Examples
         --------
@@ -319,6 +324,29 @@ class RSSR:
         """
         strict = bool_flag("strict", strict)
         order, shape, (phi01, *rates) = motion_inputs("phi01", phi01, order, omega, alpha)
+        if phi01.size <= _BLOCK:
+            return RSSRPose(order, self._solve_fields(phi01, rates, order, strict))
+        # cache-sized blocks, each solved and checked whole, copied into outputs allocated
+        # once: no temporary outlives its block (every result depends on its own input only)
+        flat = [x.reshape(-1) for x in (phi01, *rates)]
+        size, out, masked = phi01.size, {}, False
+        for start in range(0, size, _BLOCK):
+            part = slice(start, start + _BLOCK)
+            fields = _keep_promise(self._solve_fields(flat[0][part], [x[part] for x in flat[1:]], order, strict))
+            del fields["phi01"]
+            masked = masked or "assembled" in fields
+            fields.setdefault("assembled", fields["valid"])
+            for name, value in fields.items():
+                if name not in out:
+                    out[name] = np.empty((size,) + value.shape[1:], dtype=value.dtype)
+                out[name][part] = value
+        if not masked:
+            del out["assembled"]            # equal to `valid`, as one solve over all inputs reports it
+        fields = {"phi01": phi01[()], **{name: value.reshape(shape + value.shape[1:]) for name, value in out.items()}}
+        return RSSRPose(order, fields, finite=True)
+
+    def _solve_fields(self, phi01, rates, order, strict):
+        """The fields of `solve` at crank angles `phi01` (any shape), rates and masks done."""
         l1, l2, l3, s0, s3, h0, lam = dims = self._dims()
         sigma = self._branch
         if self._change is not None:
@@ -379,7 +407,7 @@ class RSSR:
                 fields[name] = fields[name] * self._scale
         if order >= 1:
             mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
-        return RSSRPose(order, fields)
+        return fields
 
     def assembly_range(self):
         """The crank angles where the linkage assembles, and its limit positions.

@@ -85,6 +85,12 @@ from mech.spherical.guidance import (
     sixbar_orientations,
     SphericalOptimalSixBar,
     optimal_guidance_watt2,
+    SphericalGuidanceStephenson3,
+    guidance_stephenson3,
+    SphericalExactSixBar,
+    guidance_stephenson1,
+    guidance_stephenson2,
+    guidance_watt1,
     guidance_slider_crank,
     optimal_guidance,
     planar_orientations,
@@ -105,8 +111,11 @@ from mech.spherical.path import (
     path_fourbar,
     path_stephenson1,
     path_verify,
+    SIXBAR_CURVE_ORDERS,
+    sixbar_curve,
 )
 from mech.spherical.linkage import SphericalLinkage, SphericalLinkagePose, stephenson1, stephenson2, watt1, watt2
+from mech.spherical.linkage import SphericalStephenson3, stephenson3
 from mech.spherical._transference import dual_fourbar_joints, dual_fourbar_output, rssr_from_transference
 from mech.spherical._types import SphericalType, antipode_reduction, classify, inversions
 
@@ -141,6 +150,12 @@ __all__ = [
     "sixbar_orientations",
     "SphericalOptimalSixBar",
     "optimal_guidance_watt2",
+    "SphericalGuidanceStephenson3",
+    "guidance_stephenson3",
+    "SphericalExactSixBar",
+    "guidance_stephenson1",
+    "guidance_stephenson2",
+    "guidance_watt1",
     "guidance_slider_crank",
     "optimal_guidance",
     "planar_orientations",
@@ -211,8 +226,12 @@ __all__ = [
     "stephenson2",
     "watt1",
     "watt2",
+    "stephenson3",
+    "SphericalStephenson3",
     "SphericalPathDesign",
     "path_fourbar",
     "path_stephenson1",
     "path_verify",
+    "SIXBAR_CURVE_ORDERS",
+    "sixbar_curve",
 ]

@@ -208,3 +208,22 @@ def test_rotation_spectrum_needs_no_frame():
     x = _curve(rng, 256)
     direct = np.linalg.norm(np.fft.rfft(x @ _rotation(rng).T, axis=0)[:9], axis=1) / 256
     assert np.max(np.abs(spectra(sphere_signature(x, resampled=True)) - direct)) < 1e-12
+
+
+@pytest.mark.parametrize("closed", [True, False])
+def test_query_sphere_rejects_a_target_of_one_point(atlas, closed):
+    """A target whose points are all one point has no size: the relative error was inf (with
+    a divide-by-zero warning) instead of an error naming `target`."""
+    with pytest.raises(ValueError, match=r"Expected `target` that are not all equal"):
+        query_sphere(atlas, np.tile([0.0, 0.6, 0.8], (10, 1)), closed=closed, k=1, starts=4)
+    # the same point given at other lengths (all scaled to the sphere) is one point too
+    with pytest.raises(ValueError, match=r"Expected `target` that are not all equal"):
+        query_sphere(atlas, np.array([[0.0, 0.6, 0.8], [0.0, 6.0, 8.0], [0.0, 0.3, 0.4]]), k=1)
+
+
+def test_build_sphere_atlas_with_no_usable_linkage_is_named():
+    """A min_transmission that no sample meets made a block with no linkage, and the build
+    failed in NumPy ('cannot reshape array of size 0'); now, as in the planar build, the
+    error names the design space after the blocks tried."""
+    with pytest.raises(ValueError, match=r"Expected `arcs`, `coupler_arc` and `min_transmission`.*none in"):
+        build_sphere_atlas(20, min_transmission=1.5, block=16)

@@ -7,8 +7,13 @@ page :func:`check_pages` returns a list of problems (empty when the page is good
   asked for and did not get (HTTP status 400 or more);
 - a request for anything that is not on the local server (it is blocked, then reported);
 - an ``<img>`` that did not load (``naturalWidth == 0``), or a ``<figure>`` with nothing to show;
-- math that MathJax did not typeset: a ``.math`` element without its ``mjx-container``, a
-  MathJax error box, or raw ``$...$``, ``\\(``, ``\\[`` left in the visible text;
+- math that was not typeset: a ``.math`` element without its MathML ``<math>`` (the book
+  writes MathML at build time, ``book/_ext/mathml.py``), a ``<math>`` with no size, an
+  ``merror``, TeX left inside the MathML, or raw ``$...$``, ``\\(``, ``\\[`` in the visible text;
+- an icon that was not drawn: an ``<i class="fa-solid fa-...">`` (or span) left in the page, or an icon SVG
+  (``svg.svg-inline--fa``) without an outline or, where it is shown, without a size;
+- a page heavier than the budget (``page_budget``, 2 MB): the bytes Chromium received for
+  the page and everything it loaded, on a cold visit (see ``PAGE_CHECKS``);
 - a Chinese character drawn as a missing glyph (tofu): each distinct Han character of the
   page is drawn on a canvas in the font of the element that holds it and compared pixel by
   pixel with a code point that no font has (U+10FFFD); equal bitmaps, or no ink, is tofu;
@@ -17,12 +22,19 @@ page :func:`check_pages` returns a list of problems (empty when the page is good
   that does not turn when dragged (the contract of issue 17).
 
 A screenshot of each page (JPEG, the whole page) goes to ``screenshot_dir``.
+
+The local server compresses text files with gzip (level 9) when the browser accepts it, as
+a static host does (GitHub Pages, or nginx's ``gzip_static`` with pre-compressed files),
+so the transfer sizes measured here are what a reader's browser receives. Each page is
+loaded in a new browser context, with an empty cache: a cold first visit.
 Playwright drives the operating system's Chromium (``executable_path``); it never
 downloads a browser.
 """
 
 import asyncio
 import functools
+import gzip
+import io
 import re
 import http.server
 import os
@@ -35,6 +47,10 @@ from pathlib import Path
 
 SKIP_DIRS = {"_static", "_sources", "_images", "_sphinx_design_static", "_downloads"}
 PAGE_TIMEOUT = 150  # seconds for one page: load, checks and screenshot
+PAGE_BUDGET = 2_000_000  # bytes received for any one page on a cold visit (issue 17)
+MEDIAN_BUDGET = 500_000  # ... and for the median page
+# Files the server compresses (the others are compressed already: PNG, JPEG, WOFF2).
+COMPRESSIBLE = {".html", ".js", ".css", ".svg", ".json", ".txt", ".xml", ".map", ".ipynb", ".ttf", ".otf", ".ico"}
 MISSING = "\U0010FFFD"  # a private-use code point that no installed font draws
 
 # Waits for MathJax, loads lazy images, then checks images, figures, math and Han glyphs.
@@ -67,14 +83,38 @@ async () => {
       problems.push(`figure with nothing to show: ${(fig.id || fig.textContent).slice(0, 60)}`);
     }
   }
-  // Math.
+  // Math: every .math holds MathML that the browser lays out, with no TeX left in it.
   for (const m of document.querySelectorAll('.math')) {
-    if (!m.querySelector('mjx-container') && !m.closest('mjx-container')) {
+    if (!m.querySelector('math')) {
       problems.push(`math not typeset: ${m.textContent.trim().slice(0, 80)}`);
     }
   }
-  for (const e of document.querySelectorAll('mjx-merror')) {
-    problems.push(`MathJax error: ${(e.getAttribute('data-mjx-error') || e.textContent).slice(0, 80)}`);
+  const maths = [...document.querySelectorAll('math')];
+  for (const m of maths) {
+    const r = m.getBoundingClientRect();
+    if (m.getClientRects().length && (r.width === 0 || r.height === 0)) {
+      problems.push(`math with no size: ${m.textContent.trim().slice(0, 80)}`);
+    }
+    if (/\\[A-Za-z]/.test(m.textContent)) problems.push(`TeX left in MathML: ${m.textContent.trim().slice(0, 80)}`);
+  }
+  for (const e of document.querySelectorAll('merror, mjx-merror')) {
+    problems.push(`math error: ${(e.getAttribute('data-mjx-error') || e.textContent).slice(0, 80)}`);
+  }
+  // Icons (Font Awesome): each <i class="fa-solid fa-..."> (or span) must have become an SVG
+  // with an outline.
+  const FA = ['fa', 'fas', 'far', 'fab', 'fa-solid', 'fa-regular', 'fa-brands'].map((c) => `.${c}:not(svg)`).join(',');
+  for (const i of document.querySelectorAll(FA)) {
+    problems.push(`icon not drawn: <${i.localName} class="${i.className}">`);
+  }
+  const icons = [...document.querySelectorAll('svg.svg-inline--fa')];
+  for (const svg of icons) {
+    const path = svg.querySelector('path');
+    const r = svg.getBoundingClientRect();
+    if (!path || !(path.getAttribute('d') || '').length) {
+      problems.push(`icon without an outline: ${svg.getAttribute('class')}`);
+    } else if (svg.getClientRects().length && (r.width === 0 || r.height === 0)) {
+      problems.push(`icon with no size: ${svg.getAttribute('class')}`);
+    }
   }
   const SKIP = 'script, style, pre, code, textarea, kbd, mjx-container, .highlight, noscript, template';
   const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
@@ -108,18 +148,28 @@ async () => {
     hanChecked += chars.size;
     if (bad.length) problems.push(`Chinese characters drawn as missing glyphs in ${font}: ${bad.join('')}`);
   }
-  // Page weight: the page and every file it loaded, as sent (before any cache).
+  // Page weight of this cold visit (an empty cache), over the page and every file it loaded
+  // (lazy images included: they were loaded above): bytesTransfer is what Chromium received
+  // (compressed bodies and response headers; the budget), bytes the compressed bodies,
+  // bytesDecoded the files' own sizes (uncompressed).
+  await document.fonts.ready;
   const entries = [...performance.getEntriesByType('navigation'), ...performance.getEntriesByType('resource')];
-  const bytes = entries.reduce((sum, e) => sum + (e.encodedBodySize || 0), 0);
-  // ... and without the theme, MathJax and other files under _static/ that all pages share.
-  const ownBytes = entries.filter((e) => !e.name.includes('/_static/'))
-    .reduce((sum, e) => sum + (e.encodedBodySize || 0), 0);
-  return {problems, hanChecked, bytes, ownBytes, images: imgs.length, math: document.querySelectorAll('mjx-container').length};
+  const total = (list, key) => list.reduce((sum, e) => sum + (e[key] || 0), 0);
+  // ... and without the theme's and the other files under _static/ that all pages share.
+  const own = entries.filter((e) => !e.name.includes('/_static/'));
+  const files = Object.fromEntries(entries.map((e) => [e.name.replace(location.origin + '/', ''),
+    [e.transferSize || 0, e.decodedBodySize || 0]]));
+  return {problems, hanChecked, bytes: total(entries, 'encodedBodySize'), bytesDecoded: total(entries, 'decodedBodySize'),
+          bytesTransfer: total(entries, 'transferSize'), ownBytes: total(own, 'encodedBodySize'),
+          ownBytesDecoded: total(own, 'decodedBodySize'), files, images: imgs.length, math: maths.length,
+          icons: icons.length};
 }
 """
 
-# Installed in every page before its scripts run: the tofu test on a canvas.
+# Installed in every page before its scripts run: the tofu test on a canvas (and a resource
+# timing buffer that keeps every entry: the default holds 250, too few for the page weight).
 INIT_SCRIPT = r"""
+performance.setResourceTimingBufferSize(100000);
 window.__mechTofu = (chars, font) => {
   const W = 64, H = 64;
   const canvas = document.createElement('canvas');
@@ -174,8 +224,32 @@ def built_pages(root):
 
 
 class _Quiet(http.server.SimpleHTTPRequestHandler):
+    """A static server that sends text files gzip-compressed when the browser accepts it."""
+
+    _cache = {}
+
     def log_message(self, *args):
         pass
+
+    def send_head(self):
+        path = self.translate_path(self.path)
+        accepts = "gzip" in self.headers.get("Accept-Encoding", "")
+        if not accepts or not os.path.isfile(path) or Path(path).suffix.lower() not in COMPRESSIBLE:
+            return super().send_head()
+        stat = os.stat(path)
+        key = (path, stat.st_mtime_ns, stat.st_size)
+        body = self._cache.get(key)
+        if body is None:
+            # mtime=0: the same bytes every time, as a pre-compressed file would be
+            body = self._cache[key] = gzip.compress(Path(path).read_bytes(), compresslevel=9, mtime=0)
+        self.send_response(200)
+        self.send_header("Content-Type", self.guess_type(path))
+        self.send_header("Content-Encoding", "gzip")
+        self.send_header("Vary", "Accept-Encoding")
+        self.send_header("Content-Length", str(len(body)))
+        self.send_header("Last-Modified", self.date_time_string(stat.st_mtime))
+        self.end_headers()
+        return io.BytesIO(body)
 
 
 @contextmanager
@@ -275,7 +349,10 @@ def _redirect_target(root, rel):
     return None
 
 
-async def _check_one(context, base, rel, screenshot_dir):
+async def _check_one(browser, base, rel, screenshot_dir, page_budget):
+    # A new context for each page: an empty cache, so the page weight is a cold first visit.
+    context = await browser.new_context(viewport={"width": 1280, "height": 900}, service_workers="block")
+    await context.add_init_script(INIT_SCRIPT)
     page = await context.new_page()
     problems, seen_outside = [], []
     def console(message):
@@ -300,6 +377,11 @@ async def _check_one(context, base, rel, screenshot_dir):
             await page.wait_for_load_state("load")
             info = await page.evaluate(PAGE_CHECKS)
         problems.extend(info.pop("problems"))
+        if page_budget is not None and info["bytesTransfer"] > page_budget:
+            heavy = sorted(info["files"].items(), key=lambda kv: -kv[1][0])[:3]
+            problems.append(f"page weight {info['bytesTransfer'] / 1e3:.0f} kB received, over the budget of "
+                            f"{page_budget / 1e3:.0f} kB; largest: "
+                            + ", ".join(f"{name} {sizes[0] / 1e3:.0f} kB" for name, sizes in heavy))
         info["animations"] = await _check_animations(page, problems)
         info["views3d"] = await _check_views(page, problems)
         if screenshot_dir is not None:
@@ -309,11 +391,12 @@ async def _check_one(context, base, rel, screenshot_dir):
         problems.append(f"page failed: {type(exc).__name__}: {exc}".splitlines()[0])
     finally:
         await page.close()
+        await context.close()
     problems.extend(f"request leaves the machine (blocked): {url}" for url in dict.fromkeys(seen_outside))
     return rel, problems, info
 
 
-async def _check_all(root, pages, screenshot_dir, tabs, executable, page_timeout):
+async def _check_all(root, pages, screenshot_dir, tabs, executable, page_timeout, page_budget):
     from playwright.async_api import async_playwright
 
     results = {}
@@ -324,8 +407,6 @@ async def _check_all(root, pages, screenshot_dir, tabs, executable, page_timeout
             browser = await pw.chromium.launch(
                 executable_path=executable, headless=True,
                 proxy={"server": "http://127.0.0.1:9", "bypass": "127.0.0.1"})
-            context = await browser.new_context(viewport={"width": 1280, "height": 900}, service_workers="block")
-            await context.add_init_script(INIT_SCRIPT)
             gate = asyncio.Semaphore(tabs)
 
             async def one(rel):
@@ -339,7 +420,7 @@ async def _check_all(root, pages, screenshot_dir, tabs, executable, page_timeout
                         return
                     try:
                         _, problems, info = await asyncio.wait_for(
-                            _check_one(context, base, rel, screenshot_dir), timeout=page_timeout)
+                            _check_one(browser, base, rel, screenshot_dir, page_budget), timeout=page_timeout)
                     except asyncio.TimeoutError:
                         problems, info = [f"page not checked within {page_timeout} s"], {}
                     info["seconds"] = round(time.perf_counter() - t0, 2)
@@ -350,12 +431,16 @@ async def _check_all(root, pages, screenshot_dir, tabs, executable, page_timeout
     return results
 
 
-def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=None, page_timeout=PAGE_TIMEOUT):
+def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=None, page_timeout=PAGE_TIMEOUT,
+                page_budget=PAGE_BUDGET):
     """Check ``pages`` (relative paths; default: all) of the build at ``root``.
 
     Returns ``{page: (problems, info)}``: a list of strings, and counts (images, typeset
-    formulas, Han characters checked, bytes loaded by the page with and without the
-    shared files of ``_static/``, animations and 3-D views exercised, seconds).
+    formulas, icons, Han characters checked, the page weight of a cold visit: bytes
+    received ``bytesTransfer``, compressed bodies ``bytes``, uncompressed ``bytesDecoded``,
+    the same without the shared files of ``_static/``, and each file's ``[received,
+    uncompressed]`` bytes in ``files``; animations and 3-D views exercised, seconds).
+    A page that received more than ``page_budget`` bytes (None: no limit) has a problem.
     """
     root = Path(root)
     pages = built_pages(root) if pages is None else list(pages)
@@ -364,4 +449,70 @@ def check_pages(root, pages=None, *, screenshot_dir=None, tabs=3, executable=Non
     executable = executable or chromium_path()
     if executable is None:
         raise RuntimeError("no Chromium found (install the package `chromium`)")
-    return asyncio.run(_check_all(root, pages, screenshot_dir, tabs, executable, page_timeout))
+    return asyncio.run(_check_all(root, pages, screenshot_dir, tabs, executable, page_timeout, page_budget))
+
+
+def weight_summary(results):
+    """Median and maximum page weight over the checked pages (redirect pages left out).
+
+    ``{"pages": n, "received": {...}, "compressed": {...}, "uncompressed": {...}}`` with
+    ``median`` and ``max`` in bytes (``received``: what Chromium received on a cold visit,
+    the budget's measure; ``uncompressed``: the files' own sizes), and ``heaviest``.
+    """
+    infos = {page: info for page, (_, info) in results.items() if "redirect" not in info and "bytesTransfer" in info}
+    def spread(key):
+        values = sorted(info[key] for info in infos.values())
+        if not values:
+            return {}
+        n = len(values)
+        median = values[n // 2] if n % 2 else (values[n // 2 - 1] + values[n // 2]) / 2
+        return {"median": median, "max": values[-1]}
+    heaviest = max(infos, key=lambda page: infos[page]["bytesTransfer"]) if infos else None
+    return {"pages": len(infos), "received": spread("bytesTransfer"), "compressed": spread("bytes"),
+            "uncompressed": spread("bytesDecoded"), "heaviest": heaviest}
+
+
+def budget_problems(summary, page_budget=PAGE_BUDGET, median_budget=MEDIAN_BUDGET):
+    """What breaks the page-weight budget in a :func:`weight_summary` (empty when it holds)."""
+    problems = []
+    received = summary.get("received") or {}
+    if not received:
+        return ["no page weight was measured"]
+    if received["median"] >= median_budget:
+        problems.append(f"median page weight {received['median'] / 1e3:.0f} kB received, "
+                        f"over the budget of {median_budget / 1e3:.0f} kB")
+    if received["max"] >= page_budget:
+        problems.append(f"heaviest page {summary['heaviest']} {received['max'] / 1e3:.0f} kB received, "
+                        f"over the budget of {page_budget / 1e3:.0f} kB")
+    return problems
+
+
+async def _search(root, query, executable):
+    from playwright.async_api import async_playwright
+
+    with serve(root) as base:
+        async with async_playwright() as pw:
+            browser = await pw.chromium.launch(
+                executable_path=executable, headless=True,
+                proxy={"server": "http://127.0.0.1:9", "bypass": "127.0.0.1"})
+            page = await browser.new_page()
+            errors = []
+            page.on("pageerror", lambda e: errors.append(str(e)))
+            await page.goto(base + "search.html", wait_until="load")
+            # the search page's own field (the theme's pop-up search field is hidden)
+            box = page.locator('input[name="q"]:visible').first
+            await box.fill(query)
+            await box.press("Enter")
+            await page.wait_for_function(
+                "() => document.querySelectorAll('#search-results ul.search li').length > 0"
+                " || /did not match|no documents/i.test(document.querySelector('#search-results')?.textContent || '')",
+                timeout=30000)
+            hits = await page.eval_on_selector_all(
+                "#search-results ul.search li a", "els => els.map((a) => a.getAttribute('href'))")
+            await browser.close()
+            return hits, errors
+
+
+def search(root, query, executable=None):
+    """(links of the results, uncaught errors) of typing ``query`` into the book's search page."""
+    return asyncio.run(_search(Path(root), query, executable or chromium_path()))

@@ -58,6 +58,8 @@ GOOD = f"""<!doctype html><html><head><meta charset="utf-8"><title>good</title><
 <p>The coupler curve (连杆曲线) of a crank-rocker (曲柄摇杆机构). Cost: 5 dollars.</p>
 <figure><img src="dot.svg" alt="a dot"><figcaption>A dot.</figcaption></figure>
 <pre>$not math$ inside code is fine: \\(x\\)</pre>
+<p>Math as MathML: <span class="math notranslate nohighlight"><math><msup><mi>x</mi><mn>2</mn></msup></math></span>.</p>
+<p>An icon: <svg class="svg-inline--fa fa-bars" viewBox="0 0 448 512"><path fill="currentColor" d="M0 96h448v64H0z"/></svg></p>
 {WIDGETS}
 </body></html>"""
 
@@ -68,6 +70,8 @@ BAD = f"""<!doctype html><html><head><meta charset="utf-8"><title>bad</title></h
 <img src="https://example.com/remote.png" alt="remote">
 <figure><figcaption>A figure with nothing in it.</figcaption></figure>
 <span class="math notranslate nohighlight">\\(y\\)</span>
+<span class="math notranslate nohighlight"><math><mi>\\unknown</mi></math></span>
+<p><i class="fa-solid fa-bars"></i> <svg class="svg-inline--fa fa-list" viewBox="0 0 512 512"></svg></p>
 {WIDGETS.replace('class="mech-anim"', 'class="mech-anim" data-broken').replace('class="mech-view3d"', 'class="mech-view3d" data-broken')}
 <script>console.error("planted error"); undefinedFunction();</script>
 </body></html>"""
@@ -84,6 +88,13 @@ def results(chromium, tmp_path_factory):
     # MathJax that never finishes typesetting: the page must time out, not hang the crawl.
     (root / "mathjax-never.js").write_text("window.MathJax = {startup: {promise: new Promise(() => {})}};")
     (root / "hang.html").write_text('<script src="mathjax-never.js"></script><p>x</p>', encoding="utf-8")
+    # A page over the 2 MB budget: an image of noise (PNG cannot compress it), 2.4 MB.
+    import numpy as np
+    from PIL import Image
+
+    noise = np.random.default_rng(17).integers(0, 256, size=(800, 1000, 3), dtype=np.uint8)
+    Image.fromarray(noise).save(root / "noise.png")
+    (root / "heavy.html").write_text('<p>heavy</p><img src="noise.png" alt="noise">', encoding="utf-8")
     (root / "_static").mkdir()
     (root / "_static" / "skipped.html").write_text("<p>not a page</p>", encoding="utf-8")
     shots = root / "shots"
@@ -98,6 +109,20 @@ def test_good_page_has_no_problems(results):
     assert info["images"] == 1
     assert (shots / "good.jpg").stat().st_size > 1000
     assert 1000 < info["bytes"] < 20000  # the page and its svg
+    # Cold visit: the server sent the text gzip-compressed, and every byte was received.
+    assert info["bytes"] < info["bytesDecoded"]
+    assert info["bytesTransfer"] >= info["bytes"]
+    assert info["math"] == 1 and info["icons"] == 1
+
+
+def test_heavy_page_breaks_the_budget(results):
+    problems, info = results[0]["heavy.html"]
+    assert info["bytesTransfer"] > 2_000_000
+    assert any(p.startswith("page weight ") and "over the budget of 2000 kB" in p and "noise.png" in p
+               for p in problems), problems
+    summary = _crawl.weight_summary({"heavy.html": results[0]["heavy.html"], "good.html": results[0]["good.html"]})
+    assert summary["heaviest"] == "heavy.html"
+    assert any("heaviest page heavy.html" in p for p in _crawl.budget_problems(summary))
 
 
 @pytest.mark.parametrize("variable, value", [("MECH_BROWSER_TEST", "required"), ("CI", "true")])
@@ -112,7 +137,7 @@ def test_missing_browser_fails_where_required(monkeypatch, variable, value):
 
 
 def test_asset_folders_are_not_pages(results):
-    assert sorted(results[0]) == ["bad.html", "good.html", "hang.html", "index.html", "moved.html"]
+    assert sorted(results[0]) == ["bad.html", "good.html", "hang.html", "heavy.html", "index.html", "moved.html"]
 
 
 def test_redirect_pages_are_checked_by_their_target(results):
@@ -135,6 +160,9 @@ def test_a_page_that_never_settles_times_out(results):
     "math not typeset: \\(y\\)",
         "raw math in the text: ... Unrendered: $a + b$ and \\(x^2\\)",
     "missing glyphs",
+    "TeX left in MathML: \\unknown",
+    'icon not drawn: <i class="fa-solid fa-bars">',
+    "icon without an outline: svg-inline--fa fa-list",
     "animation 1: data-frame stays 0 after play",
     "animation 1: slider set to 19 but data-frame is 0",
     "animation 1: two slider values draw the same picture",
@@ -159,3 +187,26 @@ def test_tofu_reference_is_a_missing_glyph(results, chromium):
             "\U0010FFFC", "\U00031350"]
         assert page.evaluate("([c, f]) => __mechTofu(c, f)", [["球", "杆", "A"], font]) == []
         browser.close()
+
+
+def _fake(received, uncompressed):
+    return [], {"bytesTransfer": received, "bytes": received, "bytesDecoded": uncompressed}
+
+
+def test_weight_summary_and_median_budget():
+    """The median and maximum over pages, redirects left out, and both budgets (no browser)."""
+    pages = {f"p{k}.html": _fake(v, 4 * v) for k, v in enumerate([100_000, 300_000, 450_000, 700_000])}
+    pages["index.html"] = ([], {"redirect": "p0.html", "seconds": 0.0})
+    summary = _crawl.weight_summary(pages)
+    assert summary["pages"] == 4
+    assert summary["received"] == {"median": 375_000, "max": 700_000}
+    assert summary["uncompressed"] == {"median": 1_500_000, "max": 2_800_000}
+    assert _crawl.budget_problems(summary) == []
+    pages["p4.html"] = _fake(600_000, 600_000)  # the median moves to 450 kB: still under
+    assert _crawl.budget_problems(_crawl.weight_summary(pages)) == []
+    pages["p5.html"] = _fake(2_100_000, 2_100_000)  # median 525 kB and a page over 2 MB
+    problems = _crawl.budget_problems(_crawl.weight_summary(pages))
+    assert len(problems) == 2
+    assert problems[0].startswith("median page weight 525 kB")
+    assert problems[1].startswith("heaviest page p5.html 2100 kB")
+    assert _crawl.budget_problems(_crawl.weight_summary({})) == ["no page weight was measured"]

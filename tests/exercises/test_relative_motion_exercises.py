@@ -215,3 +215,32 @@ def test_exercise_2_14_polygons_close():
                relative_motion(sol, "F", base="E", link="rod")]
     assert velocity_polygon(motions).closure < 1e-9
     assert acceleration_polygon(motions).closure < 1e-7
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_exercise_2_16_grashof_note_matches_the_lengths(seed):
+    """The note said 'a <kind> (AB + CD > AD + BC): the crank cannot turn fully' for every
+    variant, though about half of the sampled variants are crank-rockers; the note now
+    follows the lengths, checked against the Grashof sums computed here."""
+    rng = np.random.default_rng(seed)
+    p = rm._sample_2_16(rng)
+    text = " ".join(n for part in rm.EXERCISE_2_16.solve(p).parts for n in part.remarks)
+    ad = math.hypot(p["xD"], p["yD"])
+    links = sorted((p["AB"], p["BC"], p["CD"], ad))
+    revolves = links[0] == p["AB"] and links[0] + links[3] <= links[1] + links[2]
+    assert ("the crank AB turns fully" in text) == revolves
+    assert ("the crank cannot turn fully" in text) == (not revolves)
+    assert f"{links[0] + links[3]:.1f} mm against {links[1] + links[2]:.1f} mm" in text
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_exercise_2_16_counter_clockwise_note_matches_the_lengths(seed):
+    """The assumptions said the counter-clockwise reading of φ1 leaves B too near D to close
+    the loop; for 198 of 300 sampled variants it closes. The sentence now follows BD."""
+    p = rm._sample_2_16(np.random.default_rng(seed))
+    text = " ".join(rm.EXERCISE_2_16.solve(p).assumptions)
+    bd = abs(complex(p["xD"], p["yD"]) - p["AB"] * np.exp(1j * math.radians(p["phi1"])))
+    closes = p["CD"] - p["BC"] <= bd <= p["CD"] + p["BC"]
+    assert ("the loop would close too" in text) == closes
+    assert ("the loop could not close" in text) == (not closes)
+    assert f"{bd:.1f} mm" in text

@@ -442,3 +442,61 @@ def test_crank_rocker_k1_is_the_limit_of_k_above_1():
         assert near.fourbar.branch == k1.fourbar.branch
         assert abs(near.theta_extended - k1.theta_extended) <= gap
         assert near.fourbar.limit_positions().time_ratio == pytest.approx(1.0 + gap, abs=1e-14)
+
+
+def _alpha_max(theta, swing, side):
+    """The end of the working alpha interval stated in `quick_return_crank_rocker`'s Notes."""
+    if side == 1:
+        return min(np.pi - theta, np.pi - swing, np.pi - 2 * theta + swing)
+    return np.pi - 2 * theta - swing
+
+
+def test_crank_rocker_alpha_interval_stated_in_the_docstring():
+    """Two thirds of random alphas in the documented (0, pi - theta) raised; the docstring now
+    gives the working interval (0, alpha_max). Checked by building designs inside and outside
+    it, and each accepted design by simulation."""
+    rng = np.random.default_rng(11)
+    tried = 0
+    while tried < 60:
+        K, swing, side = np.exp(rng.uniform(np.log(1.01), np.log(8.0))), rng.uniform(0.05, 3.0), int(rng.choice([1, -1]))
+        theta = np.pi * (K - 1) / (K + 1)
+        top = _alpha_max(theta, swing, side)
+        if top <= 0.02:
+            with pytest.raises(ValueError, match="crank-rocker"):
+                quick_return_crank_rocker(K, 1.0, swing, alpha=0.5 * (np.pi - theta), side=side)
+            continue
+        tried += 1
+        for f in (1e-3, 0.5, 0.95):
+            q = quick_return_crank_rocker(K, 1.0, swing, alpha=f * top, side=side)
+            check = q.check(samples=512)
+            assert abs(check.time_ratio - K) < 1e-9 and abs(check.output_range - swing) < 1e-9
+        if top * (1 + 1e-4) < np.pi - theta:
+            with pytest.raises(ValueError, match="crank-rocker"):
+                quick_return_crank_rocker(K, 1.0, swing, alpha=top * (1 + 1e-4), side=side)
+    fam = crank_rocker_family(2.0, 1.0, np.radians(30.0))
+    # the end stops short of alpha_max = pi/2 by the band rejected as a change-point linkage
+    assert len(fam.intervals) == 1 and 0.0 < np.pi / 2 - fam.intervals[0][1] < 1e-4
+
+
+def test_crank_rocker_near_a_change_point_is_rejected_by_name():
+    """Near alpha_max the design tends to a change-point linkage. Within `grashof`'s tolerance
+    it was accepted, FourBar then continued through the change point, and `check()` failed
+    inside SciPy ("f(a) and f(b) must have different signs"); now `alpha` is rejected."""
+    K, swing = 3.1466343002270505, 0.13466639317576154
+    top = _alpha_max(np.pi * (K - 1) / (K + 1), swing, 1)
+    for f in (0.999, 0.9999):
+        with pytest.raises(ValueError, match=r"`alpha`.*not a change-point linkage"):
+            quick_return_crank_rocker(K, 1.0, swing, alpha=f * top)
+    q = quick_return_crank_rocker(K, 1.0, swing, alpha=0.99 * top)
+    assert not mech.planar.grashof(*q.lengths).change_point
+    check = q.check()
+    assert abs(check.time_ratio - K) < 1e-8 and abs(check.output_range - swing) < 1e-8
+
+
+@pytest.mark.parametrize("lengths", [(1.0, 3.0, 2.0, 2.0), (0.06643943019070922, 0.06802770547188149, 1.0,
+                                                               0.9984117247188289)])
+def test_simulate_change_point_linkage_is_named(lengths):
+    """A change-point crank-rocker (s + l = p + q) made `simulate_quick_return` fail inside SciPy
+    ("f(a) and f(b) must have different signs"); the error now names `linkage`."""
+    with pytest.raises(ValueError, match=r"Expected `linkage` whose output repeats every crank turn.*change-point"):
+        simulate_quick_return(FourBar(*lengths))

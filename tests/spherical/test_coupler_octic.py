@@ -249,10 +249,10 @@ def test_octic_tends_to_sextic(scale):
 
 @pytest.mark.parametrize("scale, tol", [(1e-2, 1e-2), (1e-3, 1e-4), (1e-4, 1e-6), (1e-5, 1e-3), (1e-6, 3e-2)])
 def test_generated_octic_tends_to_sextic_in_double(scale, tol):
-    """The generated double-precision octic: the limit gap is eps**2 until rounding takes
+    """The direct double-precision octic (eq. (4)): the limit gap is eps**2 until rounding takes
     over (F ~ eps**12 from O(1) terms: about 1e-16 / eps**2.3 relative, 4e-3 at 1e-6)."""
     args = [scale * v for v in LINKAGE] + [scale * R0, G0]
-    F, _ = coupler_octic([0.0, np.pi / 2, 0.0, *args], [scale * X0, scale * Y0, 1.0])
+    F, _ = coupler_octic([0.0, np.pi / 2, 0.0, *args], [scale * X0, scale * Y0, 1.0], form="direct")
     gap = abs(float(F) / scale**12 / _limit_target() - 1)
     assert gap < tol, gap
 
@@ -278,3 +278,193 @@ def test_coupler_quartic_is_not_homogeneous_but_octic_factors_on_sphere():
     F = coupler_octic(params, P)[0]
     assert np.allclose(F, coupler_quartic(params, P)[0] * coupler_quartic(params, -P)[0], rtol=1e-10, atol=0)
     assert not np.allclose(coupler_quartic(params, 2 * P)[0], 2**4 * coupler_quartic(params, P)[0])
+
+
+# ----------------------------------------------------------------------------- the gradient
+def _mp_octic_placed(params, x):
+    """F at 50 digits by another route: the placement by rotations (_mp_frame), the quartic by
+    solving the 3x3 system (2) numerically (_mp_quartic), then F = |x|**8 Q(x^) Q(-x^)."""
+    lon, lat, heading, a, b, c, d, r, gamma = (mpmath.mpf(float(v)) for v in params)
+    frame = _mp_frame(lon, lat, heading)
+    std = frame.T * mpmath.matrix(x)
+    rho = mpmath.norm(std)
+    unit = std / rho
+    return rho**8 * _mp_quartic(unit, a, b, c, d, r, gamma) * _mp_quartic(-unit, a, b, c, d, r, gamma)
+
+
+def _mp_quartic_placed(params, x):
+    lon, lat, heading, a, b, c, d, r, gamma = (mpmath.mpf(float(v)) for v in params)
+    return _mp_quartic(_mp_frame(lon, lat, heading).T * mpmath.matrix(x), a, b, c, d, r, gamma)
+
+
+def _mp_central_gradient(function, params, x, h=mpmath.mpf(10) ** -15):
+    """Central differences of `function` at the point x (mpmath), step h: error O(h**2)."""
+    x = [mpmath.mpf(float(v)) for v in x]
+    grad = []
+    for k in range(3):
+        up, down = list(x), list(x)
+        up[k] += h
+        down[k] -= h
+        grad.append((function(params, up) - function(params, down)) / (2 * h))
+    return np.array([float(g) for g in grad])
+
+
+@pytest.mark.parametrize("form", ["direct", "scaled"])
+@pytest.mark.parametrize("seed", range(4))
+def test_coupler_octic_gradient_central_differences(seed, form):
+    """The generated gradient of F (eq. (4), or eqs. (7)-(9) on A's half of the sphere) and
+    of Q against central differences of F at 50 digits computed by another route (numeric
+    elimination, rotations), for random linkages in arbitrary placement, at points off the
+    curve (any length) and on it: relative 1e-9."""
+    rng = np.random.default_rng(1420 + seed)
+    params = _random_params(rng)
+    points = list(rng.normal(size=(4, 3)) * rng.uniform(0.5, 2.0, (4, 1)))
+    with mpmath.workdps(DPS):
+        on_curve = _mp_coupler_points(params, rng.uniform(0, 2 * np.pi, 6), 1)
+        on_curve += _mp_coupler_points(params, rng.uniform(0, 2 * np.pi, 6), -1)
+        points += [np.array([float(p[i]) for i in range(3)]) for p in on_curve[:4]]
+        worst_F = worst_Q = 0.0
+        for x in points:
+            _, grad = coupler_octic(params, x, form=form)
+            reference = _mp_central_gradient(_mp_octic_placed, params, x)
+            worst_F = max(worst_F, float(np.linalg.norm(grad - reference) / np.linalg.norm(reference)))
+            _, grad = coupler_quartic(params, x)
+            reference = _mp_central_gradient(_mp_quartic_placed, params, x)
+            worst_Q = max(worst_Q, float(np.linalg.norm(grad - reference) / np.linalg.norm(reference)))
+    assert len(points) >= 6
+    assert worst_F < 1e-9 and worst_Q < 1e-9, (worst_F, worst_Q)
+
+
+def test_coupler_octic_gradient_euler_relation():
+    """F is homogeneous of degree 8: x . grad F = 8 F (Euler), an identity the generated
+    gradient must keep."""
+    rng = np.random.default_rng(1430)
+    params = _random_params(rng)
+    x = rng.normal(size=(50, 3)) * rng.uniform(0.3, 3.0, (50, 1))
+    value, grad = coupler_octic(params, x)
+    scale = np.linalg.norm(grad, axis=-1) * np.linalg.norm(x, axis=-1)
+    assert np.max(np.abs(np.sum(x * grad, axis=-1) - 8 * value) / scale) < 1e-12
+
+
+# ----------------------------------------------------------------------------- small linkages
+def _mp_octic_at(arcs, gamma, x, frame=None):
+    """F at the exact double vector x, 60 digits, by numeric elimination (_mp_quartic); the
+    frame (a double matrix, taken as exact) maps the standard frame to the ground frame."""
+    with mpmath.workdps(60):
+        X = mpmath.matrix([v if isinstance(v, mpmath.mpf) else mpmath.mpf(float(v)) for v in x])
+        if frame is not None:
+            X = mpmath.matrix([[mpmath.mpf(float(frame[i, j])) for i in range(3)] for j in range(3)]) * X
+        rho = mpmath.norm(X)
+        args = [mpmath.mpf(float(v)) for v in arcs] + [mpmath.mpf(float(gamma))]
+        return rho**8 * _mp_quartic(X / rho, *args) * _mp_quartic(-X / rho, *args)
+
+
+def _mp_gradient_at(arcs, gamma, x, h, frame=None):
+    with mpmath.workdps(60):
+        x = [mpmath.mpf(float(v)) for v in x]
+        grad = []
+        for k in range(3):
+            up, down = list(x), list(x)
+            up[k] += h
+            down[k] -= h
+            grad.append((_mp_octic_at(arcs, gamma, up, frame) - _mp_octic_at(arcs, gamma, down, frame)) / (2 * h))
+        return np.array([float(g) for g in grad])
+
+
+def _small_linkage(rng, scale):
+    """A random assemblable four-bar with every arc of order `scale`, and its coupler point."""
+    while True:
+        hats = rng.uniform(0.3, 1.0, 5)
+        try:
+            m = SphericalFourBar(*(scale * hats[:4]), coupler=(scale * hats[4], rng.uniform(-3, 3)))
+        except ValueError:
+            continue
+        if m.assembly_range().intervals.size or m.assembly_range().full_turn:
+            return m
+
+
+@pytest.mark.parametrize("scale", [1e-2, 1e-4, 1e-6, 1e-8])
+def test_coupler_octic_small_against_60_digits(scale):
+    """Eqs. (7)-(9): at points near a linkage of size eps (its own frame), on its curve and
+    off it, the double-precision F agrees with a 60-digit evaluation by numeric elimination
+    to 1e-12 of |grad F| eps (a distance relative to the size), off the curve to 1e-12
+    relative, and so does its gradient (central differences at 60 digits)."""
+    rng = np.random.default_rng(int(-np.log10(scale)) + 1440)
+    m = _small_linkage(rng, scale)
+    arcs, gamma = (m.a, m.b, m.c, m.d, m.coupler[0]), m.coupler[1]
+    off = [np.array([scale * X, scale * Y, 1.0]) for X, Y in rng.uniform(-2, 2, (4, 2))]
+    theta = rng.uniform(0, 2 * np.pi, 40)
+    pose = m.solve(theta)
+    on = list(pose.P[pose.valid][:4])
+    assert len(on) >= 2
+    worst_distance = worst_value = worst_grad = 0.0
+    for x in off + on:
+        value, grad = coupler_octic(m, x)
+        ref = _mp_octic_at(arcs, gamma, x)
+        ref_grad = _mp_gradient_at(arcs, gamma, x, mpmath.mpf(scale) * mpmath.mpf(10) ** -20)
+        g = np.linalg.norm(ref_grad)
+        worst_distance = max(worst_distance, abs(float(value - ref)) / (g * scale))
+        worst_grad = max(worst_grad, float(np.linalg.norm(grad - ref_grad) / g))
+        if any(x is o for o in off):
+            worst_value = max(worst_value, abs(float(value / ref) - 1))
+    assert worst_distance < 1e-12 and worst_value < 1e-12 and worst_grad < 1e-12, \
+        (worst_distance, worst_value, worst_grad)
+    # the direct form (eq. (4)) at the same points, for contrast: it loses about 1 / eps**2
+    if scale <= 1e-4:
+        direct = max(abs(float(coupler_octic(m, x, form="direct")[0] / _mp_octic_at(arcs, gamma, x)) - 1) for x in off)
+        assert direct > 1e3 * max(worst_value, 1e-16)
+
+
+@pytest.mark.parametrize("scale", [1e-2, 1e-5, 1e-8])
+def test_coupler_octic_small_random_placement(scale):
+    """A small linkage placed anywhere: the point's own rounding (its coordinates are of order
+    one) limits any evaluation to about 1e-16 / eps of the size; the scaled form reaches
+    that floor (measured against 60 digits at the exact double inputs)."""
+    rng = np.random.default_rng(int(-np.log10(scale)) + 1450)
+    m0 = _small_linkage(rng, scale)
+    R = ground_frame(rng.uniform(-3, 3), rng.uniform(-1.5, 1.5), rng.uniform(-3, 3))
+    m = SphericalFourBar(m0.a, m0.b, m0.c, m0.d, coupler=m0.coupler, frame=R)
+    arcs, gamma = (m.a, m.b, m.c, m.d, m.coupler[0]), m.coupler[1]
+    points = [R @ np.array([scale * X, scale * Y, 1.0]) for X, Y in rng.uniform(-2, 2, (4, 2))]
+    worst = 0.0
+    for x in points:
+        value, _ = coupler_octic(m, x)
+        ref_grad = _mp_gradient_at(arcs, gamma, x, mpmath.mpf(scale) * mpmath.mpf(10) ** -20, frame=R)
+        worst = max(worst, abs(float(value - _mp_octic_at(arcs, gamma, x, frame=R))) / (np.linalg.norm(ref_grad) * scale))
+    assert worst < 1e-12 + 1e-15 / scale, worst
+
+
+@pytest.mark.parametrize("scale", [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8])
+def test_coupler_octic_small_tends_to_planar_sextic(scale):
+    """Eq. (6) in double precision through the scaled form: F(eps X, eps Y, 1) / eps**12
+    -> ell S / (16 r**2) with S from mech.planar.coupler_sextic, at the rate 50 eps**2 (the
+    60-digit rate of test_octic_tends_to_sextic) and to 1e-12 below eps = 1e-6."""
+    m = SphericalFourBar(*(scale * np.array(LINKAGE)), coupler=(scale * R0, G0))
+    F, _ = coupler_octic(m, [scale * X0, scale * Y0, 1.0])
+    gap = abs(float(F) / scale**12 / _limit_target() - 1)
+    assert gap < 100 * scale**2 + 1e-12, gap
+    if scale >= 1e-5:
+        assert gap > 10 * scale**2, gap
+
+
+def test_coupler_octic_forms_agree_and_choose():
+    """The forms agree for a mid-sized linkage; "auto" takes the scaled form only for small
+    linkages and only on A's half of the sphere; bad options are named."""
+    rng = np.random.default_rng(1460)
+    params = np.array([0.4, 0.3, -1.0, 0.05, 0.09, 0.08, 0.1, 0.06, 0.7])
+    x = rng.normal(size=(200, 3))
+    direct = coupler_octic(params, x, form="direct")
+    scaled = coupler_octic(params, x, form="scaled")
+    auto = coupler_octic(params, x)
+    size = np.linalg.norm(direct[1], axis=-1) * np.linalg.norm(x, axis=-1)
+    assert np.max(np.abs(direct[0] - scaled[0]) / size) < 1e-12
+    assert np.max(np.linalg.norm(direct[1] - scaled[1], axis=-1) / np.linalg.norm(direct[1], axis=-1)) < 1e-11
+    assert np.array_equal(auto[0], scaled[0])
+    far = coupler_octic(params, x, small=0.01)                  # the linkage is larger than `small`
+    assert np.array_equal(far[0], direct[0])
+    curve = SphericalFourBar(0.05, 0.09, 0.08, 0.1, coupler=(0.06, 0.7)).coupler_curve_polynomial()
+    assert curve(x, form="direct")[0].shape == (200,)
+    with pytest.raises(ValueError, match="Expected `form`"):
+        coupler_octic(params, x, form="bogus")
+    with pytest.raises(ValueError, match="Expected `small` >= 0"):
+        coupler_octic(params, x, small=-1.0)

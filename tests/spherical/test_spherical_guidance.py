@@ -331,3 +331,33 @@ def test_crank_slider_four_positions_by_analysis():
             assert design.pose_error < 1e-9
             reached += 1
     assert reached > 0
+
+
+@pytest.mark.parametrize("scale, bound", [(1e-3, 1e-14), (1e-4, 1e-12), (1e-5, 1e-10), (1e-6, 1e-8)])
+def test_burmester_accuracy_as_the_arcs_shrink_is_as_documented(scale, bound):
+    """`burmester`'s Notes give the orientation error of Example 2-15's crank-rocker at each
+    scale; the error grows about as 1/scale**2, by analysis with `SphericalFourBar`."""
+    from mech.spherical import guidance_fourbars, planar_orientations
+
+    P = [13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j]
+    R = planar_orientations(np.radians([0.0, 8.88, 22.1, 63.68, -3.0]), P, scale)
+    best = guidance_fourbars(R, rtol=1.0).candidates[0]
+    assert best.kind == "crank-rocker" and best.in_order
+    assert bound / 1e3 < best.pose_error < bound
+
+
+def test_stacks_that_do_not_broadcast_are_named():
+    """Four orientations against two body points failed with NumPy's 'operands could not be
+    broadcast together', naming no argument; the message now names each stack."""
+    R = np.stack([rotation_matrix([0, 0, 1], t) for t in (0.1, 0.2, 0.3, 0.4)])
+    with pytest.raises(ValueError, match=r"`R_j` \(4,\), `circle_point` \(2,\)"):
+        crank_residual(np.eye(3), R, np.ones((2, 3)), [0, 0, 1])
+    with pytest.raises(ValueError, match=r"`R_j` \(4,\), `slider_point` \(2,\)"):
+        slider_residual(R, np.ones((2, 3)), [0, 0, 1])
+    with pytest.raises(ValueError, match=r"`R_1` \(2,\), `R_j` \(4,\)"):
+        relative_rotation(R[:2], R)
+    with pytest.raises(ValueError, match=r"`R_1` \(2,\), `R_j` \(4,\)"):
+        rotation_pole(R[:2], R)
+    # stacks that broadcast still work
+    assert crank_residual(np.eye(3), R, np.ones((1, 3)), [0, 0, 1]).shape == (4,)
+    assert relative_rotation(R[:1], R)[0].shape == (4, 3, 3)

@@ -9,7 +9,9 @@ import mpmath
 import numpy as np
 import pytest
 
-from mech.spherical import SphericalFourBar, ground_frame, path_fourbar, path_stephenson1, path_verify, to_xyz
+from mech.spherical import (SphericalFourBar, from_xyz, ground_frame, path_fourbar, path_stephenson1, path_verify,
+                            stephenson1, to_xyz)
+from mech.spherical.path._sixpath import _chain
 from mech.spherical.path._synthesis import _stephenson
 from tests.spherical.sixbar_reference import chain, dyad_guesses
 
@@ -25,6 +27,32 @@ NOISE = 1e-3
 X2 = np.array([0.52653, 0.99258, -4.38134, 0.51352, 0.17085, 0.63038, 0.05345, 0.3594, -2.56499])
 TH2 = np.radians(np.arange(9) * 30.0)
 TOL2 = 5e-3
+
+
+#: Example 3: a Stephenson-1 six-bar (fifteen parameters) whose coupler points, with noise
+#: of 1e-3 per coordinate, make the task: twelve points at input angles 0 to 1.6 rad.
+X6 = np.array([0.2, 1.1, 0.3, 0.3, 0.9, 0.7, 1.0, 0.2, 0.8, 0.3, -1.0, 0.8, 0.7, 0.4, 0.5])
+TH6 = np.linspace(0.0, 1.6, 12)
+TOL6 = 2e-3
+
+
+def example3_points():
+    Q = _stephenson(X6, (1, 1)).solve(TH6).points["P"] + NOISE * np.random.default_rng(1).standard_normal((12, 3))
+    return Q / np.linalg.norm(Q, axis=1)[:, None]
+
+
+def random_starts(points, count, seed):
+    """Starts that know nothing of the linkage that made the task: the input pivot within
+    0.5 rad (in longitude and latitude) of the points' mean direction, every arc uniform in
+    a middle range, every angle uniform in (-pi, pi)."""
+    lon, lat = from_xyz(np.mean(points, axis=0) / np.linalg.norm(np.mean(points, axis=0)))
+    rng = np.random.default_rng(seed)
+    u = lambda lo, hi: rng.uniform(lo, hi, count)  # noqa: E731
+    angle = lambda: u(-np.pi, np.pi)  # noqa: E731
+    return np.column_stack([lon + u(-0.5, 0.5), np.clip(lat + u(-0.5, 0.5), -1.5, 1.5), angle(),
+                            u(0.2, 1.3), u(0.2, 1.3), u(0.2, 1.3), u(0.2, 1.3),
+                            u(0.1, 1.0), angle(), u(0.1, 1.0), angle(),
+                            u(0.3, 1.3), u(0.3, 1.3), u(0.1, 1.0), angle()])
 
 
 def small_circle(centre, rho, angles):
@@ -183,3 +211,96 @@ def test_formulations_compared_on_speed_and_result():
     const = path_fourbar(Q2, TH2, X2, formulation="constant-arc", tol=TOL2)
     assert dist.passes and not const.passes
     assert const.max_error > 10 * dist.max_error
+
+
+def sixbar_of(design):
+    """The designed six-bar rebuilt from its fifteen parameters by the public constructor."""
+    x = design.parameters
+    lk = design.linkage
+    branches = tuple(step[-1] for step in lk._steps if step[0] == "rrr")
+    return stephenson1(*x[3:7], E=tuple(x[7:9]), F=tuple(x[9:11]), arcs=tuple(x[11:13]), coupler=tuple(x[13:15]),
+                       branches=branches, frame=ground_frame(*x[:3]))
+
+
+def transmission_sines(points, linkage):
+    """sin of the transmission angle of both dyads from the joint positions alone:
+    branch * det[P1, P2, J] / (sin b1 sin b2), with the arcs measured from the points;
+    positive while each joint stays on its dyad's branch."""
+    out = []
+    for step in linkage._steps:
+        if step[0] == "rrr":
+            _, _, (p1, p2), j, _, sign = step
+            P1, P2, J = points[p1], points[p2], points[j]
+            det = sign * np.einsum("ij,ij->i", np.cross(P1, P2), J)
+            out.append(det / (np.linalg.norm(np.cross(P1, J), axis=1) * np.linalg.norm(np.cross(P2, J), axis=1)))
+    return np.array(out)
+
+
+def test_batch_chain_matches_the_linkage_solver():
+    """`_chain` (the search's batch evaluation) against `SphericalLinkage.solve` for random
+    parameters on both branch pairs, where both assemble."""
+    rng = np.random.default_rng(3)
+    X = X6 + rng.uniform(-0.2, 0.2, (6, 15))
+    th = np.linspace(0.0, 2 * np.pi, 50)
+    for branches in ((1, 1), (1, -1), (-1, 1)):
+        P, s = _chain(X, th, branches)
+        for k, x in enumerate(X):
+            pose = _stephenson(x, branches).solve(th)
+            ok = pose.assembled
+            assert np.array_equal(np.isfinite(P[k]).all(axis=1), ok)   # the same inputs assemble
+            assert np.max(np.abs(P[k][ok] - pose.points["P"][ok])) < 1e-12
+            assert np.allclose(s[k][ok].T, transmission_sines({n: v[ok] for n, v in pose.points.items()},
+                                                               _stephenson(x, branches)), atol=1e-9)
+
+
+def test_example3_noisy_sixbar_without_constraint_is_not_in_order():
+    """The failure the constraint removes: fitted to the noisy points alone, the six-bar
+    meets all twelve points, but its second dyad (E-G-F) does not assemble for some inputs
+    between the last two prescribed angles, so it cannot move from one to the next."""
+    Q = example3_points()
+    d = path_stephenson1(Q, TH6, X6 + 0.02, tol=TOL6, min_transmission=None)
+    assert not d.in_order and not d.passes
+    assert np.isfinite(d.generated).all() and d.max_error < TOL6
+    sweep = np.linspace(TH6[0], TH6[-1], 16001)
+    pose = sixbar_of(d).solve(sweep)
+    gap = sweep[~pose.assembled]
+    assert gap.size and TH6[-2] < gap.min() and gap.max() < TH6[-1]
+    # the four-bar ABCD (solved on its own) assembles throughout: only E-G-F is lost
+    x = d.parameters
+    assert SphericalFourBar(*x[3:7], frame=ground_frame(*x[:3])).solve(sweep).valid.all()
+
+
+def test_example3_noisy_sixbar_from_random_starts():
+    """Worked example 3 (book page): ten random starts; the design reaches the twelve noisy
+    points within TOL6, on one branch, in order, checked here without `path_verify`."""
+    Q = example3_points()
+    d = path_stephenson1(Q, TH6, random_starts(Q, 10, 7), tol=TOL6)
+    assert d.passes and d.in_order
+    lk = sixbar_of(d)
+    # (1) every coupler point by an mpmath rotation chain (dyads by findroot, not the closed form)
+    pose = lk.solve(TH6)
+    P = np.empty((TH6.size, 3))
+    for i, t in enumerate(TH6):
+        guesses = dyad_guesses(lk, {k: v[i] for k, v in pose.points.items()})
+        P[i] = [float(c) for c in chain(lk, mpmath.mpf(float(t)), guesses)["P"]]
+    assert np.max(np.abs(P - d.generated)) < 1e-12
+    errors = arcs(P, Q)
+    assert np.max(np.abs(errors - d.errors)) < 1e-12
+    assert errors.max() <= TOL6 and errors.max() == pytest.approx(d.max_error, abs=1e-12)
+    # (2) one branch: along a fine sweep both dyads assemble and keep the sign of their
+    # transmission sine, bounded away from zero
+    sweep = np.linspace(TH6[0], TH6[-1], 16001)
+    sp = lk.solve(sweep)
+    assert sp.assembled.all()
+    s = transmission_sines(sp.points, lk)
+    assert s.min() > np.sin(np.radians(30.0)) - 1e-3   # the default min_transmission, to the penalty's give
+    # (3) in order: the sweep moves without jumps and passes the points in the given order
+    path = sp.points["P"]
+    steps = np.linalg.norm(np.diff(path, axis=0), axis=1)
+    assert steps.max() < 3.0 * steps.mean()
+    nearest = np.argmin(np.linalg.norm(path[None, :, :] - Q[:, None, :], axis=2), axis=1)
+    assert np.all(np.diff(nearest) > 0)
+    # (4) the path is found, not the parameters: over the whole range the designed curve
+    # stays within a few noise levels of the curve that made the task (at equal inputs)
+    truth = _stephenson(X6, (1, 1)).solve(sweep).points["P"]
+    assert np.max(arcs(path, truth)) < 4e-3

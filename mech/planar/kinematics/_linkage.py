@@ -16,7 +16,7 @@ import numpy as np
 from mech._errors import AssemblyError, InputTypeError
 from mech._scaling import DEAD_POINT_RTOL
 from mech._generated import assur_groups as _g
-from mech.planar.kinematics import _linkage_modes
+from mech.planar.kinematics import _linkage_blocks, _linkage_modes
 from mech._validate import (
     bool_flag, branch_sign, finite_array, integer, known_name, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number, common_shape)
 
@@ -435,7 +435,9 @@ class Linkage:
 
         Notes
         -----
-        The modes through change points and the unit of length: see `Linkage`.
+        The modes through change points and the unit of length: see `Linkage`. More than
+        16384 poses are solved in blocks of that many, each while its temporaries stay in
+        the cache (`mech.planar.kinematics._linkage_blocks`), with the same results.
 
         Examples
         --------
@@ -455,20 +457,29 @@ class Linkage:
         far = self._distance_drivers()
         sq, sw, sal = ({d: x[d] / unit if d in far else x[d] for d in x} for x in (q, w, al))
         crank = self._crank_driver()
-        theta = None if crank is None else np.broadcast_to(sq[crank], shape)
-        state, failures = self._run(steps, order, shape, sq, sw, sal,
+        if math.prod(shape) <= _linkage_blocks.BLOCK:
+            state, failures = self._solve_all(steps, order, shape, sq, sw, sal, crank, unit)
+        else:
+            # cache-sized blocks, each solved whole, gathered into outputs allocated once
+            state, failures = _linkage_blocks.solve_blocks(self, steps, order, shape, sq, sw, sal, crank, unit)
+        if strict and not np.all(state.valid):
+            self._raise(failures, q, shape)
+        return LinkageSolution(self, order, state, failures)
+
+    def _solve_all(self, steps, order, shape, q, w, al, crank, unit):
+        """Solve inputs of `shape` (in the solving unit) at once; return the state and the failures."""
+        theta = None if crank is None else np.broadcast_to(q[crank], shape)
+        state, failures = self._run(steps, order, shape, q, w, al,
                                     _linkage_modes.modes(self._schedules(), steps, theta))
         if theta is not None:
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
                 _linkage_modes.bridge(self, steps, self._schedules(), crank, state, theta,
-                                      sw[crank], sal[crank], failures)
+                                      w[crank], al[crank], failures)
         state.drop_unfinished()
         failures = {k: v & ~state.valid for k, v in failures.items()}
         state.rescale(unit)
         state.drop_unfinished()         # a rate beyond the float range at this unit of length
-        if strict and not np.all(state.valid):
-            self._raise(failures, q, shape)
-        return LinkageSolution(self, order, state, failures)
+        return state, failures
 
     def _run(self, steps, order, shape, q, w, al, modes):
         """Solve `steps` (in the unit of `_unit_steps`); return the state and the failures.

@@ -182,6 +182,13 @@ def _crank_rocker_unit(theta, swing, alpha, side):
     side2 = np.imag(np.conj(D - B2) * (C2 - B2))
     side1 = np.imag(np.conj(D - B1) * (C1 - B1))
     revolves = revolves & (side1 * side2 > 0.0)
+    # near alpha_max the design tends to a change-point linkage (s + l = p + q): within the
+    # tolerance of `grashof`, FourBar continues it smoothly through the change point, off the
+    # crank-rocker's periodic motion, and the design cannot be checked by simulation
+    with np.errstate(invalid="ignore"):
+        links = np.sort(np.stack(np.broadcast_arrays(a, b, np.ones_like(a), d)), axis=0)
+        slack = links[1] + links[2] - links[0] - links[3]
+    revolves = revolves & ~(np.abs(slack) <= 1e-12 * np.sum(links, axis=0))
     gamma = np.where(revolves, np.minimum(_acute(k0), _acute(kpi)), -1.0)
     return R, H, a, b, d, gamma, revolves, (A, D, C1, C2)
 
@@ -201,7 +208,7 @@ def _build_crank_rocker(K, theta, c, swing, alpha, side):
     if not revolves:
         raise ValueError(
             f"Expected `alpha` for which the design is a crank-rocker (the crank passes both positions "
-            f"along the frame, both limit positions on one branch), got {alpha!r}"
+            f"along the frame, both limit positions on one branch, not a change-point linkage), got {alpha!r}"
         )
     A, D, C1, C2 = (complex(v) for v in points)
     design = _placed_crank_rocker(K, theta, c, swing, alpha, side, (float(a), float(b), float(d), float(gamma)),
@@ -258,7 +265,8 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     swing : float
         Rocker swing phi in (0, pi), radians.
     alpha : float, optional
-        Angle AOC1 in (0, pi - theta), radians.
+        Angle AOC1, radians: in (0, pi - theta) for (2-46), but only the part of that range
+        given in the Notes makes a working crank-rocker.
     crank : float, optional
         Crank length a in (0, c sin(phi/2)).
     coupler : float, optional
@@ -284,8 +292,15 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     of (0, pi - theta) gives a crank-rocker that does the task: the crank must pass both
     positions along the frame line, and the extended and folded limit positions must lie
     on one assembly branch (C on the same side of B->D at both); (2-46) does not ensure
-    the latter (it fails e.g. for a small swing with a large K), and such an alpha raises
-    ValueError. The returned `FourBar` is on the branch of both limit positions. A crank (or
+    the latter, and such an alpha raises ValueError. The alphas that work form the
+    interval (0, alpha_max), alpha_max = min(pi - theta, pi - phi, pi - 2 theta + phi) for
+    ``side=1`` and pi - 2 theta - phi for ``side=-1`` (none when that is <= 0): found by
+    sampling and tested on random tasks whose interval is wider than 0.02 rad, not derived.
+    Near alpha_max the design tends to a change-point linkage; within the tolerance of
+    `mech.planar.grashof` (s + l = p + q to 1e-12 of the perimeter) it is rejected too,
+    since `FourBar` then continues through the change point instead of rocking back. For K = 2 and phi = 30 deg, ``side=1`` keeps 3/4 of
+    (0, pi - theta) and ``side=-1`` 1/4; `crank_rocker_family` finds the interval of any
+    task. The returned `FourBar` is on the branch of both limit positions. A crank (or
     coupler) fixes alpha uniquely through ``a = 2R cos((theta + alpha)/2) sin(theta/2)``
     (or the line for b of (2-46)), both monotonic on (0, pi - theta).
 

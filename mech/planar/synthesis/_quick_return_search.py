@@ -102,7 +102,14 @@ def _stops(rate, t, xtol):
     roots = []
     for i in idx:
         lo, hi = t[i], t[i] + (t[1] - t[0])
-        roots.append(_optimize().brentq(lambda u: float(rate(np.array([u]))[0]), lo, hi, xtol=xtol) % _TWO_PI)
+        try:
+            roots.append(_optimize().brentq(lambda u: float(rate(np.array([u]))[0]), lo, hi, xtol=xtol) % _TWO_PI)
+        except ValueError:
+            # the rate at 2 pi is not the rate at 0: a change-point linkage, which the analysis
+            # continues through its change point instead of repeating its motion every turn
+            raise ValueError(f"Expected `linkage` whose output repeats every crank turn, got one whose output "
+                             f"rate jumps between crank angles {lo!r} and {hi!r} (a change-point linkage, "
+                             "s + l = p + q?)") from None
     return roots
 
 

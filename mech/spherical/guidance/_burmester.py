@@ -198,7 +198,7 @@ def circle_point_curve(R, *, samples=360, phi=None):
     Notes
     -----
     Eq. (8) of :ref:`deriv-spherical-guidance`. As the arcs shrink the curves tend to the
-    planar ones of `mech.planar.circle_point_curve` (tested).
+    planar ones of `mech.planar.synthesis.circle_point_curve` (tested).
 
     Examples
     --------
@@ -254,7 +254,7 @@ def slider_point_curve(R, *, samples=360, phi=None):
     Notes
     -----
     Eq. (7) of :ref:`deriv-spherical-guidance`. In the planar limit the cubic tends to the
-    slider-point circle of three poses (`mech.planar.slider_point_circle`).
+    slider-point circle of three poses (`mech.planar.synthesis.slider_point_circle`).
 
     Examples
     --------
@@ -343,8 +343,14 @@ def burmester(R, *, imag_tol=1e-6):
     directions and its coefficients taken by a discrete Fourier transform, exact for a form
     of degree 8. Near a double root (two Burmester points about to merge) the accuracy
     drops to about sqrt(machine epsilon), before polishing. The planar counterpart has at
-    most four solutions (`mech.planar.burmester`); as the arcs shrink four spherical
-    solutions tend to the planar ones and the other two become complex.
+    most four solutions (`mech.planar.synthesis.burmester`); as the arcs shrink four spherical
+    solutions tend to the planar ones and the other two become complex. The accuracy falls
+    as the displacements shrink: the equations hold the turns of the orientations at full
+    size but their translations only at the size of the arcs, so the small residual means
+    less. For Example 2-15 carried to the sphere by `planar_orientations` at scale s, the
+    four-bar it gives reproduces the orientations to 2e-15 rad at s = 1e-3 (cranks of about
+    0.1 rad), 2e-13 at 1e-4, 1e-11 at 1e-5, 2e-9 at 1e-6 and 1e-6 at 1e-7; `guidance_fourbars`
+    with its default ``rtol=1e-9`` passes none below s = 1e-6.
 
     Examples
     --------
@@ -383,14 +389,8 @@ def burmester(R, *, imag_tol=1e-6):
     Pa = _axis_angle(K[a] * sizes[a])[0]
     Pb = _axis_angle(K[b] * sizes[b])[0]
     Pab = _axis_angle((np.eye(3) + K[a].T * sizes[a]) @ (K[b] * sizes[b] - K[a] * sizes[a]))[0]
-    e1, e2 = _basis(Pa)
-    phi = np.arange(16) * (np.pi / 16)
-    v = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
-    f1, f2, f3 = _cubic_on_circles([K[a], K[b], K[c]], Pa, v)
-    g1, g2, g3 = _cubic_on_circles([K[a], K[b], K[d]], Pa, v)
-    rho = (f1 * g3 - f3 * g1) ** 2 - (f1 * g2 - f2 * g1) * (f2 * g3 - f3 * g2)
-    spectrum = np.fft.fft(rho) / 16.0
-    coef = np.array([spectrum[m % 16] for m in range(-4, 5)])        # x^0 .. x^8, x = exp(2j phi)
+    Ma, Mb = [K[a], K[b], K[c]], [K[a], K[b], K[d]]
+    coef, e1, e2 = _pencil_resultant(Ma, Mb, Pa)                     # x^0 .. x^8, x = exp(2j phi)
     top = np.max(np.abs(coef))
     if not top > 0.0:
         raise ValueError("Expected five orientations with finitely many Burmester dyads, got `R` whose two "
@@ -406,14 +406,7 @@ def burmester(R, *, imag_tol=1e-6):
         if abs(abs(x) - 1.0) > imag_tol:
             n_complex += 1
             continue
-        ph = 0.5 * np.angle(x)
-        vv = np.cos(ph) * e1 + np.sin(ph) * e2
-        F = _cubic_on_circles([K[a], K[b], K[c]], Pa, vv[None])
-        G = _cubic_on_circles([K[a], K[b], K[d]], Pa, vv[None])
-        (h1,), (h2,), (h3,) = F
-        (k1,), (k2,), (k3,) = G
-        w = (h2 * k3 - h3 * k2) * Pa - (h1 * k3 - h3 * k1) * vv
-        w /= np.linalg.norm(w)
+        w = _common_point(Ma, Mb, Pa, e1, e2, x)
         u = _null(np.stack([Kj @ w for Kj in K]))
         u, w = _polish(K, u, w)
         worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))

@@ -171,9 +171,9 @@ def guidance_fourbars(R, dyads=None, *, rtol=1e-9):
 
     Returns
     -------
-    mech.planar.GuidanceSynthesis
+    mech.planar.synthesis.GuidanceSynthesis
         ``dyads``, ``candidates`` (every `SphericalGuidanceFourBar`, both choices of input)
-        and ``passing``, as for the planar `mech.planar.guidance_fourbars`.
+        and ``passing``, as for the planar `mech.planar.synthesis.guidance_fourbars`.
 
     Raises
     ------

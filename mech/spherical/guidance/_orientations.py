@@ -42,6 +42,15 @@ def orientation_set(name, value, counts=None, tol=1e-9):
     return R
 
 
+def _stacks_broadcast(**leads):
+    """Check that the leading (stack) shapes of named arguments broadcast; name them if not."""
+    try:
+        return np.broadcast_shapes(*leads.values())
+    except ValueError:
+        listed = ", ".join(f"`{k}` {tuple(v)}" for k, v in leads.items())
+        raise ValueError(f"Expected stacks that broadcast together, got leading shapes {listed}") from None
+
+
 def _parts(R1, Rj):
     """The generated entries of K = D_j1 - I = (R_j - R_1) R_1^T, shape (..., 3, 3)."""
     args = [R1[..., i, k] for i in range(3) for k in range(3)] + [Rj[..., i, k] for i in range(3) for k in range(3)]
@@ -82,6 +91,7 @@ def relative_rotation(R_1, R_j):
     """
     R1 = orientation_set("R_1", R_1)
     Rj = orientation_set("R_j", R_j)
+    _stacks_broadcast(R_1=R1.shape[:-2], R_j=Rj.shape[:-2])
     squeeze = np.ndim(R_1) == 2 and np.ndim(R_j) == 2
     K = _parts(R1, Rj)
     D = K + np.eye(3)
@@ -142,7 +152,7 @@ def rotation_pole(R_1, R_j):
     Notes
     -----
     Eq. (3) of :ref:`deriv-spherical-guidance`. As the turns shrink to zero about points
-    near the north pole, the pole tends to the planar pole of `mech.planar.pole`.
+    near the north pole, the pole tends to the planar pole of `mech.planar.synthesis.pole`.
 
     Examples
     --------
@@ -244,6 +254,7 @@ def crank_residual(R_1, R_j, circle_point, centre_point):
     squeeze = np.ndim(R_1) == 2 and np.ndim(R_j) == 2
     if squeeze:
         R1, Rj = R1[0], Rj[0]
+    _stacks_broadcast(R_1=R1.shape[:-2], R_j=Rj.shape[:-2], circle_point=z.shape[:-1], centre_point=u.shape[:-1])
     args = ([u[..., i] for i in range(3)] + [z[..., i] for i in range(3)]
             + [R1[..., i, k] for i in range(3) for k in range(3)] + [Rj[..., i, k] for i in range(3) for k in range(3)])
     return np.asarray(_gen.sg_crank_residual(*args))[()]
@@ -291,6 +302,7 @@ def slider_residual(R_j, slider_point, guide_pole):
         Rj = Rj[0]
     z = _vectors("slider_point", slider_point)
     n = _vectors("guide_pole", guide_pole)
+    _stacks_broadcast(R_j=Rj.shape[:-2], slider_point=z.shape[:-1], guide_pole=n.shape[:-1])
     args = [n[..., i] for i in range(3)] + [z[..., i] for i in range(3)] + [Rj[..., i, k] for i in range(3)
                                                                            for k in range(3)]
     return np.asarray(_gen.sg_slider_residual(*args))[()]

@@ -23,6 +23,16 @@ from mech.spherical.linkage._linkage import SphericalLinkage
 __all__ = ["SphericalOptimalSixBar", "optimal_guidance_watt2"]
 
 _NAMES = ("A", "D", "F", "B", "C", "E", "G")
+#: the dyads' joints are kept this far (sin of the arc) from the great circle of their pins
+_HEIGHT = 0.05
+#: inputs between the first and last prescribed angle where that is enforced
+_GUARD = 64
+#: the optimiser's cap of residual evaluations (finite differences included)
+_MAX_NFEV = 4000
+#: the optimiser stops when a step changes the cost or the variables by less than this (relative)
+_TOL = 1e-8
+#: relative step of the forward differences (about the square root of the machine epsilon)
+_FD_STEP = 1.5e-8
 
 
 @dataclass(frozen=True)
@@ -49,7 +59,11 @@ class SphericalOptimalSixBar:
     passes : bool
         ``in_order`` and ``pose_error <= rtol``.
     nfev : int
-        Residual evaluations of the optimiser.
+        Residual evaluations of the optimiser (not counting its forward-difference
+        Jacobians, each one batched evaluation of the 17 designs it needs).
+    converged : bool
+        The optimiser stopped on its tolerance (a stationary point), not on its cap of
+        evaluations.
     """
 
     linkage: SphericalLinkage
@@ -62,6 +76,7 @@ class SphericalOptimalSixBar:
     in_order: bool
     passes: bool
     nfev: int
+    converged: bool = True
 
     def guided_orientations(self, theta):
         """Orientation R of the guided body (task frame) at task input angles `theta`."""
@@ -81,10 +96,17 @@ def _rotvec(w):
     return np.eye(3) + np.sin(t) * K + (1.0 - np.cos(t)) * (K @ K)
 
 
+def _cross(a, b):
+    """Cross products along the last axis (np.cross costs more than the arithmetic here)."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=-1)
+
+
 def _joint(P1, P2, c1, c2, sign):
     """The point J with J.P1 = c1, J.P2 = c2 on the side `sign` of P1 -> P2, eq. (5)."""
     g = np.sum(P1 * P2, axis=-1)
-    n = np.cross(P1, P2)
+    n = _cross(P1, P2)
     nn = np.sum(n * n, axis=-1)
     al = (c1 - g * c2) / nn
     be = (c2 - g * c1) / nn
@@ -95,36 +117,62 @@ def _joint(P1, P2, c1, c2, sign):
 
 
 def _turn(p, axis, angle):
-    """Rodrigues: p turned by `angle` (shape (m,)) about the unit `axis`, counter-clockwise."""
-    c, s = np.cos(angle)[:, None], np.sin(angle)[:, None]
-    return p * c + np.cross(axis, p) * s + axis * (axis @ p) * (1.0 - c)
+    """Rodrigues: p turned by `angle` about the unit `axis`, counter-clockwise (broadcast)."""
+    c, s = np.cos(angle)[..., None], np.sin(angle)[..., None]
+    return p * c + _cross(axis, p) * s + axis * np.sum(axis * p, axis=-1, keepdims=True) * (1.0 - c)
 
 
-def _guided_frames(pts, branches, turn):
-    """Frames of EG after the crank turns by `turn` from the assembly `pts` (closed form)."""
+def _heights(P1, P2, J):
+    """sin of the arc from the joint J to the great circle through its pins P1, P2 (0 at a
+    dead point of the dyad, where its two assemblies meet)."""
+    n = _cross(P1, P2)
+    return np.abs(np.sum(n * J, axis=-1)) / np.linalg.norm(n, axis=-1)
+
+
+def _guided_frames(pts, branches, turn, heights=False):
+    """Frames of EG after the crank turns by `turn` from the assembly `pts` (closed form);
+    with ``heights=True`` also the dyads' `_heights` at every turn. The points may be
+    batches of shape (k, 1, 3) (k designs at once, for the Jacobian): then the frames have
+    shape (k, m, 3, 3)."""
     A, D, F, B0, C0, E0, G0 = (pts[k] for k in _NAMES)
+
+    def dot(p, q):
+        return np.sum(p * q, axis=-1)
+
     B = _turn(B0, A, turn)
-    C = _joint(B, np.broadcast_to(D, B.shape), np.dot(B0, C0), np.dot(D, C0), branches[0])
-    u, w = np.cross(D, C0), np.cross(D, C)                       # the rocker's turn about D
-    E = _turn(E0, D, np.arctan2(np.cross(u, w) @ D, w @ u))
-    G = _joint(E, np.broadcast_to(F, E.shape), np.dot(E0, G0), np.dot(F, G0), branches[1])
+    Ds = np.broadcast_to(D, B.shape)
+    C = _joint(B, Ds, dot(B0, C0), dot(D, C0), branches[0])
+    u, w = _cross(D, C0), _cross(D, C)                       # the rocker's turn about D
+    E = _turn(E0, D, np.arctan2(dot(_cross(u, w), D), dot(w, u)))
+    Fs = np.broadcast_to(F, E.shape)
+    G = _joint(E, Fs, dot(E0, G0), dot(F, G0), branches[1])
     with np.errstate(invalid="ignore"):
-        return _frame(E, G)
+        t = G - np.sum(E * G, axis=-1, keepdims=True) * E
+        t = t / np.linalg.norm(t, axis=-1, keepdims=True)
+        frames = np.stack([E, t, _cross(E, t)], axis=-1)             # _frame(E, G)
+        if not heights:
+            return frames
+        return frames, np.stack([_heights(B, Ds, C), _heights(E, Fs, G)])
 
 
 def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     """The Watt-2 six-bar nearest (least squares in orientation) to n > 5 orientations.
 
     Variables (the optimal-design model of §1.9): the seven joints A, D, F, B, C, E, G of
-    the assembly the linkage is built from (two tangent coordinates each) and the body's
-    axes relative to the frame of EG (a rotation vector): 17 numbers; the crank turns by
+    the assembly the linkage is built from (two tangent coordinates each, but A only along
+    the great circle A -> D: turning the loop A-B-C about D changes nothing) and the body's
+    axes relative to the frame of EG (a rotation vector): 16 numbers; the crank turns by
     the start's amount from that assembly to the first orientation (moving the assembly
     covers a change of the input offset). Objective: the sum over the orientations of
     ``|F_j body - R_j|^2`` (Frobenius) with F_j the frame of EG at the prescribed input,
     eq. (6) of :ref:`deriv-spherical-guidance-sixbar`, solved in closed form on the
     start's branches (eq. (5)); where it cannot assemble the residual is the largest
-    possible. Minimised by `scipy.optimize.least_squares` (at most 200 evaluations); the
-    errors returned are measured again with `SphericalLinkage`.
+    possible. Constraint, eq. (6a): on 64 inputs from the first prescribed angle to the
+    last each dyad's joint stays at least 0.05 (sine of the arc) from the great circle
+    through its pins, so the optimum keeps clear of dead points and stays in order.
+    Minimised by `scipy.optimize.least_squares` (Levenberg-Marquardt with forward
+    differences) to a stationary point (`converged`); the errors returned are measured
+    again with `SphericalLinkage`.
 
     Parameters
     ----------
@@ -183,12 +231,18 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
         body0 = F0.T @ start.guided_orientations(theta[:1])[0]
     branches = tuple(s[-1] for s in start.linkage._steps if s[0] == "rrr")
     T = {k: _tangents(P0[k]) for k in _NAMES}
+    # turning the loop A-B-C about D leaves the motion unchanged (the input is measured from
+    # A -> D, the rocker's turn relative to C): A moves along the great circle A -> D only
+    tA = P0["D"] - np.dot(P0["A"], P0["D"]) * P0["A"]
+    T["A"] = np.stack([tA / np.linalg.norm(tA), np.zeros(3)])
     # the input offset is carried as a shift from the assembly's own angle at A
     shift0 = float(start.input_offset) - (float(angle_at(P0["A"], P0["D"], P0["B"])) - float(theta[0]))
+    guard = np.linspace(theta[0], theta[-1], _GUARD) - theta[0] + shift0
 
     def unpack(x):
-        pts = {k: _point(P0[k], T[k], x[2 * i:2 * i + 2]) for i, k in enumerate(_NAMES)}
-        body = body0 @ _rotvec(x[14:17])
+        xa = np.concatenate(([x[0], 0.0], x[1:13]))
+        pts = {k: _point(P0[k], T[k], xa[2 * i:2 * i + 2]) for i, k in enumerate(_NAMES)}
+        body = body0 @ _rotvec(x[13:16])
         return pts, body, shift0
 
     def model(x):
@@ -196,13 +250,35 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
         lk, built = _build(pts["A"], pts["D"], pts["F"], pts["B"], pts["C"], pts["E"], pts["G"], branches)
         return lk, body, built - float(theta[0]) + shift
 
-    def residual(x):
-        # the closed-form poses, eq. (5), for speed; the result is checked by SphericalLinkage
-        pts, body, shift = unpack(x)
-        gap = _guided_frames(pts, branches, theta - theta[0] + shift) @ body - R
-        return np.nan_to_num(gap, nan=2.0).ravel()
+    turns = np.concatenate((theta - theta[0] + shift0, guard))
 
-    sol = least_squares(residual, np.zeros(17), x_scale="jac", xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=200)
+    def residuals(X):
+        """The residuals of the designs X (shape (k, 16)) at once, shape (k, 9 n + 2 _GUARD)."""
+        k = X.shape[0]
+        xa = np.concatenate((X[:, :1], np.zeros((k, 1)), X[:, 1:13]), axis=1)
+        pts = {key: _point(P0[key], T[key], xa[:, 2 * i:2 * i + 2])[:, None, :] for i, key in enumerate(_NAMES)}
+        bodies = np.stack([body0 @ _rotvec(x[13:16]) for x in X])
+        # the closed-form poses, eq. (5), for speed; the result is checked by SphericalLinkage
+        frames, h = _guided_frames(pts, branches, turns, heights=True)
+        gap = frames[:, :n] @ bodies[:, None] - R[None]
+        # the constraint (eq. (6a)): every dyad stays clear of its dead point between the first
+        # and the last input, so the optimum keeps one branch in order
+        keep = np.maximum(0.0, _HEIGHT - np.nan_to_num(h[:, :, n:], nan=-1.0)).transpose(1, 0, 2)
+        return np.concatenate((np.nan_to_num(gap, nan=2.0).reshape(k, -1), keep.reshape(k, -1)), axis=1)
+
+    def residual(x):
+        return residuals(x[None])[0]
+
+    def jacobian(x):
+        # forward differences, all 16 columns in one batched evaluation
+        step = _FD_STEP * np.maximum(1.0, np.abs(x))
+        F = residuals(np.vstack((x, x + np.diag(step))))
+        return (F[1:] - F[0]).T / step
+
+    # Levenberg-Marquardt on unit-scaled variables (all are angles of the order of the
+    # design's own)
+    sol = least_squares(residual, np.zeros(16), jac=jacobian, method="lm", xtol=_TOL, ftol=_TOL, gtol=_TOL,
+                        max_nfev=_MAX_NFEV)
     lk, body, offset = model(sol.x)
     pts, _, _ = unpack(sol.x)
     pose = lk.solve(theta + offset)
@@ -213,4 +289,4 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     in_order = bool(lk.solve(np.linspace(theta[0], theta[-1], sweep) + offset).assembled.all())
     return SphericalOptimalSixBar(lk, float(offset), pts, body, errors, float(np.sqrt(np.mean(errors ** 2))),
                                   float(errors.max()), in_order, in_order and float(errors.max()) <= rtol,
-                                  int(sol.nfev))
+                                  int(sol.nfev), bool(sol.status > 0))

@@ -9,12 +9,14 @@ derived in ``derivations/spherical/coupler_curve.md``.
 import numpy as np
 
 from mech._generated import spherical_coupler_curve as _gen
-from mech._validate import finite_array, instance
+from mech._validate import finite_array, instance, option, real_number
+from mech.spherical.path import _octic_small
 
 __all__ = ["CouplerOctic", "coupler_octic", "coupler_quartic", "nine_parameters"]
 
 _BLOCK = 1 << 14          # points per call of the generated code (cache-sized temporaries)
 _NAMES = ("lon", "lat", "heading", "a", "b", "c", "d", "r", "gamma")
+_FORMS = ("auto", "direct", "scaled")
 
 
 def nine_parameters(linkage):
@@ -54,6 +56,11 @@ def nine_parameters(linkage):
     return np.array([lon, lat, heading, linkage.a, linkage.b, linkage.c, linkage.d, *linkage.coupler])
 
 
+def _frame_of(linkage):
+    """The placement rotation of a SphericalFourBar as it stores it (exact for frame=None)."""
+    return np.eye(3) if linkage.frame is None else np.array(linkage.frame, dtype=float)
+
+
 def _parameters(linkage):
     """Validated parameters, shape (..., 9), from an array or a SphericalFourBar."""
     from mech.spherical._fourbar import SphericalFourBar
@@ -77,8 +84,12 @@ def _parameters(linkage):
     return p
 
 
-def _evaluate(function, degree, linkage, points):
-    """Evaluate a generated curve function at unit directions, then scale by |x|**degree."""
+def _evaluate(function, degree, linkage, points, *, form="direct", frame=None, small=0.0):
+    """Evaluate a generated curve function at unit directions, then scale by |x|**degree.
+
+    For the octic, `form` chooses the direct eq. (4) or the scaled eqs. (7)-(9) per point
+    (see `coupler_octic`); `frame` is the placement rotation, (3, 3) or (..., 3, 3).
+    """
     p = _parameters(linkage)
     x = finite_array("points", points)
     if x.ndim == 0 or x.shape[-1] != 3:
@@ -98,12 +109,29 @@ def _evaluate(function, degree, linkage, points):
     one_linkage = p.ndim == 1
     value = np.empty(u.shape[0])
     grad = np.empty((u.shape[0], 3))
-    for s in range(0, u.shape[0], _BLOCK):
+    scaled = np.zeros(u.shape[0], dtype=bool)
+    if form == "scaled" or (form == "auto" and np.any(_octic_small.linkage_size(p) <= small)):
+        R = _octic_small.frames(p) if frame is None else frame
+        flat_R = np.broadcast_to(R, shape + (3, 3)).reshape(-1, 3, 3)
+        cosine = np.einsum("ni,ni->n", u, flat_R[:, :, 2])           # cos of the arc from A to the point
+        size = _octic_small.linkage_size(flat_p)
+        # the scaled form on the half of the sphere centred at A (u . A > 0), for linkages
+        # no larger than `small` ("auto") or for all ("scaled")
+        scaled = (cosine > 0.0) & ((size <= small) | (form == "scaled"))
+    direct = np.flatnonzero(~scaled) if np.any(scaled) else slice(None)
+    u_direct, p_direct = u[direct], (p if one_linkage else flat_p[direct])
+    for s in range(0, u_direct.shape[0], _BLOCK):
         blk = slice(s, s + _BLOCK)
-        args = p if one_linkage else flat_p[blk].T
-        out = function(*np.ascontiguousarray(u[blk].T), *args)
-        value[blk] = out[0]
-        grad[blk] = np.stack(np.broadcast_arrays(*out[1:]), axis=-1)
+        args = p if one_linkage else p_direct[blk].T
+        out = function(*np.ascontiguousarray(u_direct[blk].T), *args)
+        rows = direct[blk] if np.any(scaled) else blk
+        value[rows] = out[0]
+        grad[rows] = np.stack(np.broadcast_arrays(*out[1:]), axis=-1)
+    if np.any(scaled):
+        one_R = np.ndim(R) == 2
+        value[scaled], grad[scaled] = _octic_small.octic_small(
+            p if one_linkage and one_R else flat_p[scaled], R if one_linkage and one_R else flat_R[scaled],
+            u[scaled], block=_BLOCK)
     value, grad = value.reshape(shape), grad.reshape(shape + (3,))
     if degree is None:
         return value, grad
@@ -119,7 +147,7 @@ def _evaluate(function, degree, linkage, points):
     return value, grad
 
 
-def coupler_octic(linkage, points):
+def coupler_octic(linkage, points, *, form="auto", small=0.1):
     """The eighth-order coupler curve F(x) = 0 of a spherical four-bar, and its gradient.
 
     F is the homogeneous octic of eq. (4) of the derivation (monograph §2.1): it vanishes
@@ -134,6 +162,13 @@ def coupler_octic(linkage, points):
         coupler point (`SphericalFourBar`'s ``coupler``). Many linkages broadcast.
     points : array_like, shape (..., 3)
         Points (any non-zero vectors: F is homogeneous of degree 8), radians-free.
+    form : {"auto", "direct", "scaled"}, optional
+        "direct" evaluates eq. (4); "scaled" evaluates eqs. (7)-(9), the form without
+        cancellation for small linkages, at the points on the half of the sphere centred at
+        A (the rest directly); "auto" (default) does the same for linkages whose size, the
+        largest of a, b, c, d and r, is at most `small`.
+    small : float, optional
+        The largest linkage size (radians) that "auto" evaluates in the scaled form.
 
     Returns
     -------
@@ -145,16 +180,22 @@ def coupler_octic(linkage, points):
     Raises
     ------
     ValueError
-        If an input is not finite, has the wrong shape, an arc is outside (0, pi), or a
-        point is so long that |x|**8 overflows.
+        If an input is not finite, has the wrong shape, an arc is outside (0, pi), `form`
+        is unknown, `small` < 0, or a point is so long that |x|**8 overflows.
 
     Notes
     -----
-    Derivation: :ref:`deriv-spherical-coupler-curve`, eqs. (1)-(4). The orientation of
-    the coupler triangle is kept by the sign of gamma: the mirrored triangle
-    ``(r, -gamma)`` traces a different curve. Evaluated in double precision at unit
-    directions; as the arcs shrink F vanishes like eps**12 and its rounding error grows
-    relative to it (the derivation page gives the planar limit in exact arithmetic).
+    Derivations: :ref:`deriv-spherical-coupler-curve`, eqs. (1)-(4), and
+    :ref:`deriv-spherical-coupler-small`, eqs. (7)-(9). The orientation of the coupler
+    triangle is kept by the sign of gamma: the mirrored triangle ``(r, -gamma)`` traces a
+    different curve. For a linkage of size eps, F is of order eps**12 near it; the direct
+    form, built from terms of order one, then keeps only about 1e-16 / eps**2 of relative
+    accuracy (1e-8 at eps = 1e-4), while the scaled form divides the powers of eps out
+    symbolically and keeps about 1e-15 down to eps = 1e-8 and beyond (measured on
+    :ref:`book-spherical-planar-limit`); it costs about five times as much per point. For
+    a `SphericalFourBar` its own frame is used as stored (exact for ``frame=None``); from
+    nine parameters the frame is rounded, which moves A by about 1e-16, a relative change
+    of about 1e-16 / eps in a linkage of size eps.
 
     Examples
     --------
@@ -168,8 +209,28 @@ def coupler_octic(linkage, points):
     True
     >>> coupler_octic([0.0, 1.5707963, 0.0, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8], np.ones((2, 4, 3)))[1].shape
     (2, 4, 3)
+
+    A linkage a millionth of the sphere's radius across, evaluated both ways:
+
+    >>> tiny = SphericalFourBar(1e-6, 3.5e-6, 3e-6, 3.2e-6, coupler=(1.7e-6, 0.49))
+    >>> x = [1.3e-6, 2.1e-6, 1.0]
+    >>> scaled, _ = coupler_octic(tiny, x)
+    >>> direct, _ = coupler_octic(tiny, x, form="direct")
+    >>> float(scaled / 1e-6**12)              # near the planar limit ell S / (16 r**2)
+    -3465.00...
+    >>> bool(abs(direct / scaled - 1) > 1e-4)  # the direct form has lost digits here
+    True
     """
-    return _evaluate(_gen.spherical_coupler_octic, 8, linkage, points)
+    form = option("form", form, _FORMS)
+    small = real_number("small", small)
+    if small < 0.0:
+        raise ValueError(f"Expected `small` >= 0, got {small!r}")
+    frame = None
+    from mech.spherical._fourbar import SphericalFourBar
+
+    if isinstance(linkage, SphericalFourBar):
+        frame = _frame_of(linkage)
+    return _evaluate(_gen.spherical_coupler_octic, 8, linkage, points, form=form, frame=frame, small=small)
 
 
 def coupler_quartic(linkage, points):
@@ -219,8 +280,8 @@ class CouplerOctic:
     """The implicit coupler curve of one `SphericalFourBar` (from
     `SphericalFourBar.coupler_curve_polynomial`).
 
-    Calling it evaluates the octic F (value, gradient) as `coupler_octic` does; `quartic`
-    evaluates Q, `lonlat` the longitude-latitude form ``Q(to_xyz(lon, lat))``; `params` are
+    Calling it evaluates the octic F (value, gradient) as `coupler_octic` does, in the
+    linkage's own frame (with the same `form` and `small` options); `quartic` evaluates Q, `lonlat` the longitude-latitude form ``Q(to_xyz(lon, lat))``; `params` are
     the nine parameters. Other forms: the parametric curve is `SphericalFourBar.solve`
     (P, vP, aP over the input angle).
 
@@ -236,12 +297,19 @@ class CouplerOctic:
 
     def __init__(self, linkage):
         self._params = nine_parameters(linkage)
+        self._frame = _frame_of(linkage)
 
     params = property(lambda self: self._params.copy(), doc="(lon, lat, heading, a, b, c, d, r, gamma).")
 
-    def __call__(self, points):
-        """F and its gradient at `points`, shape (..., 3) (see `coupler_octic`)."""
-        return coupler_octic(self._params, points)
+    def __call__(self, points, *, form="auto", small=0.1):
+        """F and its gradient at `points`, shape (..., 3) (see `coupler_octic`, also for
+        `form` and `small`), in the linkage's own frame."""
+        form = option("form", form, _FORMS)
+        small = real_number("small", small)
+        if small < 0.0:
+            raise ValueError(f"Expected `small` >= 0, got {small!r}")
+        return _evaluate(_gen.spherical_coupler_octic, 8, self._params, points, form=form, frame=self._frame,
+                         small=small)
 
     def quartic(self, points):
         """Q and its gradient at `points`, shape (..., 3) (see `coupler_quartic`)."""

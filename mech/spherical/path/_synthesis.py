@@ -14,8 +14,10 @@ points ``Q_i`` on the unit sphere at prescribed input angles ``theta_i``. Two fo
   when P is at ``Q_i``. Every residual is a dot product, but nothing ties C_i to one
   branch; the result is proved by the same analysis.
 
-Derivation of the objective and its gradient: ``derivations/spherical/path_synthesis.md``.
-SciPy is imported when a synthesis runs, never at ``import mech``.
+Derivation of the objective and its gradient: the section "Derivation: the objective and its
+gradient (§2.5)" of ``book/spherical/path-synthesis.md``.
+The six-bar (`path_stephenson1`) is in ``_sixpath``, which adds an assembly constraint
+and a batch evaluation. SciPy is imported when a synthesis runs, never at ``import mech``.
 """
 
 import time
@@ -26,7 +28,7 @@ import numpy as np
 from mech._validate import branch_sign, finite_array, option, real_array, real_number
 from mech.spherical._fourbar import SphericalFourBar, ground_frame
 
-__all__ = ["SphericalPathDesign", "path_fourbar", "path_stephenson1", "path_verify"]
+__all__ = ["SphericalPathDesign", "path_fourbar", "path_verify"]
 
 _TINY = 1e-3                                   # arcs kept in [_TINY, pi - _TINY]
 _NINE = ("lon", "lat", "heading", "a", "b", "c", "d", "r", "gamma")
@@ -390,64 +392,3 @@ def _from_joints(A, D, B, C, P, theta1):
     branch = 1 if np.linalg.det(np.array([B, D, C])) > 0 else -1
     x = np.array([lon, lat, heading, arc(A, B), arc(B, C), arc(C, D), arc(A, D), arc(B, P), gamma])
     return SphericalFourBar(*x[3:7], branch=branch, coupler=(x[7], x[8]), frame=R), x
-
-
-def path_stephenson1(points, theta, start, *, metric="arc", branches=(1, 1), tol=1e-3):
-    """Synthesise a Stephenson-1 spherical six-bar path generator with prescribed input angles.
-
-    Minimises ``sum_i dist(P(x, theta_i), Q_i)^2`` over the fifteen parameters ``x = (lon,
-    lat, heading, a, b, c, d, E_r, E_gamma, F_r, F_gamma, e, f, r, gamma)`` of
-    `stephenson1` placed by `ground_frame` (monograph §§2.4.1, 2.5), and verifies the result
-    by analysis with `SphericalLinkage` (`path_verify`).
-
-    Parameters
-    ----------
-    points : array_like, shape (n, 3)
-        Prescribed points, unit vectors.
-    theta : array_like, shape (n,)
-        Prescribed crank angles, strictly monotonic within one turn, radians.
-    start : array_like, shape (15,)
-        Starting parameters in the order above (E and F as ``(r, gamma)`` on the crank and
-        the rocker, ``e, f`` the arcs EG and FG, ``r, gamma`` the coupler point on EG).
-    metric : {"arc", "chord"}, optional
-    branches : (int, int), optional
-        Branches of the dyads B-C-D and E-G-F, kept throughout.
-    tol : float, optional
-        Arc error allowed for `SphericalPathDesign.passes`, radians.
-
-    Returns
-    -------
-    SphericalPathDesign
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from mech.spherical import path_stephenson1
-    >>> from mech.spherical.path._synthesis import _stephenson
-    >>> x = np.array([0.2, 1.1, 0.3, 0.3, 0.9, 0.7, 1.0, 0.2, 0.8, 0.3, -1.0, 0.8, 0.7, 0.4, 0.5])
-    >>> th = np.linspace(0.0, 1.6, 7)
-    >>> Q = _stephenson(x, (1, 1)).solve(th).points["P"]
-    >>> d = path_stephenson1(Q, th, x + 0.02)
-    >>> bool(d.passes), d.max_error < 1e-6
-    (True, True)
-    """
-    Q, th = _task(points, theta)
-    x0 = _start(start, 15)
-    metric = option("metric", metric, ("arc", "chord"))
-    if not isinstance(branches, (tuple, list)) or len(branches) != 2:
-        raise ValueError(f"Expected `branches` to be two signs (+1 or -1), got {branches!r}")
-    branches = tuple(branch_sign(v, "branches") for v in branches)
-    tol = _tol(tol)
-    from scipy.optimize import least_squares
-
-    lo, hi = _bounds(_FIFTEEN)
-    x0 = np.clip(x0, lo + 1e-12, hi - 1e-12)
-    t0 = time.perf_counter()
-
-    def fun(x):
-        return _residual_vectors(_coupler(_stephenson(x, branches), th), Q, metric).ravel()
-
-    sol = least_squares(fun, x0, bounds=(lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=1500)
-    seconds = time.perf_counter() - t0
-    return _design(_stephenson(sol.x, branches), "stephenson1", "distance", sol.x, _FIFTEEN, Q, th, tol,
-                   seconds, sol.nfev)
