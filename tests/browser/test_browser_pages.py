@@ -112,3 +112,14 @@ def test_only_the_search_page_loads_the_search_index():
         unavailable(f"no built book at {HTML.relative_to(ROOT)} (run `make book` first)")
     loading = [page for page in PAGES if "searchindex.js" in (HTML / page).read_text(encoding="utf-8")]
     assert loading == ["search.html"]
+
+
+def test_key_components_keep_their_styles(chromium):
+    """The CSS purge (book/_ext/css_purge.py) left the theme's key components styled: the
+    header, side bar, code cells, exercises, the drop-down, tooltip and search dialog that
+    scripts open, dark mode and the phone layout (``_crawl.STYLE_CHECKS``)."""
+    if not PAGES:
+        unavailable(f"no built book at {HTML.relative_to(ROOT)} (run `make book` first)")
+    page = "forces/exercises.html"  # code cells, exercises with solutions, hidden cells
+    assert page in PAGES
+    assert _crawl.style_problems(HTML, page, executable=chromium) == []
