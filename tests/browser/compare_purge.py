@@ -2,7 +2,7 @@
 
 Usage (a script, not a test: it takes many minutes)::
 
-    PYTHONPATH=. python tests/browser/compare_purge.py BEFORE_HTML AFTER_HTML OUT_DIR [PAGE ...]
+    PYTHONPATH=. python tests/browser/compare_purge.py BEFORE_HTML AFTER_HTML OUT_DIR [--reverse] [PAGE ...]
 
 BEFORE_HTML is a built book without the purge, AFTER_HTML the same book purged
 (``python -m book._ext.css_purge`` style: see ``purge_copy`` below, or a build). Every page
@@ -65,7 +65,8 @@ INTERACTIONS = [
     ("theme-switch", 1280, "light", [("click", "button.theme-switch-button:visible")]),
     ("copy-button", 1280, "light", [("hover", "div.highlight")]),
     ("hide-sidebar", 1280, "light", [("click", "button.primary-toggle.btn:visible")]),
-    ("toctree-expand", 1280, "light", [("click", "nav.bd-docs-nav details > summary:visible")]),
+    ("toctree-expand", 1280, "light", [("js", "document.querySelector('nav.bd-docs-nav details:not([open]) > summary')"
+                                              ".click()")]),
     ("details-open", 1280, "light", [("click", "details.sd-dropdown > summary:visible, .bd-article details > summary:visible, "
                                                "button.toggle-button:visible")]),
     ("details-open-dark", 1280, "dark", [("click", "details.sd-dropdown > summary:visible, .bd-article details > summary:visible, "
@@ -77,10 +78,10 @@ INTERACTIONS = [
 
 async def _shot(context, url, full_page=True, actions=()):
     page = await context.new_page()
-    page.set_default_timeout(8000)
+    page.set_default_timeout(15000)  # a missing button fails fast ...
     try:
-        await page.goto(url, wait_until="load")
-        await page.evaluate(PREPARE)
+        await page.goto(url, wait_until="load", timeout=180000)  # ... a busy machine does not
+        await page.evaluate(PREPARE)  # (evaluate has no timeout)
         for kind, arg in actions:
             if kind == "click":
                 await page.locator(arg).first.click()
@@ -88,10 +89,13 @@ async def _shot(context, url, full_page=True, actions=()):
                 await page.locator(arg).first.hover()
             elif kind == "key":
                 await page.keyboard.press(arg)
+            elif kind == "js":
+                await page.evaluate(arg)
             elif kind == "scroll":
                 await page.evaluate(f"window.scrollTo(0, {arg})")
             await page.wait_for_timeout(700)  # transitions (Bootstrap's are 0.15 to 0.3 s)
-        return await page.screenshot(full_page=full_page, animations="disabled", caret="hide", type="png")
+        return await page.screenshot(full_page=full_page, animations="disabled", caret="hide", type="png",
+                                     timeout=180000)
     finally:
         await page.close()
 
@@ -125,7 +129,7 @@ def _save(a, b, out, stem):
         ImageChops.difference(ia, ib).convert("RGB").point(lambda v: 255 if v else 0).save(out / f"{stem}-diff.png")
 
 
-async def compare(before, after, out, pages, interaction_pages):
+async def compare(before, after, out, pages, interaction_pages, reverse=False):
     from playwright.async_api import async_playwright
 
     out.mkdir(parents=True, exist_ok=True)
@@ -143,6 +147,8 @@ async def compare(before, after, out, pages, interaction_pages):
             jobs = [(rel, mode, width, ()) for rel in pages for mode, width in SETUPS]
             jobs += [(rel, mode, width, (name, acts)) for rel in interaction_pages
                      for name, width, mode, acts in INTERACTIONS]
+            if reverse:  # a second process can start from the other end
+                jobs.reverse()
             contexts = {}
             for rel, mode, width, extra in jobs:
                 if (mode, width) not in contexts:
@@ -172,18 +178,20 @@ async def compare(before, after, out, pages, interaction_pages):
                     _save(shots_b[0], shots_a[0], out, stem)
                     failures.append(f"{stem}: {count} pixels differ")
                     print(failures[-1], flush=True)
-                elif done % 40 == 0:
-                    print(f"{done}/{len(jobs)} pairs identical so far", flush=True)
+                else:
+                    print(f"identical ({done}/{len(jobs)}): {stem}", flush=True)
             await browser.close()
     return done, failures, skipped, redrawn
 
 
 def main(argv):
+    reverse = "--reverse" in argv
+    argv = [a for a in argv if a != "--reverse"]
     before, after, out = (Path(a) for a in argv[:3])
     pages = argv[3:] or _crawl.built_pages(before)
     interaction_pages = [p for p in ("derivations/planar/cognates.html", "forces/exercises.html",
                                      "spatial/rssr.html") if (before / p).exists()]
-    done, failures, skipped, redrawn = asyncio.run(compare(before, after, out, pages, interaction_pages))
+    done, failures, skipped, redrawn = asyncio.run(compare(before, after, out, pages, interaction_pages, reverse))
     print(f"{done} pairs compared ({len(pages)} pages x {len(SETUPS)} set-ups, "
           f"{len(interaction_pages)} pages x {len(INTERACTIONS)} interactions); {len(failures)} differ, "
           f"{len(skipped)} interactions not offered by a page, {len(redrawn)} pairs drawn again")
