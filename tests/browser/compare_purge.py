@@ -2,7 +2,7 @@
 
 Usage (a script, not a test: it takes many minutes)::
 
-    PYTHONPATH=. python tests/browser/compare_purge.py BEFORE_HTML AFTER_HTML OUT_DIR [--reverse] [PAGE ...]
+    PYTHONPATH=. python tests/browser/compare_purge.py BEFORE_HTML AFTER_HTML OUT_DIR [--reverse] [--interactions-only] [PAGE ...]
 
 BEFORE_HTML is a built book without the purge, AFTER_HTML the same book purged
 (``python -m book._ext.css_purge`` style: see ``purge_copy`` below, or a build). Every page
@@ -53,9 +53,12 @@ def _mode_script(mode):
 
 # (name, width, mode, actions): each action is (kind, selector or key)
 INTERACTIONS = [
-    ("primary-sidebar", 400, "light", [("click", "button.primary-toggle:visible")]),
-    ("primary-sidebar-dark", 400, "dark", [("click", "button.primary-toggle:visible")]),
-    ("secondary-sidebar", 400, "light", [("click", "button.secondary-toggle:visible")]),
+    # the theme's own buttons open the side bars as modal dialogs at phone widths
+    ("primary-sidebar", 400, "light", [("js", "document.querySelector('button.primary-toggle.pst-navbar-icon').click()")]),
+    ("primary-sidebar-dark", 400, "dark", [("js", "document.querySelector('button.primary-toggle.pst-navbar-icon')"
+                                                  ".click()")]),
+    ("secondary-sidebar", 400, "light", [("js", "document.querySelector('button.secondary-toggle.pst-navbar-icon')"
+                                                ".click()")]),
     ("search-dialog", 1280, "light", [("click", "button.search-button.pst-navbar-icon:visible, "
                                                 "button.search-button-field:visible")]),
     ("search-dialog-dark", 1280, "dark", [("key", "Control+k")]),
@@ -186,9 +189,10 @@ async def compare(before, after, out, pages, interaction_pages, reverse=False):
 
 def main(argv):
     reverse = "--reverse" in argv
-    argv = [a for a in argv if a != "--reverse"]
+    only_interactions = "--interactions-only" in argv
+    argv = [a for a in argv if a not in ("--reverse", "--interactions-only")]
     before, after, out = (Path(a) for a in argv[:3])
-    pages = argv[3:] or _crawl.built_pages(before)
+    pages = [] if only_interactions else (argv[3:] or _crawl.built_pages(before))
     interaction_pages = [p for p in ("derivations/planar/cognates.html", "forces/exercises.html",
                                      "spatial/rssr.html") if (before / p).exists()]
     done, failures, skipped, redrawn = asyncio.run(compare(before, after, out, pages, interaction_pages, reverse))
