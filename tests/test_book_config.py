@@ -129,6 +129,13 @@ def test_config_page_weight_extension():
     assert _config()["sphinx"]["local_extensions"]["page_weight"] == "_ext/"
 
 
+def test_config_css_purge_extension():
+    """book/_ext/css_purge.py drops unused CSS rules after page_weight (issue 17)."""
+    extensions = _config()["sphinx"]["local_extensions"]
+    assert extensions["css_purge"] == "_ext/"
+    assert list(extensions).index("css_purge") > list(extensions).index("page_weight")
+
+
 def test_config_launch_buttons_off():
     launch = _config().get("launch_buttons") or {}
     for key in ("binderhub_url", "jupyterhub_url", "colab_url", "deepnote_url"):

@@ -473,17 +473,26 @@ def weight_summary(results):
 
 
 def budget_problems(summary, page_budget=PAGE_BUDGET, median_budget=MEDIAN_BUDGET):
-    """What breaks the page-weight budget in a :func:`weight_summary` (empty when it holds)."""
+    """What breaks the page-weight budget in a :func:`weight_summary` (empty when it holds).
+
+    The budget holds whichever way a page is counted: the bytes received (gzip bodies and
+    headers) and the files' own, uncompressed sizes (what the browser parses and keeps).
+    """
     problems = []
     received = summary.get("received") or {}
     if not received:
         return ["no page weight was measured"]
-    if received["median"] >= median_budget:
-        problems.append(f"median page weight {received['median'] / 1e3:.0f} kB received, "
-                        f"over the budget of {median_budget / 1e3:.0f} kB")
-    if received["max"] >= page_budget:
-        problems.append(f"heaviest page {summary['heaviest']} {received['max'] / 1e3:.0f} kB received, "
-                        f"over the budget of {page_budget / 1e3:.0f} kB")
+    for measure in ("received", "uncompressed"):
+        spread = summary.get(measure) or {}
+        if not spread:
+            problems.append(f"no {measure} page weight was measured")
+            continue
+        if spread["median"] >= median_budget:
+            problems.append(f"median page weight {spread['median'] / 1e3:.0f} kB {measure}, "
+                            f"over the budget of {median_budget / 1e3:.0f} kB")
+        if spread["max"] >= page_budget:
+            problems.append(f"heaviest page {summary['heaviest']} {spread['max'] / 1e3:.0f} kB {measure}, "
+                            f"over the budget of {page_budget / 1e3:.0f} kB")
     return problems
 
 
@@ -516,3 +525,75 @@ async def _search(root, query, executable):
 def search(root, query, executable=None):
     """(links of the results, uncaught errors) of typing ``query`` into the book's search page."""
     return asyncio.run(_search(Path(root), query, executable or chromium_path()))
+
+
+# Key components and a style of each that only the theme's and extensions' CSS gives them:
+# after the CSS purge (book/_ext/css_purge.py) they must still have it. Each entry is
+# (width, mode, action, selector, JS test of `cs` (computed style) / `pseudo` (::before)).
+STYLE_CHECKS = [
+    (1280, "light", None, ".bd-header", "cs.display === 'flex' && cs.zIndex === '1030' && cs.boxShadow !== 'none'"),
+    (1280, "light", None, ".bd-sidebar-primary", "cs.display !== 'none' && parseFloat(cs.width) > 150"),
+    (1280, "light", None, "div.highlight pre", "cs.backgroundColor !== 'rgba(0, 0, 0, 0)' && cs.overflowX === 'auto'"),
+    (1280, "light", None, "div.cell div.cell_input", "cs.borderLeftStyle === 'solid'"),
+    (1280, "light", None, ".exercise.admonition", "cs.borderLeftStyle === 'solid' || cs.borderStyle !== 'none'"),
+    (1280, "light", None, "details.admonition.hide", "cs.display === 'block'"),
+    (1280, "light", None, "nav.bd-docs-nav details > summary .toctree-toggle", "cs.display === 'flex'"),
+    (1280, "dark", None, "body", "cs.backgroundColor !== 'rgb(255, 255, 255)' && cs.color !== 'rgb(0, 0, 0)'"),
+    (1280, "light", ("click", ".dropdown-download-buttons button.dropdown-toggle"),
+     ".dropdown-download-buttons .dropdown-menu", "cs.display === 'block' && cs.position === 'absolute'"),
+    (1280, "light", ("hover", "button.theme-switch-button"), ".tooltip .tooltip-arrow",
+     "pseudo.borderBottomStyle === 'solid' && cs.position === 'absolute'"),
+    (1280, "light", ("key", "Control+k"), "#pst-search-dialog[open]",
+     "cs.display === 'block' && cs.position === 'fixed' && cs.width === '800px'"),
+    # the phone layout (rules inside @media blocks): the side bar leaves the page, off-canvas
+    (400, "light", None, ".bd-sidebar-primary",
+     "cs.visibility === 'hidden' && cs.position === 'fixed' && cs.zIndex === '1081'"),
+]
+
+
+async def _styles(root, page_path, checks, executable):
+    from playwright.async_api import async_playwright
+
+    failures = []
+    with serve(root) as base:
+        async with async_playwright() as pw:
+            browser = await pw.chromium.launch(executable_path=executable, headless=True)
+            for width, mode, action, selector, test in checks:
+                ctx = await browser.new_context(viewport={"width": width, "height": 900}, color_scheme=mode)
+                await ctx.add_init_script(f"localStorage.setItem('mode', '{mode}')")
+                page = await ctx.new_page()
+                page.set_default_timeout(10000)
+                await page.goto(base + page_path, wait_until="load")
+                try:
+                    if action is not None:
+                        kind, target = action
+                        if kind == "click":
+                            await page.locator(target).first.click()
+                        elif kind == "hover":
+                            await page.locator(target).first.hover()
+                        else:
+                            await page.keyboard.press(target)
+                        await page.wait_for_timeout(600)
+                    ok = await page.evaluate(
+                        "([sel, test]) => { const el = document.querySelector(sel); if (!el) return null;"
+                        " const cs = getComputedStyle(el), pseudo = getComputedStyle(el, '::before');"
+                        " return Boolean(new Function('cs', 'pseudo', 'return ' + test)(cs, pseudo)); }",
+                        [selector, test])
+                except Exception as err:
+                    ok = f"error: {str(err).splitlines()[0]}"
+                if ok is not True:
+                    failures.append(f"{width} px {mode}, {action}: {selector}: "
+                                    + ("not found" if ok is None else f"`{test}` is {ok}"))
+                    if ok is False:
+                        failures[-1] += " (" + await page.evaluate(
+                            "s => { const c = getComputedStyle(document.querySelector(s)); return ['display',"
+                            " 'position', 'visibility', 'width', 'zIndex', 'boxShadow', 'borderLeftStyle',"
+                            " 'backgroundColor'].map((k) => k + ': ' + c[k]).join('; '); }", selector) + ")"
+                await ctx.close()
+            await browser.close()
+    return failures
+
+
+def style_problems(root, page, checks=STYLE_CHECKS, executable=None):
+    """The :data:`STYLE_CHECKS` that fail on ``page`` of the build at ``root`` (empty: all hold)."""
+    return asyncio.run(_styles(Path(root), page, checks, executable or chromium_path()))

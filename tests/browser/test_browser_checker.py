@@ -194,19 +194,23 @@ def _fake(received, uncompressed):
 
 
 def test_weight_summary_and_median_budget():
-    """The median and maximum over pages, redirects left out, and both budgets (no browser)."""
-    pages = {f"p{k}.html": _fake(v, 4 * v) for k, v in enumerate([100_000, 300_000, 450_000, 700_000])}
+    """The median and maximum over pages, redirects left out, and both budgets on both
+    measures, received and uncompressed (no browser)."""
+    pages = {f"p{k}.html": _fake(v, 3 * v // 2) for k, v in enumerate([100_000, 200_000, 300_000, 700_000])}
     pages["index.html"] = ([], {"redirect": "p0.html", "seconds": 0.0})
     summary = _crawl.weight_summary(pages)
     assert summary["pages"] == 4
-    assert summary["received"] == {"median": 375_000, "max": 700_000}
-    assert summary["uncompressed"] == {"median": 1_500_000, "max": 2_800_000}
+    assert summary["received"] == {"median": 250_000, "max": 700_000}
+    assert summary["uncompressed"] == {"median": 375_000, "max": 1_050_000}
     assert _crawl.budget_problems(summary) == []
-    pages["p4.html"] = _fake(600_000, 600_000)  # the median moves to 450 kB: still under
+    pages["p4.html"] = _fake(450_000, 900_000)  # received median 300 kB; uncompressed 450 kB: both under
     assert _crawl.budget_problems(_crawl.weight_summary(pages)) == []
-    pages["p5.html"] = _fake(2_100_000, 2_100_000)  # median 525 kB and a page over 2 MB
+    pages["p5.html"] = _fake(460_000, 1_400_000)  # uncompressed median 675 kB: over; received 375 kB
     problems = _crawl.budget_problems(_crawl.weight_summary(pages))
-    assert len(problems) == 2
-    assert problems[0].startswith("median page weight 525 kB")
-    assert problems[1].startswith("heaviest page p5.html 2100 kB")
+    assert problems == ["median page weight 675 kB uncompressed, over the budget of 500 kB"]
+    pages["p6.html"] = _fake(2_100_000, 2_100_000)  # medians 450 / 900 kB and a page over 2 MB
+    problems = _crawl.budget_problems(_crawl.weight_summary(pages))
+    assert problems == ["heaviest page p6.html 2100 kB received, over the budget of 2000 kB",
+                        "median page weight 900 kB uncompressed, over the budget of 500 kB",
+                        "heaviest page p6.html 2100 kB uncompressed, over the budget of 2000 kB"]
     assert _crawl.budget_problems(_crawl.weight_summary({})) == ["no page weight was measured"]
