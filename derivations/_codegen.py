@@ -37,7 +37,7 @@ __all__ = ["Function", "render", "write", "check_fresh", "input_hash", "GENERATE
 #: Bump when the template changes, so every module is regenerated.
 GENERATOR_VERSION = "1"
 #: Bump when the kernel templates change (only modules that declare `vector` arguments).
-KERNEL_VERSION = "5"
+KERNEL_VERSION = "6"
 GENERATED_DIR = Path(__file__).resolve().parent.parent / "mech" / "_generated"
 
 
@@ -71,6 +71,11 @@ class Function:
         With kernels: the output that is NaN exactly where a point does not exist (the
         linkage cannot be assembled). ``<name>_fused_kernel`` then also writes the mask
         ``valid`` (True where that output is not NaN) in its one pass.
+    finite : sequence of str, optional
+        With kernels: the outputs whose sum ``<name>_fused_kernel`` checks for its returned
+        flag (default every output). Name fewer only where the derivation shows that, for
+        finite scalar arguments, these are finite at a point only if every output is (a
+        NaN or an infinity in any output reaches one of them): fewer additions per point.
     """
 
     name: str
@@ -80,6 +85,7 @@ class Function:
     domain: dict = field(default_factory=dict)
     vector: tuple = ()
     mask: str = None
+    finite: tuple = None
 
     def symbols(self):
         return [s for s, _ in self.args]
@@ -95,7 +101,8 @@ def _canonical_text(functions, equations):
         if f.vector:
             # only modules with kernels carry the kernel template's version in their hash
             parts.append(f"kernels={KERNEL_VERSION} vector(" + ",".join(s.name for s in f.vector) + ")"
-                         + (f" mask={f.mask}" if f.mask else ""))
+                         + (f" mask={f.mask}" if f.mask else "")
+                         + (f" finite={','.join(f.finite)}" if f.finite else ""))
         for out_name, expr, _ in f.outputs:
             parts.append(f"{out_name}={sm.srepr(sm.sympify(expr))}")
     return "\n".join(parts)

@@ -13,7 +13,8 @@ For a `Function` that declares its per-point (``vector``) arguments, ``_codegen`
 - beside it ``<name>_fused_kernel(args..., scales, out..., [valid])``, the solvers' variant of
   that loop: each output times a power of two (the solver's scaling of lengths, undone in
   the same pass), the mask ``valid`` where the function declares a ``mask`` output, and a
-  returned flag that every output is finite, so no second pass over the outputs is needed.
+  returned flag that every output is finite (from the sum of the outputs the function
+  declares in ``finite``, by default all), so no second pass over the outputs is needed.
 
 Both come from one call of ``sympy.cse``, so the two backends evaluate the same
 expression tree and agree to a few units in the last place.
@@ -352,8 +353,19 @@ def numba_kernel(f, replacements, reduced):
     doc = [f'    """`{f.name}_kernel`, each output k times ``scales[k]``.', ""]
     if f.mask:
         doc += [f"    ``valid[i]`` is True where output ``{f.mask}`` at point i is not NaN (the point exists)."]
-    doc += ["    Returns True if the sum of every output at every point is finite (so each is);",
-            '    False if one is NaN or infinite, or the sum overflows."""']
+    checked = list(range(len(outs)))
+    if f.finite:
+        unknown = set(f.finite) - set(names)
+        if unknown:
+            raise ValueError(f"{f.name}: finite names outputs it does not have: {sorted(unknown)}")
+        checked = [j for j, (k, _) in enumerate(slots) if names[k] in f.finite]
+    if len(checked) == len(outs):
+        doc += ["    Returns True if the sum of every output at every point is finite (so each is);",
+                '    False if one is NaN or infinite, or the sum overflows."""']
+    else:
+        doc += ["    Returns True if the sum of " + ", ".join(f"out{j}" for j in checked) + " at every point is finite",
+                "    (so each is, and by the derivation every output is, for finite scalar arguments);",
+                '    False if one is NaN or infinite, or the sum overflows."""']
     body += doc
     body += [f"    {ln}" for ln in hoisted]
     body += [f"    scale{k} = scales[{k}]" for k in range(len(outs))]
@@ -367,8 +379,8 @@ def numba_kernel(f, replacements, reduced):
         body.append(f"        {name}[i] = y{k}")
     if mark is not None:
         body.append(f"        valid[i] = y{mark} == y{mark}")
-    # the sum is finite only if every output is (a NaN or an infinity stays in it); a
-    # finite sum that overflows answers False, and the caller checks more closely
-    body.append("        acc += " + _tree_sum([f"y{k}" for k in range(len(outs))]))
+    # the sum is finite only if every output it adds is (a NaN or an infinity stays in it);
+    # a finite sum that overflows answers False, and the caller checks more closely
+    body.append("        acc += " + _tree_sum([f"y{k}" for k in checked]))
     body.append("    return math.isfinite(acc)")
     return body

@@ -117,6 +117,53 @@ def test_fused_position_kernel_gives_the_same_bits(backend, lengths, coupler):
             linkage.solve(angles)
 
 
+
+def test_fused_flag_is_every_output_finite():
+    """The fused kernels' flag sums only C and P (the derivation shows B and S follow): on
+    random unit four-bars, coupler points up to 1e300, angles with NaN, infinities and
+    near-zero |BD|, and scales up to 2**1000, the flag is True exactly when all seven
+    outputs are finite at every point (checked here with np.isfinite on each output),
+    unless every output is finite and their sum overflows (then False, as documented)."""
+    pytest.importorskip("numba")
+    from mech import _backend
+    from mech.planar.kinematics._fourbar import assembly_gaps, fourbar_lengths
+
+    module = _backend.numba_kernels("fourbar_position")
+    rng = np.random.default_rng(16)
+    seen = set()
+    for trial in range(400):
+        lengths = 10.0 ** rng.uniform(-3, 3, 4)
+        if trial % 5 == 0:
+            lengths[3] = lengths[0] * (1 + 1e-9)        # a ~ d: |BD| all but 0 at theta ~ 0
+        if max(lengths) >= sum(lengths) - max(lengths):
+            continue
+        (a, b, c, d), _ = fourbar_lengths(*lengths)
+        gaps = assembly_gaps(a, b, c, d, 1e-12)
+        p, q = rng.choice([1.0, 1e150, 1e300]) * rng.uniform(-1, 1, 2)
+        theta = rng.uniform(-7, 7, 64)
+        theta[:4] = [0.0, 1e-160, -1e-300, 5e-324]
+        if trial % 3 == 0:
+            theta[rng.integers(64)] = rng.choice([np.nan, np.inf, -np.inf])
+        scales = (2.0 ** int(rng.integers(0, 1001)),) * 6 + (1.0,)
+        signed = trial % 2 == 1
+        kernel = module.fourbar_position_signed_fused_kernel if signed else module.fourbar_position_fused_kernel
+        tail = (int(rng.integers(2)), int(rng.integers(2))) if signed else ()
+        outs = [np.empty(64) for _ in range(7)]
+        valid = np.empty(64, dtype=bool)
+        with np.errstate(all="ignore"):
+            flag = kernel(a, b, c, d, p, q, theta, 1.0 if trial % 4 else -1.0, *gaps, *tail, scales, *outs, valid)
+            every = all(np.isfinite(x).all() for x in outs)
+            total = 0.0                                  # the kernel's running sum, in its order
+            for i in range(64):
+                total += (outs[2][i] + outs[3][i]) + (outs[4][i] + outs[5][i])
+        overflow = every and not np.isfinite(total)
+        assert flag == (every and not overflow), (trial, lengths, (p, q), scales[0])
+        np.testing.assert_array_equal(valid, ~np.isnan(outs[6]))
+        # kinds of cases met: a point with C finite and P not (beyond the float range) among them
+        only_p = (np.isfinite(outs[2]) & np.isfinite(outs[3]) & ~(np.isfinite(outs[4]) & np.isfinite(outs[5]))).any()
+        seen.add((bool(flag), every, bool(only_p)))
+    assert {(True, True, False), (False, False, False), (False, False, True)} <= seen, seen
+
 def _run(code, env=None):
     import os
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:6012c59bee3c1577fc3b381e46b440383a8bc50d5f32c8c7258dc88e6ab861f9"
+INPUT_HASH = "sha256:fe848ba3ff899b35b428eab52a089afe638505ba3a6340e5ce876b5b28c595bc"
 
 __all__ = ['fourbar_assembly_gaps', 'fourbar_position', 'fourbar_position_signed', 'fourbar_velocity', 'fourbar_acceleration', 'fourbar_position_into', 'fourbar_position_signed_into', 'fourbar_velocity_into', 'fourbar_acceleration_into']
 

@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:6012c59bee3c1577fc3b381e46b440383a8bc50d5f32c8c7258dc88e6ab861f9"
+INPUT_HASH = "sha256:fe848ba3ff899b35b428eab52a089afe638505ba3a6340e5ce876b5b28c595bc"
 
 __all__ = ['fourbar_position_kernel', 'fourbar_position_fused_kernel', 'fourbar_position_signed_kernel', 'fourbar_position_signed_fused_kernel', 'fourbar_velocity_kernel', 'fourbar_velocity_fused_kernel', 'fourbar_acceleration_kernel', 'fourbar_acceleration_fused_kernel']
 
@@ -65,7 +65,8 @@ def fourbar_position_fused_kernel(a, b, c, d, p, q, theta, branch, gap2, gap3, g
     """`fourbar_position_kernel`, each output k times ``scales[k]``.
 
     ``valid[i]`` is True where output ``S`` at point i is not NaN (the point exists).
-    Returns True if the sum of every output at every point is finite (so each is);
+    Returns True if the sum of out2, out3, out4, out5 at every point is finite
+    (so each is, and by the derivation every output is, for finite scalar arguments);
     False if one is NaN or infinite, or the sum overflows."""
     x8 = a - d
     x9 = 4*a*d
@@ -114,7 +115,7 @@ def fourbar_position_fused_kernel(a, b, c, d, p, q, theta, branch, gap2, gap3, g
         out5[i] = y5
         out6[i] = y6
         valid[i] = y6 == y6
-        acc += (((y0 + y1) + (y2 + y3)) + ((y4 + y5) + y6))
+        acc += ((y2 + y3) + (y4 + y5))
     return math.isfinite(acc)
 
 
@@ -161,7 +162,8 @@ def fourbar_position_signed_fused_kernel(a, b, c, d, p, q, theta, branch, gap2, 
     """`fourbar_position_signed_kernel`, each output k times ``scales[k]``.
 
     ``valid[i]`` is True where output ``S`` at point i is not NaN (the point exists).
-    Returns True if the sum of every output at every point is finite (so each is);
+    Returns True if the sum of out2, out3, out4, out5 at every point is finite
+    (so each is, and by the derivation every output is, for finite scalar arguments);
     False if one is NaN or infinite, or the sum overflows."""
     x8 = a - d
     x9 = 4*a*d
@@ -212,7 +214,7 @@ def fourbar_position_signed_fused_kernel(a, b, c, d, p, q, theta, branch, gap2, 
         out5[i] = y5
         out6[i] = y6
         valid[i] = y6 == y6
-        acc += (((y0 + y1) + (y2 + y3)) + ((y4 + y5) + y6))
+        acc += ((y2 + y3) + (y4 + y5))
     return math.isfinite(acc)
 
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:a2ab6fe43f3dd30c58c3d167dc58fbfa78efd26c6d88329db1e4e7aeb8667556"
+INPUT_HASH = "sha256:6f3a4aa412dc6b1d700253510eb5dcba6130ceeed87eb5eb236154ce2578f5b3"
 
 __all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_acceleration', 'slider_crank_limits', 'slider_crank_transmission', 'slider_crank_min_transmission', 'slider_crank_series', 'guide_bar_position', 'guide_bar_velocity', 'guide_bar_acceleration', 'guide_bar_swing', 'guide_bar_crank', 'slider_crank_position_into', 'slider_crank_velocity_into', 'slider_crank_acceleration_into', 'guide_bar_position_into', 'guide_bar_velocity_into', 'guide_bar_acceleration_into']
 

@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:a2ab6fe43f3dd30c58c3d167dc58fbfa78efd26c6d88329db1e4e7aeb8667556"
+INPUT_HASH = "sha256:6f3a4aa412dc6b1d700253510eb5dcba6130ceeed87eb5eb236154ce2578f5b3"
 
 __all__ = ['slider_crank_position_kernel', 'slider_crank_position_fused_kernel', 'slider_crank_velocity_kernel', 'slider_crank_velocity_fused_kernel', 'slider_crank_acceleration_kernel', 'slider_crank_acceleration_fused_kernel', 'guide_bar_position_kernel', 'guide_bar_position_fused_kernel', 'guide_bar_velocity_kernel', 'guide_bar_velocity_fused_kernel', 'guide_bar_acceleration_kernel', 'guide_bar_acceleration_fused_kernel']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:b9a58308bbf6830c353c019469b2dd8f68c309de04f3da8699a8e92761718e79"
+INPUT_HASH = "sha256:11f1c7b589807107a2490d865b8929fb55bb8a257539159dcd03aa99f46e903f"
 
 __all__ = ['spherical_fourbar_coefficients', 'spherical_fourbar_position', 'spherical_fourbar_velocity', 'spherical_fourbar_acceleration', 'spherical_fourbar_limit_theta', 'spherical_fourbar_position_into', 'spherical_fourbar_velocity_into', 'spherical_fourbar_acceleration_into']
 

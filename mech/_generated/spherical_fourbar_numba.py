@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:b9a58308bbf6830c353c019469b2dd8f68c309de04f3da8699a8e92761718e79"
+INPUT_HASH = "sha256:11f1c7b589807107a2490d865b8929fb55bb8a257539159dcd03aa99f46e903f"
 
 __all__ = ['spherical_fourbar_position_kernel', 'spherical_fourbar_position_fused_kernel', 'spherical_fourbar_velocity_kernel', 'spherical_fourbar_velocity_fused_kernel', 'spherical_fourbar_acceleration_kernel', 'spherical_fourbar_acceleration_fused_kernel']
 
