@@ -187,6 +187,25 @@ def _check(R, theta, stage2, stage1, A, rtol, sweep):
                                    in_order and err <= rtol)
 
 
+def _exact_task(R, theta, crank_pivot, rtol, sweep):
+    """The checked arguments of an exact six-bar design: 2 to 5 orientations, one increasing
+    input angle each within a turn, the unit crank axis, the tolerance and the sweep count."""
+    R = orientation_set("R", R, (2, 3, 4, 5))
+    n = R.shape[0]
+    theta = finite_array("theta", theta)
+    if theta.shape != (n,):
+        raise ValueError(f"Expected `theta` of shape ({n},) (one input angle per orientation), got shape {theta.shape}")
+    if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < _TWO_PI):
+        raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
+    A = finite_array("crank_pivot", crank_pivot)
+    if A.shape != (3,) or not np.linalg.norm(A) > 0:
+        raise ValueError(f"Expected `crank_pivot` a non-zero 3-vector, got {_show(crank_pivot)}")
+    A = A / np.linalg.norm(A)
+    rtol = nonnegative_number("rtol", rtol)
+    sweep = integer("sweep", sweep, minimum=2)
+    return R, n, theta, A, rtol, sweep
+
+
 def guidance_watt2(R, theta, crank_pivot, *, dyads=None, crank_tip=None, rtol=1e-9, sweep=721):
     """Watt-2 spherical six-bars guiding a body through orientations at prescribed input angles.
 
@@ -237,19 +256,7 @@ def guidance_watt2(R, theta, crank_pivot, *, dyads=None, crank_tip=None, rtol=1e
     >>> len(best) > 0, max(d.pose_error for d in best) < 1e-9
     (True, True)
     """
-    R = orientation_set("R", R, (2, 3, 4, 5))
-    n = R.shape[0]
-    theta = finite_array("theta", theta)
-    if theta.shape != (n,):
-        raise ValueError(f"Expected `theta` of shape ({n},) (one input angle per orientation), got shape {theta.shape}")
-    if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < _TWO_PI):
-        raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
-    A = finite_array("crank_pivot", crank_pivot)
-    if A.shape != (3,) or not np.linalg.norm(A) > 0:
-        raise ValueError(f"Expected `crank_pivot` a non-zero 3-vector, got {_show(crank_pivot)}")
-    A = A / np.linalg.norm(A)
-    rtol = nonnegative_number("rtol", rtol)
-    sweep = integer("sweep", sweep, minimum=2)
+    R, n, theta, A, rtol, sweep = _exact_task(R, theta, crank_pivot, rtol, sweep)
     if n == 4:
         raise ValueError("Expected 2, 3 or 5 orientations in `R` (four need a point of the circle-point cubic "
                          "for the first stage, not offered here), got 4")

@@ -14,18 +14,16 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from mech._validate import InputTypeError, _show, finite_array, integer, nonnegative_number
+from mech._validate import InputTypeError, _show, finite_array
 from mech.spherical._rigid_body import angle_at, rotation_matrix
 from mech.spherical.guidance._burmester import burmester, circle_point_curve
 from mech.spherical.guidance._dyads import SphericalDyad, arc_between, dyad_for_circle_point
 from mech.spherical.guidance._fourbar import _rotation_gap
-from mech.spherical.guidance._orientations import orientation_set
-from mech.spherical.guidance._sixbar import _frame
+from mech.spherical.guidance._sixbar import _exact_task, _frame
 from mech.spherical.linkage._linkage import SphericalLinkage
 
 __all__ = ["SphericalExactSixBar", "guidance_stephenson1", "guidance_stephenson2", "guidance_watt1"]
 
-_TWO_PI = 2.0 * np.pi
 #: Two joints closer than this (sine of their arc) make no linkage.
 _COINCIDENT = 1e-6
 #: Which link carries E and F in each design, and the stage joints (circle, centre).
@@ -234,19 +232,7 @@ def _candidates(kind, Rb, K, A, choices, along):
 
 
 def _design(kind, R, theta, crank_pivot, circle_points, along, rtol, sweep):
-    R = orientation_set("R", R, (2, 3, 4, 5))
-    n = R.shape[0]
-    theta = finite_array("theta", theta)
-    if theta.shape != (n,):
-        raise ValueError(f"Expected `theta` of shape ({n},) (one input angle per orientation), got shape {theta.shape}")
-    if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < _TWO_PI):
-        raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
-    A = finite_array("crank_pivot", crank_pivot)
-    if A.shape != (3,) or not np.linalg.norm(A) > 0:
-        raise ValueError(f"Expected `crank_pivot` a non-zero 3-vector, got {_show(crank_pivot)}")
-    A = A / np.linalg.norm(A)
-    rtol = nonnegative_number("rtol", rtol)
-    sweep = integer("sweep", sweep, minimum=2)
+    R, n, theta, A, rtol, sweep = _exact_task(R, theta, crank_pivot, rtol, sweep)
     along = finite_array("along", along)
     if along.shape != (3,):
         raise ValueError(f"Expected `along` of three angles (one per stage), got {_show(along)}")
