@@ -3,12 +3,15 @@ positions (with the circle that sees the output's limit positions under the extr
 gamma_min against alpha, and the shaper of exercise 2-32. Positions come from the analysis
 classes. Nothing runs at import; Matplotlib is imported by the functions."""
 
+import math
+
 import numpy as np
 
 from figures.limit_positions import _angle_arc
 
 __all__ = ["crank_rocker_limits", "slider_crank_limits", "guide_bar_limits", "gamma_alpha_curves", "shaper",
-           "marked_table", "crank_rocker_construction", "slider_crank_construction", "fourbar_limits"]
+           "marked_table", "crank_rocker_construction", "slider_crank_construction", "fourbar_limits",
+           "REASONS", "table_differences", "slider_design", "crank_rocker_design", "difference_table"]
 
 
 def marked_table(header, rows, errata, *, digits=3):
@@ -359,3 +362,98 @@ def fourbar_limits(fourbar, ax=None, *, title=None):
     _label(ax, 0j, "A", 4, -14)
     _label(ax, complex(d), "D", 4, -12)
     return _finish(ax, title)
+
+
+#: Why a printed cell differs from the regenerated one (see `table_differences`).
+REASONS = {
+    "flat": "flat optimum: a design with the printed value is as good to the table's digits",
+    "rounding": "rounding: one unit in the last printed digit, and the printed design is worse",
+    "misprint": "misprint: more than one unit off, and the printed design is worse",
+    "lost": "lost: the printed cell is empty",
+}
+
+
+def table_differences(printed, computed, design, *, ratio_unit=0.001, angle_unit=0.01,
+                      angle_keys=("gamma", "theta")):
+    """Every printed cell that differs from the regenerated one by more than half a unit of
+    its last digit, with the reason.
+
+    `printed` and `computed` map a row key ("a/c", "gamma", ...) to the values over the
+    table's K; `computed` also holds "alpha" (degrees, the optimal design parameter) and
+    "gamma". `design(i, alpha_deg)` gives the ratios and "gamma" of the family of column i at
+    the parameter alpha. For a ratio cell the parameter at which the family takes the printed
+    value is found next to the optimum (`design` None skips this: a table of angles only);
+    if the minimum transmission angle there is within
+    half a unit of the optimum's, the cell is "flat" (the optimum is too flat for the table's
+    digits to pin it), otherwise "rounding" (one unit) or "misprint". Returns a list of
+    ``(row_key, index, printed, computed, reason, gamma_at_printed)``.
+    """
+    from scipy.optimize import brentq
+
+    out = []
+    for key, row in printed.items():
+        unit = angle_unit if key in angle_keys else ratio_unit
+        for i, (p, c) in enumerate(zip(row, computed[key])):
+            if p != p:
+                out.append((key, i, p, float(c), "lost", float("nan")))
+                continue
+            if abs(p - c) <= 0.5 * unit + 1e-12:
+                continue
+            gamma_at = float("nan")
+            if key not in angle_keys and design is not None:
+                best = float(computed["alpha"][i])
+                f = lambda al: design(i, al)[key] - p
+                for step in (0.5, 1.0, 2.0, 4.0):
+                    lo, hi = best - step, best + step
+                    # the side of the optimum on which the family passes the printed value
+                    if f(lo) * f(best) < 0:
+                        gamma_at = design(i, brentq(f, lo, best, xtol=1e-12))["gamma"]
+                        break
+                    if f(hi) * f(best) < 0:
+                        gamma_at = design(i, brentq(f, best, hi, xtol=1e-12))["gamma"]
+                        break
+            if gamma_at == gamma_at and float(computed["gamma"][i]) - gamma_at < 0.5 * angle_unit:
+                reason = "flat"
+            elif abs(p - c) <= unit + 1e-12:
+                reason = "rounding"
+            else:
+                reason = "misprint"
+            out.append((key, i, p, float(c), reason, gamma_at))
+    return out
+
+
+def slider_design(time_ratios):
+    """`design` of `table_differences` for table 2-5 (offset slider-cranks, H = 1)."""
+    from mech.planar.synthesis import quick_return_slider_crank
+
+    def design(i, alpha_deg):
+        q = quick_return_slider_crank(time_ratios[i], 1.0, alpha=math.radians(alpha_deg))
+        a, b, e = q.lengths[:3]
+        return {"a/H": a, "b/H": b, "e/H": e, "gamma": math.degrees(q.check().min_transmission_angle)}
+    return design
+
+
+def crank_rocker_design(time_ratios, swing_deg):
+    """`design` of `table_differences` for one row group of table 2-3 (crank-rockers, c = 1)."""
+    from mech.planar.synthesis import quick_return_crank_rocker
+
+    def design(i, alpha_deg):
+        q = quick_return_crank_rocker(time_ratios[i], 1.0, math.radians(swing_deg), alpha=math.radians(alpha_deg))
+        a, b, _, d = q.lengths
+        return {"a/c": a, "b/c": b, "d/c": d, "gamma": math.degrees(q.check().min_transmission_angle)}
+    return design
+
+
+def difference_table(differences, time_ratios, *, groups=None):
+    """A Markdown table with one row per differing cell of `table_differences`; `groups`, if
+    given, labels each row with its swing (table 2-3)."""
+    head = "| " + ("swing (°) | " if groups is not None else "") + \
+        "K | quantity | printed | regenerated | $\\gamma_{\\min}$ of the printed value (°) | reason |"
+    lines = [head, "|" + "---|" * (7 if groups is not None else 6)]
+    for n, (key, i, p, c, reason, gamma_at) in enumerate(differences):
+        gam = "" if gamma_at != gamma_at else f"{gamma_at:.3f}"
+        shown = "lost" if p != p else f"{p:g}"
+        digits = 2 if key in ("gamma", "theta") else 4
+        lines.append("| " + (f"{groups[n]} | " if groups is not None else "") +
+                     f"{time_ratios[i]:.2f} | {key} | {shown} | {c:.{digits}f} | {gam} | {reason} |")
+    return "\n".join(lines)
