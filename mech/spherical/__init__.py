@@ -110,7 +110,10 @@ from mech.spherical.path import (
     nine_parameters,
     path_fourbar,
     path_stephenson1,
+    path_stephenson2,
     path_verify,
+    path_watt1,
+    path_watt2,
     SIXBAR_CURVE_ORDERS,
     sixbar_curve,
 )
@@ -231,7 +234,10 @@ __all__ = [
     "SphericalPathDesign",
     "path_fourbar",
     "path_stephenson1",
+    "path_stephenson2",
     "path_verify",
+    "path_watt1",
+    "path_watt2",
     "SIXBAR_CURVE_ORDERS",
     "sixbar_curve",
 ]

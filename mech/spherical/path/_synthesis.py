@@ -137,11 +137,18 @@ def _fourbar(x, branch):
     return SphericalFourBar(*x[3:7], branch=branch, coupler=(x[7], x[8]), frame=ground_frame(*x[:3]))
 
 
-def _stephenson(x, branches):
-    from mech.spherical.linkage import stephenson1
+def _sixbar(kind, x, branches):
+    """The six-bar of type `kind` ("stephenson1", "stephenson2", "watt1", "watt2") with the
+    fifteen parameters `x` in the order of ``_FIFTEEN``."""
+    from mech.spherical import linkage
 
-    return stephenson1(*x[3:7], E=(x[7], x[8]), F=(x[9], x[10]), arcs=(x[11], x[12]),
-                       coupler=(x[13], x[14]), branches=branches, frame=ground_frame(*x[:3]))
+    build = getattr(linkage, kind)
+    return build(*x[3:7], E=(x[7], x[8]), F=(x[9], x[10]), arcs=(x[11], x[12]),
+                 coupler=(x[13], x[14]), branches=branches, frame=ground_frame(*x[:3]))
+
+
+def _stephenson(x, branches):
+    return _sixbar("stephenson1", x, branches)
 
 
 def _coupler(linkage, theta):
