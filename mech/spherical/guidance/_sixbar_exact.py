@@ -142,6 +142,29 @@ def _sign(a, b, c):
     return np.sign(np.einsum("...i,...i->...", a, np.cross(b, c)))
 
 
+def _linkage_of(kind, P, branches=None):
+    """The six-bar of type `kind` in the assembly of the joints P (A, B, C, D, E, F, G);
+    `branches` (two signs) default to the sides the joints C and G are on. Raises
+    ValueError if the joints make no linkage (an arc of 0 or pi)."""
+    arc = lambda p, q: float(arc_between(P[p], P[q]))  # noqa: E731
+    lay = _LAYOUT[kind]
+    ground = {"A": P["A"], "D": P["D"]}
+    if lay["F"] == "ground":
+        ground["F"] = P["F"]
+    if branches is None:
+        branches = (1 if _sign(P["B"], P["D"], P["C"]) > 0 else -1, 1 if _sign(P["E"], P["F"], P["G"]) > 0 else -1)
+    frames = {"AB": ("A", "B"), "BC": ("B", "C"), "DC": ("D", "C")}
+    lk = (SphericalLinkage(ground)
+          .crank("AB", pivot="A", tip="B", arc=arc("A", "B"), reference="D")
+          .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(arc("B", "C"), arc("D", "C")), branch=branches[0]))
+    for name in ("E", "F"):
+        link = lay[name]
+        if link != "ground":
+            o, t = frames[link]
+            lk = lk.point(name, link=link, at=(arc(o, name), float(angle_at(P[o], P[t], P[name]))))
+    return lk.rrr(("EG", "FG"), pins=("E", "F"), joint="G", arcs=(arc("E", "G"), arc("F", "G")), branch=branches[1])
+
+
 def _assemble(kind, P, motion, R1, theta, rtol, sweep):
     """Build the six-bar of the joints P, analyse it and report (None if degenerate)."""
     names = list(P)
@@ -149,24 +172,8 @@ def _assemble(kind, P, motion, R1, theta, rtol, sweep):
         for q in names[i + 1:]:
             if np.linalg.norm(np.cross(P[p], P[q])) < _COINCIDENT:
                 return None
-    arc = lambda p, q: float(arc_between(P[p], P[q]))
-    lay = _LAYOUT[kind]
-    ground = {"A": P["A"], "D": P["D"]}
-    if lay["F"] == "ground":
-        ground["F"] = P["F"]
-    b1 = 1 if _sign(P["B"], P["D"], P["C"]) > 0 else -1
-    b2 = 1 if _sign(P["E"], P["F"], P["G"]) > 0 else -1
-    frames = {"AB": ("A", "B"), "BC": ("B", "C"), "DC": ("D", "C")}
     try:
-        lk = (SphericalLinkage(ground)
-              .crank("AB", pivot="A", tip="B", arc=arc("A", "B"), reference="D")
-              .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(arc("B", "C"), arc("D", "C")), branch=b1))
-        for name in ("E", "F"):
-            link = lay[name]
-            if link != "ground":
-                o, t = frames[link]
-                lk = lk.point(name, link=link, at=(arc(o, name), float(angle_at(P[o], P[t], P[name]))))
-        lk = lk.rrr(("EG", "FG"), pins=("E", "F"), joint="G", arcs=(arc("E", "G"), arc("F", "G")), branch=b2)
+        lk = _linkage_of(kind, P)
     except ValueError:
         return None
     offset = float(angle_at(P["A"], P["D"], P["B"])) - float(theta[0])

@@ -37,12 +37,12 @@ _FD_STEP = 1.5e-8
 
 @dataclass(frozen=True)
 class SphericalOptimalSixBar:
-    """Result of `optimal_guidance_watt2`.
+    """Result of `optimal_guidance_watt2` and `optimal_guidance_sixbar`.
 
     Attributes
     ----------
     linkage : SphericalLinkage
-        The Watt-2 six-bar (points as in `SphericalGuidanceSixBar`); the guided link is EG.
+        The six-bar (points as in `SphericalGuidanceSixBar`); the guided link is EG.
     input_offset : float
         The linkage's input angle is ``theta_j + input_offset`` at orientation j.
     points : dict of str -> ndarray, shape (3,)
@@ -64,6 +64,8 @@ class SphericalOptimalSixBar:
     converged : bool
         The optimiser stopped on its tolerance (a stationary point), not on its cap of
         evaluations.
+    kind : str
+        The six-bar's type: ``"watt2"``, or the start's type for `optimal_guidance_sixbar`.
     """
 
     linkage: SphericalLinkage
@@ -77,6 +79,7 @@ class SphericalOptimalSixBar:
     passes: bool
     nfev: int
     converged: bool = True
+    kind: str = "watt2"
 
     def guided_orientations(self, theta):
         """Orientation R of the guided body (task frame) at task input angles `theta`."""
