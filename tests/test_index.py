@@ -326,6 +326,18 @@ def test_cli_summary_and_missing():
     assert any(line.startswith("figure 2-124 (industrial robot):") for line in lines)
 
 
+def test_book_page_shows_the_true_counts():
+    """The coverage table of "Find it by number" comes from the packaged data, so a fresh
+    clone shows real counts, not zeros."""
+    from mech.index._render import summary_markdown
+
+    table = summary_markdown(build_index(ROOT))
+    assert "| equations | 75 | 75 | 0 |" in table
+    assert "| examples | 25 | 25 | 0 |" in table
+    assert "| exercises | 32 | 32 | 0 |" in table
+    assert "| monograph sections | 65 |" in table
+
+
 def test_page_is_in_the_toc():
     toc = (ROOT / "book" / "_toc.yml").read_text(encoding="utf-8")
     assert "file: index-by-number" in toc
