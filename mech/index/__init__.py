@@ -6,7 +6,10 @@ tests that pin it.
 The index is harvested from what the repository already declares (see
 :mod:`mech.index._harvest`): titles, headings, captions and labels of the pages, the
 equations each derivation passes to its code generator, public docstrings, the exercise
-registry and test names. Only the gaps are kept by hand, in
+registry and test names. The numbers the textbooks have (every equation, example, table,
+figure and exercise of the planar chapter, every chapter and section of the monograph's
+contents, each with a short title) are the package's data files ``mech/index/data/*.toml``
+(:mod:`mech.index._catalog`). Only the gaps are kept by hand, in
 :data:`mech.index._not_covered.NOT_COVERED`, each with its reason.
 
 It reads the repository's ``derivations/``, ``book/``, ``mech/`` and ``tests/`` folders,
