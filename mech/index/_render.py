@@ -36,6 +36,11 @@ def entry_text(entry, html_root="book/_build/html"):
     if entry.catalogued is False:
         state += "; not in the textbook data (mech/index/data)"
     name = f" ({entry.name})" if entry.name else ""
+    if entry.item and "section" in entry.item:
+        part = f" {entry.item['part']}" if "part" in entry.item else ""
+        name = f" ({entry.name}; textbook §{entry.item['section']}{part})"
+    elif entry.item and "page" in entry.item:
+        name = f" ({entry.name}; p. {entry.item['page']})"
     lines = [f"{entry.title}{name}: {state}"]
     if entry.not_covered and not entry.covered:
         lines.append(f"  why: {entry.not_covered}")
@@ -108,8 +113,10 @@ def markdown_tables(index, kinds=None, *, prefix=""):
             if kind.startswith(("chapter", "section")):
                 label = e.title.replace("monograph ", "").replace("chapter ", "")
             if e.name:
-                page = f", p. {e.item['page']}" if "page" in e.item else ""
-                label = f"{label}: {_cell(_escape(e.name))}{page}"
+                where = f", p. {e.item['page']}" if "page" in e.item else ""
+                if "section" in e.item:
+                    where = f" (§{e.item['section']}{' ' + e.item['part'] if 'part' in e.item else ''})"
+                label = f"{label}: {_cell(_escape(e.name))}{where}"
             derivations = "; ".join(_link(p, prefix) for p in _pages(e.role("derivation"), kind))
             pages = "; ".join(_link(p, prefix) for p in _pages(e.role("book"), kind))
             if not e.covered and e.not_covered:
