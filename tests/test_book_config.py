@@ -1,6 +1,6 @@
 """The book's configuration keeps the strictness that makes a broken page fail the build.
 
-See STYLE.md item 13: without ``raise_on_error`` a failing cell only warns; without
+See STYLE.md, section 9 (book configuration): without ``raise_on_error`` a failing cell only warns; without
 ``stderr_output: warn`` (and ``-W``) a NumPy RuntimeWarning, i.e. a NaN, slips through.
 The table of contents must name existing files, include every derivation notebook, and
 every page must carry a ``(label)=`` line before its title so that ``{ref}`` works.

@@ -1,7 +1,7 @@
-"""The errata page (book/errata.md) against the catalogs and the test suite.
+"""The errata page (book/errata.md) against the list of errata and the test suite.
 
 Every row of sections 1, 2, 3 and 5 of the chapter (and of the spherical monograph) must
-name at least one test that exists; every catalogued erratum of these sections must have a
+name at least one test that exists; every erratum found in these sections must have a
 row. The wording-only corrections, which no computation can tell apart, are checked where
 the book states them.
 """
@@ -12,7 +12,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 ERRATA = ROOT / "book" / "errata.md"
 
-#: Catalog erratum (planar-part-A §7 as A*, part-B §7 as B*, part-C §8 as C*) -> errata row.
+#: Errata found when the text was read (A*: sections 1 and 2, B*: section 3, C*: sections 4
+#: and 5) -> the row of the errata page that corrects each.
 #: Section 4 (synthesis: B17-B31, C1-C15) is listed in rows 46-74 and is not mapped here.
 CATALOG_TO_ROW = {
     "A1": 75, "A2": 1, "A3": 2, "A4": 3, "A5": 4, "A6": 18, "A7": 5, "A8": 76, "A9": 15,
@@ -64,7 +65,7 @@ def test_errata_rows_name_existing_tests():
 def test_catalog_errata_of_sections_1_2_3_5_have_rows():
     rows = _rows()
     for erratum, number in CATALOG_TO_ROW.items():
-        assert number in rows, f"Expected catalog erratum {erratum} on errata row {number}"
+        assert number in rows, f"Expected erratum {erratum} on errata row {number}"
         assert number not in SYNTHESIS_ROWS
     assert len([k for k in CATALOG_TO_ROW if k.startswith("A")]) == 31
     assert len([k for k in CATALOG_TO_ROW if k.startswith("B")]) == 16
@@ -74,7 +75,7 @@ def test_editorial_corrections_are_stated():
     """Rows 22, 34, 75 and 77: corrections of wording, equation and figure numbers."""
     # row 22: example 2-9 compares its equations with example 2-8, not 2-7
     assert "the four-bar with relative-motion equations is example 2-8" in _text("book/analysis/relative-motion.md")
-    # row 34: the power form of line 1517 rewrites (2-21)
+    # row 34: the power form of §2.3 I rewrites (2-21)
     assert "but it rewrites (2-21)" in _text("derivations/planar/efficiency.md")
     # row 75: the OCR misreadings of Fig 2-3's caption are replaced by the right terms
     glossary = _text("book/glossary.md")

@@ -1,5 +1,5 @@
 """Find it by number (``mech.index``): the harvest, the lookup, the command line and the
-completeness of the index against the catalogs in ``../shared/catalog``."""
+completeness of the index against the textbook data the package ships (``mech/index/data``)."""
 
 import shutil
 import subprocess
@@ -19,18 +19,11 @@ from mech.index import (
     parse_query,
     repository_root,
 )
-from mech.index._catalog import catalog_dir
+from mech.index._catalog import DATA_DIR, catalog_items
 from mech.index._harvest import harvest
 from mech.index._refs import KINDS, parse_test_name
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def _catalog():
-    found = catalog_dir(ROOT)
-    if found is None:
-        pytest.skip("shared/catalog is not beside the clone")
-    return found
 
 
 @pytest.fixture(scope="module")
@@ -150,7 +143,7 @@ def test_spherical_section_from_a_docstring(index):
 
 
 def test_not_covered_entries_name_catalogued_numbers_with_reasons():
-    catalogued = set(catalog_numbers(_catalog()))
+    catalogued = set(catalog_numbers())
     for key, reason in NOT_COVERED.items():
         assert key in catalogued, key
         assert key[0] in KINDS
@@ -158,8 +151,7 @@ def test_not_covered_entries_name_catalogued_numbers_with_reasons():
 
 
 def test_every_catalogued_number_is_covered_or_listed(index):
-    """The completeness test: nothing in the catalogs falls through the index unexplained."""
-    _catalog()
+    """The completeness test: nothing in the textbook data falls through the index unexplained."""
     missing = [e.title for e in index.missing()]
     assert not missing, (
         "these catalogued numbers are neither declared by a derivation, page or function nor "
@@ -176,21 +168,75 @@ def test_stale_not_covered_entries_are_reported(index):
 
 
 def test_catalog_counts():
-    numbers = catalog_numbers(_catalog())
+    """The textbooks' numbers, counted independently of the index: every equation, example,
+    table, figure and exercise of the planar chapter is numbered 2-1, 2-2, ... without a gap,
+    and the monograph's contents list 65 sections in 7 chapters."""
+    numbers = catalog_numbers()
     count = {k: sum(1 for kind, _ in numbers if kind == k) for k in KINDS}
-    assert count["eq"] >= 75 and count["example"] >= 25 and count["table"] >= 5
-    assert count["fig"] >= 125 and count["exercise"] >= 32 and count["chapter"] == 7
+    assert count == {"eq": 75, "example": 25, "table": 5, "fig": 125, "exercise": 32,
+                     "chapter": 7, "section": 65}
+    for kind in ("eq", "example", "table", "fig", "exercise"):
+        assert sorted(int(n[2:]) for k, n in numbers if k == kind) == \
+            list(range(1, count[kind] + 1)), kind
+
+
+def test_catalog_items_have_titles_sections_and_pages():
+    items = catalog_items()
+    sections = {"2.1": 4, "2.2": 3, "2.3": 4, "2.4": 5, "2.5": 3}
+    parts = ("I", "II", "III", "IV", "V")
+    for (kind, number), item in items.items():
+        assert 3 <= len(item.title) <= 70, (kind, number, item.title)
+        if kind in ("eq", "example", "table", "fig"):
+            assert item.section in sections, (kind, number)
+            assert item.part is None or item.part in parts[: sections[item.section]]
+        if kind == "section":
+            assert isinstance(item.page, int) and 1 <= item.page <= 92, number
+            chapter = number.split(".")[0]
+            assert ("chapter", chapter) in items
+    # spot checks against the textbook: where it prints these numbers
+    assert (items[("eq", "2-19")].section, items[("eq", "2-19")].part) == ("2.3", "I")
+    assert (items[("fig", "2-102")].section, items[("fig", "2-102")].part) == ("2.4", "III")
+    assert (items[("example", "2-25")].section, items[("example", "2-25")].part) == ("2.5", "III")
+    assert items[("section", "3.6.2")].page == 85 and items[("chapter", "4")].page == 91
+
+
+def test_data_ships_with_the_package():
+    """The data files are package data, so a wheel has them, and the index reads nothing else:
+    no path of mech/index leaves the package or the clone it indexes."""
+    toml = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
+    assert '"mech.index" = ["data/*.toml"]' in toml
+    assert sorted(p.name for p in DATA_DIR.glob("*.toml")) == ["planar.toml", "spherical.toml"]
+    for path in (ROOT / "mech" / "index").glob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        assert "shared" not in text and '".."' not in text and "parent.parent" not in text, path
 
 
 def _copy(tmp_path):
-    """A throw-away copy of the folders the index reads, beside a link to the catalogs."""
+    """A throw-away copy of the folders the index reads, with its own copy of the data."""
     clone = tmp_path / "clone"
     clone.mkdir()
     for name in ("derivations", "book", "mech", "tests"):
         shutil.copytree(ROOT / name, clone / name, symlinks=True,
                         ignore=shutil.ignore_patterns("_build", "__pycache__", "*.ipynb"))
-    (tmp_path / "shared").symlink_to(_catalog().parent)
     return clone
+
+
+def test_completeness_fails_for_a_planted_number(tmp_path):
+    """A number added to the data that nothing covers is reported missing, and one taken out
+    of the data lowers the count: the completeness test and the summary can fail."""
+    data = tmp_path / "data"
+    shutil.copytree(DATA_DIR, data)
+    planar = data / "planar.toml"
+    text = planar.read_text(encoding="utf-8")
+    planted = text + '\n[[equation]]\nnumber = "2-76"\ntitle = "a planted equation"\nsection = "2.5"\n'
+    planar.write_text(planted, encoding="utf-8")
+    index = build_index(ROOT, catalog=data)
+    assert [e.key for e in index.missing()] == [("eq", "2-76")]
+    assert index.summary()["eq"] == (76, 75, 1)
+    planar.write_text(text.replace('[[example]]\nnumber = "2-7"\n', '[[example]]\nnumber = "2-7x"\n'),
+                      encoding="utf-8")
+    with pytest.raises(ValueError, match="Expected a number like"):
+        build_index(ROOT, catalog=data)
 
 
 def test_completeness_fails_when_a_derivation_loses_its_number(tmp_path):
@@ -268,7 +314,28 @@ def test_cli_kinds_and_errors():
 def test_cli_summary_and_missing():
     done = _cli("--summary", "--missing")
     assert done.returncode == 0, done.stderr
-    assert "equations" in done.stdout and "NO REASON GIVEN" not in done.stdout
+    assert "NO REASON GIVEN" not in done.stdout
+    lines = done.stdout.splitlines()
+    for kind, total in (("equations", 75), ("examples", 25), ("exercises", 32)):
+        assert any(line.split()[:5] == [kind, str(total), "catalogued,", str(total), "covered,"]
+                   for line in lines), kind
+    # the monograph, section by section, with its pages
+    assert any(line.split()[:3] == ["§3.6.2", "p.", "85"] for line in lines)
+    assert sum(line.lstrip().startswith("§") for line in lines) == 65
+    # --missing names the figures not redrawn, each with its reason
+    assert any(line.startswith("figure 2-124 (industrial robot):") for line in lines)
+
+
+def test_book_page_shows_the_true_counts():
+    """The coverage table of "Find it by number" comes from the packaged data, so a fresh
+    clone shows real counts, not zeros."""
+    from mech.index._render import summary_markdown
+
+    table = summary_markdown(build_index(ROOT))
+    assert "| equations | 75 | 75 | 0 |" in table
+    assert "| examples | 25 | 25 | 0 |" in table
+    assert "| exercises | 32 | 32 | 0 |" in table
+    assert "| monograph sections | 65 |" in table
 
 
 def test_page_is_in_the_toc():

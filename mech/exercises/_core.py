@@ -203,7 +203,8 @@ class Exercise:
     title : str
         A short English title.
     tag : str
-        The catalog's tag: ``"N"`` (the text alone determines it), ``"A"`` or ``"G"``.
+        How far the text fixes the answer: ``"N"`` (the text alone determines it), ``"A"``
+        (the figure is needed and a layout is assumed) or ``"G"`` (a graphical exercise).
     statement : str
         The problem in English, a :meth:`str.format` template over the parameter names.
     parameters : tuple of Parameter

@@ -1,6 +1,6 @@
 """Exercises 2-4, 2-5, 2-7 and 2-10 of chapter 2: kinematic analysis on assumed layouts.
 
-The figures of these exercises (tag "A" in the catalog) are lost, so each solution first
+The figures of these exercises (tag "A") are lost, so each solution first
 states the layout it assumes, then solves it with the general solver `mech.planar.Linkage`
 over a full crank turn (limit positions and extremes refined by bisection) and, for 2-10,
 by instant centres. ``linkage_2_4`` and the like return the assumed linkage, for figures

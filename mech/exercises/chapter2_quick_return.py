@@ -160,7 +160,7 @@ def _solve_2_30(p):
         "theta = 180° (K - 1)/(K + 1); A lies on the circle that sees the rocker's limit "
         "positions C1 C2 under theta; AC2 = b + a (extended), AC1 = b - a (folded).",
         "The exercise states no permitted transmission angle: [gamma] = 40° is assumed, the "
-        "chapter's example value (l.2551, l.2620).",
+        "chapter's example value (§2.4 III, after (2-48)).",
         "The textbook also asks for a graphical solution; the analytical one (2-46) gives "
         "the same linkage exactly.",
     )

@@ -109,7 +109,7 @@ def _solve_2_29(p):
         "(angle psi); A = (0, 0), D = (AD, 0).",
         "phi is the angle of A->B and psi the angle of D->C, both measured counter-clockwise "
         "from the direction A->D (psi from the extension of AD beyond D), as absolute "
-        "positions, not only differences (CONVENTIONS.md; Freudenstein's form).",
+        "positions, not only differences (the book's Conventions page; Freudenstein's form).",
         "The linkage is on one assembly branch through the three positions (the design found "
         "both pins on the branch of the first position).",
     )

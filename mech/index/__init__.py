@@ -6,7 +6,10 @@ tests that pin it.
 The index is harvested from what the repository already declares (see
 :mod:`mech.index._harvest`): titles, headings, captions and labels of the pages, the
 equations each derivation passes to its code generator, public docstrings, the exercise
-registry and test names. Only the gaps are kept by hand, in
+registry and test names. The numbers the textbooks have (every equation, example, table,
+figure and exercise of the planar chapter, every chapter and section of the monograph's
+contents, each with a short title) are the package's data files ``mech/index/data/*.toml``
+(:mod:`mech.index._catalog`). Only the gaps are kept by hand, in
 :data:`mech.index._not_covered.NOT_COVERED`, each with its reason.
 
 It reads the repository's ``derivations/``, ``book/``, ``mech/`` and ``tests/`` folders,
@@ -27,7 +30,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from mech.index._catalog import catalog_dir, catalog_numbers
+from mech.index._catalog import DATA_DIR, catalog_items, catalog_numbers
 from mech.index._harvest import Place, harvest, make_id
 from mech.index._not_covered import NOT_COVERED
 from mech.index._refs import KINDS, kind_of_word, parse
@@ -40,6 +43,7 @@ __all__ = [
     "Place",
     "RepositoryNotFound",
     "build_index",
+    "catalog_items",
     "catalog_numbers",
     "lookup",
     "make_id",
@@ -95,19 +99,28 @@ class Entry:
 
     key : (kind, number), e.g. ("eq", "2-19")
     places : tuple of :class:`Place`
-    catalogued : bool, whether the catalogs list the number (None when they are absent)
+    catalogued : bool, whether the textbook data (``mech/index/data``) lists the number
     not_covered : the reason from ``NOT_COVERED``, or None
+    item : the number's :class:`~mech.index._catalog.CatalogItem` (its short title, section,
+        part or page), or None when the data does not list it
     """
 
     key: tuple
     places: tuple
     catalogued: bool | None
     not_covered: str | None
+    item: dict | None = None
 
     @property
     def title(self):
         """'equation (2-19)', 'figure 2-86', 'monograph §1.3.1'."""
         return f"{KINDS[self.key[0]]} {_label(self.key)}"
+
+    @property
+    def name(self):
+        """The number's short title from the data ("friction-circle radius of a journal"),
+        or None."""
+        return self.item.get("title") if self.item else None
 
     def role(self, role):
         """The places of one role ("derivation", "function", "book", "test")."""
@@ -134,9 +147,11 @@ class Index:
     iterating gives the entries in textbook order.
     """
 
-    def __init__(self, root, places, catalog):
+    def __init__(self, root, places, catalog, items=None):
         self.root = Path(root)
         self.catalog = None if catalog is None else tuple(catalog)
+        #: {(kind, number): CatalogItem} with the title, section and page of each number.
+        self.items = dict(items or {})
         grouped = {}
         for key, place in places:
             grouped.setdefault(key, [])
@@ -147,7 +162,7 @@ class Index:
         self._entries = {
             key: Entry(key, tuple(grouped.get(key, ())),
                        None if self.catalog is None else key in catalogued,
-                       NOT_COVERED.get(key))
+                       NOT_COVERED.get(key), self.items.get(key))
             for key in sorted(keys, key=_sort_key)
         }
 
@@ -192,15 +207,17 @@ class Index:
 def build_index(root=None, *, catalog="auto"):
     """Harvest the repository at ``root`` (default: this clone) into an :class:`Index`.
 
-    ``catalog`` is the folder of the catalogs, ``"auto"`` for ``<root>/../shared/catalog``
-    (None when it is absent), or None to index the harvest alone.
+    ``catalog`` is the folder of the textbook data (``planar.toml`` and ``spherical.toml``):
+    ``"auto"`` for the package's own ``mech/index/data``, another folder (a test plants a
+    change in a copy), or None to index the harvest alone.
     """
     root = repository_root(root)
     if catalog == "auto":
-        catalog = catalog_dir(root)
+        catalog = DATA_DIR
+    items = catalog_items(catalog) if catalog is not None else {}
     numbers = catalog_numbers(catalog) if catalog is not None else None
     known = [n for k, n in numbers or () if k == "section"]
-    return Index(root, harvest(root, known_sections=known), numbers)
+    return Index(root, harvest(root, known_sections=known), numbers, items)
 
 
 _QUERY_WORDS = {"ch": "chapter", "chapter": "chapter", "chapters": "chapter",

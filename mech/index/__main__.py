@@ -44,23 +44,28 @@ def main(argv=None):
     except RepositoryNotFound as exc:
         print(exc, file=sys.stderr)
         return 2
-    if index.catalog is None and (args.summary or args.missing):
-        print("The catalogs (../shared/catalog beside the clone) are absent: only the "
-              "harvested numbers are known.", file=sys.stderr)
     if args.summary:
         for kind, (total, covered, gaps) in index.summary().items():
             print(f"{KINDS[kind] + 's':20s} {total:4d} catalogued, {covered:4d} covered, "
                   f"{gaps:4d} not yet covered")
+        print("\nThe monograph, chapter by chapter and section by section:")
+        for e in index:
+            if e.key[0] in ("chapter", "section") and e.catalogued:
+                label = f"chapter {e.key[1]}" if e.key[0] == "chapter" else f"  §{e.key[1]}"
+                page = f"p. {e.item['page']}" if e.item and "page" in e.item else ""
+                print(f"{label:12s} {page:7s} {e.name or '':58s} "
+                      f"{'covered' if e.covered else 'not yet covered'}")
     if args.missing:
         for e in index:
             if e.catalogued and not e.covered:
-                print(f"{e.title}: {e.not_covered or 'NO REASON GIVEN'}")
+                name = f" ({e.name})" if e.name else ""
+                print(f"{e.title}{name}: {e.not_covered or 'NO REASON GIVEN'}")
         for e in index.stale():
             print(f"{e.title}: covered now; delete its entry in mech/index/_not_covered.py")
     if query:
         entries = index.lookup(query)
         if not entries:
-            print(f"No entry for {query!r}: nothing declares it and the catalogs do not list it.",
+            print(f"No entry for {query!r}: nothing declares it and the textbook data does not list it.",
                   file=sys.stderr)
             return 1
         if len(entries) > 1:

@@ -1,25 +1,35 @@
-"""The numbers the catalogs list: every equation, example, table, figure and exercise of the
-planar chapter, and the chapters and sections of the spherical monograph.
+"""The textbook numbers the index knows, read from the package's own data files.
 
-The catalogs live in ``shared/catalog/`` beside the repository (``<repo>/../shared``); they are
-not part of the package. Standard library only.
+``mech/index/data/planar.toml`` lists the planar chapter's sections, equations, worked
+examples, tables, figures and exercises; ``mech/index/data/spherical.toml`` the spherical
+monograph's chapters and the sections of its table of contents. Each item has a number and a
+short title; the planar items also name the section (and part) of the chapter that prints
+them, the monograph's sections the page. The files ship inside the wheel (package data), so
+the index needs nothing outside the repository. Standard library only.
 """
 
 import re
+import tomllib
 from pathlib import Path
 
-from mech.index._refs import expand_sections
+__all__ = ["DATA_DIR", "CatalogItem", "catalog_items", "catalog_numbers"]
 
-__all__ = ["catalog_dir", "catalog_numbers"]
+#: The folder of the data files that ship with the package.
+DATA_DIR = Path(__file__).resolve().parent / "data"
 
-_PLANAR = ("planar-part-A-structure-kinematics.md", "planar-part-B-forces-synthesis.md",
-           "planar-part-C-synthesis-spatial.md")
+#: Table name in the data files -> kind of reference (see :data:`mech.index._refs.KINDS`).
+_PLANAR_TABLES = {"equation": "eq", "example": "example", "table": "table",
+                  "figure": "fig", "exercise": "exercise"}
+_SPHERICAL_TABLES = {"chapter": "chapter", "section": "section"}
+_NUMBER = {"planar": re.compile(r"2-[1-9]\d{0,2}"),
+           "spherical": re.compile(r"[1-9](?:\.[1-9]\d?){0,2}")}
 
 
-def catalog_dir(root):
-    """``<root>/../shared/catalog`` if it exists, else None."""
-    path = Path(root).resolve().parent / "shared" / "catalog"
-    return path if path.is_dir() else None
+class CatalogItem(dict):
+    """One catalogued number: ``key``, ``title`` and, when known, ``section``, ``part``,
+    ``page`` (a dict with attribute access)."""
+
+    __getattr__ = dict.get
 
 
 def _sort_key(ref):
@@ -27,34 +37,51 @@ def _sort_key(ref):
     return kind, tuple(int(p) for p in re.split(r"[-.]", number))
 
 
-def catalog_numbers(directory):
+def _read(path, tables, pattern):
+    data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    items = {}
+    for table, kind in tables.items():
+        for row in data.get(table, ()):
+            number = row.get("number")
+            if not isinstance(number, str) or not pattern.fullmatch(number):
+                raise ValueError(f"Expected a number like {pattern.pattern} in [[{table}]] of "
+                                 f"{path}, got {number!r}")
+            key = (kind, number)
+            if key in items:
+                raise ValueError(f"Expected each number once in {path}, got [[{table}]] "
+                                 f"{number} twice")
+            if not str(row.get("title", "")).strip():
+                raise ValueError(f"Expected a title for [[{table}]] {number} in {path}, got none")
+            items[key] = CatalogItem(row, key=key)
+    return items
+
+
+def _items(directory):
+    directory = Path(directory)
+    items = _read(directory / "planar.toml", _PLANAR_TABLES, _NUMBER["planar"])
+    items.update(_read(directory / "spherical.toml", _SPHERICAL_TABLES, _NUMBER["spherical"]))
+    return items
+
+
+def catalog_items(directory=None):
+    """Every catalogued number with its data, as ``{(kind, number): CatalogItem}``.
+
+    ``directory`` holds ``planar.toml`` and ``spherical.toml`` (default: the package's
+    :data:`DATA_DIR`).
+
+    >>> items = catalog_items()
+    >>> items[("eq", "2-19")].section, items[("section", "1.3.1")].page
+    ('2.3', 5)
+    """
+    return _items(directory if directory is not None else DATA_DIR)
+
+
+def catalog_numbers(directory=None):
     """Every catalogued number, as a sorted list of ``(kind, number)``.
 
-    Equations are the ``(2-N)`` tags of the planar catalogs; examples their ``Example 2-N``
-    headings; tables every ``Table 2-N``; figures the rows of their figure tables; exercises the
-    headings of ``exercises.md``; the monograph's chapters and the sections that
-    ``spherical-guide.md`` names.
+    >>> from collections import Counter
+    >>> counts = Counter(kind for kind, _ in catalog_numbers())
+    >>> counts["eq"], counts["example"], counts["exercise"], counts["chapter"]
+    (75, 25, 32, 7)
     """
-    directory = Path(directory)
-    found = set()
-    for name in _PLANAR:
-        text = (directory / name).read_text(encoding="utf-8").replace("\\text{-}", "-")
-        found |= {("eq", f"2-{n}") for n in re.findall(r"\(2-(\d+)\)", text)}
-        found |= {("example", f"2-{n}") for n in
-                  re.findall(r"^###\s+(?:Example|Ex\.)\s+2-(\d+)", text, re.M)}
-        found |= {("table", f"2-{n}") for n in re.findall(r"\bTable 2-(\d+)", text)}
-        in_figures = False
-        for line in text.splitlines():
-            if line.startswith("#"):
-                in_figures = "Figures" in line
-            elif in_figures:
-                m = re.match(r"\|\s*2-(\d+)\b", line)
-                if m:
-                    found.add(("fig", f"2-{m.group(1)}"))
-    exercises = (directory / "exercises.md").read_text(encoding="utf-8")
-    found |= {("exercise", f"2-{n}") for n in re.findall(r"^###\s+2-(\d+)\b", exercises, re.M)}
-    guide = (directory / "spherical-guide.md").read_text(encoding="utf-8")
-    found |= {("chapter", n) for n in re.findall(r"^## Chapter (\d+)", guide, re.M)}
-    for first, last in re.findall(r"\((\d\.\d+\.\d+)\)(?:\s*to\s*\((\d\.\d+\.\d+)\))?", guide):
-        found |= {("section", s) for s in (expand_sections(first, last) if last else [first])}
-    return sorted(found, key=_sort_key)
+    return sorted(catalog_items(directory), key=_sort_key)

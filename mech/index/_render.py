@@ -34,8 +34,14 @@ def entry_text(entry, html_root="book/_build/html"):
     """A few lines answering one entry on the terminal."""
     state = "covered" if entry.covered else "not yet covered"
     if entry.catalogued is False:
-        state += "; not in the catalogs"
-    lines = [f"{entry.title}: {state}"]
+        state += "; not in the textbook data (mech/index/data)"
+    name = f" ({entry.name})" if entry.name else ""
+    if entry.item and "section" in entry.item:
+        part = f" {entry.item['part']}" if "part" in entry.item else ""
+        name = f" ({entry.name}; textbook §{entry.item['section']}{part})"
+    elif entry.item and "page" in entry.item:
+        name = f" ({entry.name}; p. {entry.item['page']})"
+    lines = [f"{entry.title}{name}: {state}"]
     if entry.not_covered and not entry.covered:
         lines.append(f"  why: {entry.not_covered}")
     elif entry.stale:
@@ -106,6 +112,11 @@ def markdown_tables(index, kinds=None, *, prefix=""):
             label = e.title.split(" ", 1)[1] if kind != "chapter" else e.key[1]
             if kind.startswith(("chapter", "section")):
                 label = e.title.replace("monograph ", "").replace("chapter ", "")
+            if e.name:
+                where = f", p. {e.item['page']}" if "page" in e.item else ""
+                if "section" in e.item:
+                    where = f" (§{e.item['section']}{' ' + e.item['part'] if 'part' in e.item else ''})"
+                label = f"{label}: {_cell(_escape(e.name))}{where}"
             derivations = "; ".join(_link(p, prefix) for p in _pages(e.role("derivation"), kind))
             pages = "; ".join(_link(p, prefix) for p in _pages(e.role("book"), kind))
             if not e.covered and e.not_covered:
@@ -121,7 +132,7 @@ def markdown_tables(index, kinds=None, *, prefix=""):
 
 def summary_markdown(index):
     """A table of how many catalogued numbers of each kind are covered."""
-    rows = ["| kind | in the catalogs | covered | not yet covered |", "|---|---:|---:|---:|"]
+    rows = ["| kind | in the textbook | covered | not yet covered |", "|---|---:|---:|---:|"]
     for kind, (total, covered, gaps) in index.summary().items():
         rows.append(f"| {KINDS[kind]}s | {total} | {covered} | {gaps} |")
     return "\n".join(rows)

@@ -1,4 +1,4 @@
-"""Degrees of freedom of a spatial linkage by counting constraints (F67, seed line 3442)."""
+"""Degrees of freedom of a spatial linkage by counting constraints (F67, §2.5, part II)."""
 
 import numbers
 

@@ -196,7 +196,7 @@ def test_eccentric_clamp_always_locks_when_argument_exceeds_one():
 
 
 def test_example_2_11_ratio_is_2_26_over_2_28():
-    """Errata rows 36 and 37 (example 2-11, lines 1602-1604). The forward efficiency is (2-26),
+    """Errata rows 36 and 37 (example 2-11, §2.3 I). The forward efficiency is (2-26),
     eta = tan(lam)/tan(lam + 2 phi); the reverse one is (2-28), eta' = tan(lam - 2 phi)/tan(lam);
     their ratio eta/eta' is (2-26) / (2-28) = tan^2(lam)/(tan(lam + 2 phi) tan(lam - 2 phi)),
     the first form the text prints, and not (2-28) / (2-26) as the text says. The formulas

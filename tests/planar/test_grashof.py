@@ -259,7 +259,7 @@ def _as_tuples(intervals):
 
 
 def test_kind_intervals_u1():
-    """U1 (lines 171-180, corrected): AB = 20, BC = 50, CD = 40, ground AD varies."""
+    """U1 (§2.1 III, corrected): AB = 20, BC = 50, CD = 40, ground AD varies."""
     got = kind_intervals((20, 50, 40), "d")
     assert all(isinstance(r, KindInterval) for r in got)
     assert _as_tuples(got) == [
@@ -271,7 +271,7 @@ def test_kind_intervals_u1():
 
 
 def test_kind_intervals_u1_half_millimetre_sweep():
-    """The catalog's recomputation: grashof swept over AD in 0.5 mm steps."""
+    """An independent recomputation: grashof swept over AD in 0.5 mm steps."""
     intervals = kind_intervals({"a": 20, "b": 50, "c": 40}, "d")
     for ad in np.arange(0.5, 110.0, 0.5):
         inside = [r for r in intervals if ad in r]

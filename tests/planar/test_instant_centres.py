@@ -3,7 +3,7 @@
 The centres are found by line intersections only. They are checked by their defining
 property (links i and j have the same velocity at P_ij), with the link velocities taken
 from the analytic loop derivatives of `FourBar` / `SliderCrank` (a different route) or
-from the exact derivative of the cam follower's position; and against the catalog's
+from the exact derivative of the cam follower's position; and against the independently recomputed
 recomputed numbers of examples 2-4 and 2-5.
 """
 
@@ -106,7 +106,7 @@ def test_omega_ratio_fourbar_matches_analytic():
 
 
 def test_omega_ratio_direction_rule():
-    """Same sense iff P13 lies outside the segment P14 P34 (the catalog's rule for F34)."""
+    """Same sense iff P13 lies outside the segment P14 P34 (the rule of §2.2, part II)."""
     for a, b, c, d, branch, theta in _random_fourbars(100, seed=33):
         pose = FourBar(a, b, c, d, branch=branch).solve(theta, order=1)
         centres = instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): d})

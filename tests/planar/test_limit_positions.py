@@ -86,7 +86,7 @@ def _acos_reference(a, b, c, d):
 def test_example_2_1_limit_positions():
     """Example 2-1, (10, 40, 30, 35): Fig. 2-37 gives the swing, theta and K of eq. (2-9).
 
-    The text leaves them to a drawing; the values are those recomputed in the catalog by a
+    The text leaves them to a drawing; the values are those recomputed independently by a
     720 001-point simulation (swing 45.9719 deg, theta 18.1324 deg, K 1.22404, rocker range
     [79.7134, 125.685] deg).
     """
@@ -209,7 +209,7 @@ def test_limit_positions_rejects_bad_input():
 
 
 def test_line_669_designs_without_quick_return():
-    """Errata (line 669, catalog A11): the sentence names a crank-rocker with K = 1 (Fig
+    """Errata row 78 (§2.2, part II): the sentence names a crank-rocker with K = 1 (Fig
     2-100) and the centric slider-crank (Fig 2-22) as designs without quick return, and says
     an oscillating guide-bar always has K > 1. A crank-rocker has K = 1 exactly when A lies on
     the line of its two limit positions C1C2, that is when the power of A with respect to the

@@ -306,7 +306,7 @@ def test_linkage_instant_centres_agree_with_analytic_rates():
 
 # ---------------------------------------------------------------- errata of §2.2 (book/errata.md)
 def test_erratum_10_link_angles_keep_their_quadrant():
-    """Errata row 10 (lines 1095, 1120, 1190): angles as arctg(dy/dx) lose the quadrant. A
+    """Errata row 10 (§2.2 II, after (2-10)): angles as arctg(dy/dx) lose the quadrant. A
     rocker pointing into the second and third quadrants must give the angle of mpmath's atan2,
     which differs from arctan(dy/dx) by pi there."""
     a, b, c, d = 20.0, 60.0, 45.0, 70.0
@@ -353,7 +353,7 @@ def test_erratum_12_groups_are_class_ii(make):
 
 
 def test_erratum_a8_five_bar_turn_counts():
-    """Errata (line 322, catalog A8): for the two-crank five-bar the text gives
+    """Errata row 76 (§2.1, part IV): for the two-crank five-bar the text gives
     i14 = omega1/omega4 = -m/n and says that crank 1 turns n times and crank 4 m times per
     cycle of C. With the ratio as printed the counts are the other way round: crank 1 turns
     m times and crank 4 n times. Here m = 1, n = 2: C's path closes after crank 4 has made
@@ -376,7 +376,7 @@ def test_erratum_a8_five_bar_turn_counts():
 
 
 def _dwell_six_bar_reference(theta):
-    """Lines 503-509 (catalog A31) by hand in NumPy: four-bar A = 0, D = 1.15, AB = 0.43,
+    """Fig. 2-31a (§2.2, part I) by hand in NumPy: four-bar A = 0, D = 1.15, AB = 0.43,
     BC = CD = 1; M on the coupler with CM = 1 and angle BCM = 95 deg; F from AF = 2.51,
     DF = 1.47 (below AD); E from EM = R = 3.34 and EF = 0.41. Returns E - F."""
     def meet(p, r, q, s, side):
@@ -394,7 +394,7 @@ def _dwell_six_bar_reference(theta):
 
 
 def test_erratum_a31_dwell_six_bar_printed_data_has_no_dwell():
-    """Errata (lines 503-509, catalog A31): the double-dwell six-bar built from the printed
+    """Errata row 79 (Fig. 2-31a, §2.2, part I): the double-dwell six-bar built from the printed
     relative lengths assembles through a full crank turn and swings its rocker EF by 52.37
     deg, but stays near its two limit positions no longer than a harmonic rocker of the same
     swing: within 0.25 deg of them for 16.0 and 11.5 deg of crank turn (a harmonic swing:

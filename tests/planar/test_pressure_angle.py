@@ -1,7 +1,7 @@
 """Tests for ``mech.planar.forces._pressure_angle`` (F49 to F59, eq. 2-30).
 
 References are independent of the code path: the angle between solved vectors with
-``mpmath.acos`` at 50 digits, dense brute-force sweeps for the extremes, and the catalog's
+``mpmath.acos`` at 50 digits, dense brute-force sweeps for the extremes, and the independently recomputed
 check case gamma_min = 44.4153 degrees for (a, b, c, d) = (30, 70, 60, 80).
 """
 

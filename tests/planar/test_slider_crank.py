@@ -284,7 +284,7 @@ def _max_abs_error(lam, quantity, n=20001):
 @pytest.mark.parametrize("lam, cos_err, x_err", [
     (0.2, 2.04e-4, 1.02e-3), (0.25, 5.04e-4, 2.02e-3), (0.3, 1.06e-3, 3.54e-3), (1 / 3, 1.64e-3, 4.91e-3)])
 def test_approximate_error_table(lam, cos_err, x_err):
-    """(2-10) errors: the catalog's recomputed table (independent of this package)."""
+    """(2-10) errors: an independently recomputed table (independent of this package)."""
     assert _max_abs_error(lam, "cos") == pytest.approx(cos_err, rel=0.01)
     assert _max_abs_error(lam, "x") == pytest.approx(x_err, rel=0.01)
 

@@ -107,7 +107,7 @@ def _proved(k, theta, d, rtol=1e-9):
 
 
 def test_example_2_15_first_four_poses():
-    """Example 2-15, poses 1-4 (l.2113), as a centric slider-crank (Fig. 2-91, (2-42))."""
+    """Example 2-15, poses 1-4 (§2.4 I), as a centric slider-crank (Fig. 2-91, (2-42))."""
     designs = centric_slider_cranks(THETA_2_15, P_2_15)
     raw = raw_solutions(THETA_2_15, P_2_15)
     _match(designs, raw, 150.0)

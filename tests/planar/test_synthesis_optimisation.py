@@ -24,7 +24,7 @@ from mech.planar.synthesis._optimisation_examples import _coupler_model
 
 POINTS_2_24 = np.array([9.50 + 8.26j, 9 + 8.87j, 7.96 + 9.51j, 5.65 + 9.94j, 4.36 + 9.7j, 3.24 + 9j,
                         3.26 + 8.36j, 4.79 + 8.11j, 6.58 + 8j, 9.12 + 7.89j])
-# the optimum printed in the text (l. 3246), its phi_4 misprinted as phi_A; theta0 is not printed
+# the optimum printed in the text (§2.4 V, after (2-58)), its phi_4 misprinted as phi_A; theta0 is not printed
 PRINTED_2_24 = [1.678, 5.819, 5.407, 7.03, 7.973, 2.066, 2.249, np.radians(79.016), np.radians(-70.29)]
 # a rough start, as a graphical design would give (the printed design rounded)
 START_2_24 = np.array([1.7, 5.8, 5.4, 7.0, 8.0, 2.0, 2.2, np.radians(80), np.radians(-70), np.radians(90)])
@@ -77,7 +77,7 @@ def _coupler_points_mp(x, n):
 # ---------------------------------------------------------------- the text's small examples
 
 def _qp(equality=True):
-    """The illustrative problem of l. 3032 (Fig. 2-110)."""
+    """The illustrative problem of §2.4 V (Fig. 2-110)."""
     def h(x):
         x1, x2 = x[..., 0], x[..., 1]
         return (73 * x1**2 + 52 * x2**2 + 72 * x1 * x2 - 356 * x1 - 292 * x2 + 433)[..., None]
@@ -107,7 +107,7 @@ def test_scipy_minimize_textbook_points_B_and_C():
 
 
 def test_penalty_method_textbook_example_one_stage():
-    """l. 3176: phi = x - r/(1 - x) is least at 1 + sqrt(r); the box (-5, 5) adds r/(5 + x) + r/(5 - x)."""
+    """§2.4 V: phi = x - r/(1 - x) is least at 1 + sqrt(r); the box (-5, 5) adds r/(5 + x) + r/(5 - x)."""
     model = DesignModel(lambda x: x[..., 0], [(-5, 5)], inequality=lambda x: 1.0 - x)
     for r in (1e-2, 1e-4, 1e-6):
         got = penalty_method(model, [3.0], r0=r, stages=1, ftol=0, xtol=1e-15).x[0]

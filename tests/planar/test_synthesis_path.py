@@ -79,7 +79,7 @@ def test_example_2_21_untimed_reproduces_book(ex21):
     assert k.passes and k.in_order and k.point_error < 1e-9
     assert k.kind == "crank-rocker"
     assert 0.0 < k.gamma_min <= np.min(k.gamma_at_points)
-    # the catalog's coupler rotations, degrees
+    # independently recomputed coupler rotations, degrees
     np.testing.assert_allclose(np.degrees(k.coupler_rotation[1:]),
                                [8.35102, 20.0436, 80.8362, 76.1784, 70.6636, -3.76876], atol=1e-3)
 

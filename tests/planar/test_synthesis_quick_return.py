@@ -155,7 +155,7 @@ def test_crank_and_coupler_fix_alpha():
 
 
 def test_in_text_example_with_given_crank():
-    """l.2533: K = 1.3, c = 100, phi = 40°, a = 31.4 -> alpha 28.49°, b 73.65, d 95.95 (printed)."""
+    """§2.4 III, after (2-47): K = 1.3, c = 100, phi = 40°, a = 31.4 -> alpha 28.49°, b 73.65, d 95.95 (printed)."""
     q = quick_return_crank_rocker(1.3, 100.0, deg(40), crank=31.4)
     m = q.check()
     assert math.degrees(q.alpha) == pytest.approx(28.5013, abs=1e-4)
@@ -166,7 +166,7 @@ def test_in_text_example_with_given_crank():
 
 
 def test_in_text_example_frame_perpendicular_to_bisector():
-    """l.2529 (2-47): alpha = 76.74° puts the rocker's limits at 70° and 110° from DA."""
+    """§2.4 III (2-47): alpha = 76.74° puts the rocker's limits at 70° and 110° from DA."""
     theta = math.pi * 0.3 / 2.3
     alpha = math.acos(math.sin(deg(20) - theta) / math.sin(deg(20))) - theta          # (2-47)
     q = quick_return_crank_rocker(1.3, 100.0, deg(40), alpha=alpha)
@@ -178,7 +178,7 @@ def test_in_text_example_frame_perpendicular_to_bisector():
 
 
 def test_in_text_example_with_permitted_angle():
-    """l.2551-2558: K = 1.25, c = 500, phi = 40°, [gamma] = 40°; printed 69.2° is 68.19°."""
+    """§2.4 III, after (2-48): K = 1.25, c = 500, phi = 40°, [gamma] = 40°; printed 69.2° is 68.19°."""
     fam = crank_rocker_family(1.25, 500.0, deg(40), min_transmission=deg(40))
     (lo, hi), = fam.intervals
     assert (math.degrees(lo), math.degrees(hi)) == pytest.approx((14.4487, 45.2267), abs=1e-4)
@@ -193,7 +193,7 @@ def test_in_text_example_with_permitted_angle():
 
 
 def test_in_text_example_read_from_figure_2_102():
-    """l.2560: at alpha = 15° gamma_min is 37.31° (printed 37.97°); at 46° it is 37.83°."""
+    """§2.4 III, after (2-48): at alpha = 15° gamma_min is 37.31° (printed 37.97°); at 46° it is 37.83°."""
     got = [quick_return_crank_rocker(1.3, 100.0, deg(40), alpha=deg(al)).check().min_transmission_angle
            for al in (15.0, 46.0)]
     ref = [float(_mp_gamma_min(1.3, 100, deg(40), mpmath.radians(al), 1)) for al in (15, 46)]
@@ -225,7 +225,7 @@ def test_table_2_4_regenerated_with_its_misprint():
     table = crank_rocker_best_table()
     assert [(r, i, p) for r, i, p, _ in table_errata(PRINTED_TABLE_2_4, table)] == [("theta", 0, 4.37)]
     assert table["theta"][0] == pytest.approx(4.3902, abs=1e-4)
-    # the best swing is phi = theta (l.2636): one degree either side is worse
+    # the best swing is phi = theta (§2.4 III, after (2-50)): one degree either side is worse
     for K, th in zip(TABLE_K, np.radians(table["theta"])):
         best = crank_rocker_family(K, 1.0, th).best.min_transmission_angle
         assert best == pytest.approx(deg(table["gamma"][list(TABLE_K).index(K)]), abs=1e-12)
@@ -234,7 +234,7 @@ def test_table_2_4_regenerated_with_its_misprint():
 
 
 def test_largest_time_ratio_for_40_degrees():
-    """l.2622: with [gamma] = 40° no crank-rocker has K > 1.324346; l.2690: no slider-crank K > 1.2862."""
+    """§2.4 III (near Table 2-4): with [gamma] = 40° no crank-rocker has K > 1.324346; §2.4 III, after (2-52): no slider-crank K > 1.2862."""
     def rocker(K):
         return crank_rocker_family(K, 1.0, math.pi * (K - 1) / (K + 1), xtol=1e-14).best.min_transmission_angle - deg(40)
 
@@ -252,7 +252,7 @@ def test_largest_time_ratio_for_40_degrees():
     (25.0, (46.9066, 110.189, 34.0018), 42.7547),
 ])
 def test_slider_crank_examples(alpha_deg, lengths, gamma_deg):
-    """l.2664-2673: K = 1.25, H = 100, three alphas read from Fig. 2-104."""
+    """§2.4 III, after (2-52): K = 1.25, H = 100, three alphas read from Fig. 2-104."""
     q = quick_return_slider_crank(1.25, 100.0, alpha=deg(alpha_deg))
     assert q.lengths == pytest.approx(lengths, abs=1e-3)
     m = q.check()

@@ -115,7 +115,7 @@ def test_rot_z_rot_x_textbook_entries():
     np.testing.assert_allclose(rot_z(phi) @ rot_x(lam), R_ij, rtol=0, atol=1e-15)
     np.testing.assert_allclose(hd(phi, lam, 0.0, 0.0)[:3, :3], R_ij, rtol=0, atol=1e-16)
     np.testing.assert_allclose(hd_inv(phi, lam, 0.0, 0.0)[:3, :3], R_ij.T, rtol=0, atol=1e-16)   # (2-64)
-    # the fixed-axis order is a different matrix (line 3339)
+    # the fixed-axis order is a different matrix (§2.5 I)
     assert np.abs(rot_x(lam) @ rot_z(phi) - R_ij).max() > 0.1
 
 

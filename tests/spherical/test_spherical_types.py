@@ -276,7 +276,7 @@ def test_isogram_output_closes_the_loop(a, b):
 
 def test_isogram_branch_plus_stays_parallel():
     """Through its change points at 0 and pi the parallel isogram stays parallel and the
-    crossed one stays crossed (the branch guarantee of CONVENTIONS.md)."""
+    crossed one stays crossed (the branch guarantee of CONVENTIONS.md, section Spherical)."""
     a, b = 0.4, 0.9
     theta = np.array([-3.0, -1e-9, 0.0, 0.5, 2.0, np.pi, 3.5, 5.0])
     par = isogram_output(theta, a, b)

@@ -38,7 +38,7 @@ __all__ = [
     "rolling_mill_max_thickness",
 ]
 
-#: Table 2-2 of the textbook (seed lines 1303-1315): coefficients of friction of flat
+#: Table 2-2 of the textbook (§2.3, part I): coefficients of friction of flat
 #: contacts by material pair, as printed. Each entry is ``(static dry, static lubricated,
 #: kinetic dry, kinetic lubricated)``; each value a ``(low, high)`` range (equal ends for a
 #: single number) or ``None`` where the table leaves the cell empty.

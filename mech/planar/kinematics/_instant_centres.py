@@ -90,7 +90,7 @@ def _direction(name, value):
 
 
 def centre_count(n):
-    """Number of instant centres of an `n`-link mechanism, frame included (F32, line 693).
+    """Number of instant centres of an `n`-link mechanism, frame included (F32, §2.2 II).
 
     ``N = n (n - 1) / 2``: one centre for each pair of links.
 

@@ -369,7 +369,7 @@ class OldhamCoupling:
 
     Notes
     -----
-    The text (lines 361, 1220) says the cross-slider turns at twice the input speed; it
+    The text (§2.2 I and III) says the cross-slider turns at twice the input speed; it
     turns at the input speed, and only its centre orbits at 2 omega, which causes the
     rotating inertia force ``m (e0/2) (2 omega)^2`` (`inertia_force`). Derivation and
     proof: :ref:`deriv-special-mechanisms`.

@@ -216,7 +216,7 @@ def kind_intervals(lengths, vary, *, rtol=1e-12):
     Notes
     -----
     Derived on the page ``derivations/planar/grashof.md`` (label ``deriv-grashof``); the
-    worked sweep U1 of the textbook (its summary line 197 has two misprints) is the example below.
+    worked sweep U1 of the textbook (its summary §2.1 III has two misprints) is the example below.
 
     Examples
     --------

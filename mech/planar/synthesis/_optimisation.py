@@ -76,7 +76,7 @@ class DesignModel:
 
     Examples
     --------
-    The illustrative problem of the text (l. 3032, Fig. 2-110) without its equality:
+    The illustrative problem of the text (§2.4 V, Fig. 2-110) without its equality:
 
     >>> from mech.planar.synthesis import DesignModel
     >>> model = DesignModel(lambda x: ((x - 2.0) ** 2).sum(-1), [(0, 3), (0, 3)],
@@ -407,7 +407,7 @@ def scipy_minimize(model, x0, *, method="SLSQP", options=None):
 
     Examples
     --------
-    The text's example (l. 3032, Fig. 2-110) with all constraints: optimum C = (0.8, 1.1).
+    The text's example (§2.4 V, Fig. 2-110) with all constraints: optimum C = (0.8, 1.1).
 
     >>> import numpy as np
     >>> from mech.planar.synthesis import DesignModel, scipy_minimize

@@ -111,7 +111,7 @@ def penalty_method(model, x0, *, r0=None, factor=0.3, stages=12, iterations=2000
 
     Examples
     --------
-    The text's example (l. 3176): minimise x subject to 1 - x <= 0.
+    The text's example (§2.4 V): minimise x subject to 1 - x <= 0.
 
     >>> from mech.planar.synthesis import DesignModel, penalty_method
     >>> model = DesignModel(lambda x: x[..., 0], [(-5, 5)], inequality=lambda x: 1.0 - x)

@@ -1,4 +1,4 @@
-"""Quick-return design (textbook section 4, III: l.2388-2700, eqs. 2-46 to 2-52, Ex. 2-17 to 2-20).
+"""Quick-return design (textbook section 4, III: §2.4 III, eqs. 2-46 to 2-52, Ex. 2-17 to 2-20).
 
 The time ratio K fixes the extreme angle theta = pi (K - 1)/(K + 1). A crank-rocker with
 rocker c and swing phi, or an offset slider-crank with stroke H, then has one free
@@ -308,7 +308,7 @@ def quick_return_crank_rocker(time_ratio, rocker, swing, *, alpha=None, crank=No
     --------
     >>> import numpy as np
     >>> from mech.planar.synthesis import quick_return_crank_rocker
-    >>> q = quick_return_crank_rocker(1.3, 100.0, np.radians(40.0), crank=31.4)   # l.2533
+    >>> q = quick_return_crank_rocker(1.3, 100.0, np.radians(40.0), crank=31.4)   # §2.4 III, after (2-47)
     >>> round(float(np.degrees(q.alpha)), 2), [round(x, 2) for x in q.lengths]
     (28.5, [31.4, 73.67, 100.0, 95.98])
     >>> round(q.check().time_ratio, 9)
@@ -431,7 +431,7 @@ def quick_return_slider_crank(time_ratio, stroke, *, alpha=None, offset=None):
     --------
     >>> import numpy as np
     >>> from mech.planar.synthesis import quick_return_slider_crank
-    >>> q = quick_return_slider_crank(1.25, 100.0, alpha=np.radians(25.0))   # l.2671
+    >>> q = quick_return_slider_crank(1.25, 100.0, alpha=np.radians(25.0))   # §2.4 III, after (2-52)
     >>> [round(x, 3) for x in q.lengths], round(float(np.degrees(q.min_transmission_angle)), 3)
     ([46.907, 110.189, 34.002], 42.755)
     >>> round(q.check().output_range, 9)
@@ -475,7 +475,7 @@ class QuickReturnGuideBar:
     frame, crank : float
         d and a.
     min_guide_length : float
-        The guide must reach the crank pin at its farthest, ``d + a`` (l.2492).
+        The guide must reach the crank pin at its farthest, ``d + a`` (§2.4 III).
     """
 
     guide_bar: GuideBar
@@ -500,7 +500,7 @@ def quick_return_guide_bar(time_ratio, frame):
 
     The guide's limit positions are tangent to the crank circle, so the crank is
     perpendicular to the guide there, the swing equals the extreme angle theta and
-    ``a = d sin(theta / 2)`` (l.2488-2492).
+    ``a = d sin(theta / 2)`` (§2.4 III).
 
     Examples
     --------

@@ -7,7 +7,7 @@ families search the free angle alpha of the crank-rocker and the slider-crank (E
 2-18) for the largest smallest transmission angle, or for every design that keeps it above
 a permitted value; the tables are regenerated from those searches.
 
-The printed tables (l.2572-2689 of the seed text) are kept here as data so that the book
+The printed tables (Tables 2-3 to 2-5, §2.4, part III) are kept here as data so that the book
 page and the tests compare the same numbers; `table_errata` lists the printed entries
 that differ from the regenerated ones by more than their rounding allows. The designs
 themselves are built in ``_quick_return_design`` (page ``deriv-quick-return-design``).
@@ -294,7 +294,7 @@ def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side
     Notes
     -----
     gamma_min(alpha) comes from (2-48) and its companion at the extended position
-    (l.2543); alpha where the linkage is not a crank-rocker doing the task (see
+    (§2.4 III); alpha where the linkage is not a crank-rocker doing the task (see
     `quick_return_crank_rocker`) count as below [gamma]. The
     sampling must resolve each interval: an interval narrower than (pi - theta)/samples
     can be missed.
@@ -304,7 +304,7 @@ def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side
     >>> import numpy as np
     >>> from mech.planar.synthesis import crank_rocker_family
     >>> f = crank_rocker_family(1.25, 500.0, np.radians(40.0), min_transmission=np.radians(40.0))
-    >>> [tuple(round(float(np.degrees(x)), 4) for x in iv) for iv in f.intervals]   # l.2551
+    >>> [tuple(round(float(np.degrees(x)), 4) for x in iv) for iv in f.intervals]   # §2.4 III, after (2-48)
     [(14.4487, 45.2267)]
     """
     K, theta = _theta(time_ratio)
@@ -364,7 +364,7 @@ TABLE_K = (1.05, 1.10, 1.15, 1.20, 1.25, 1.30, 1.35, 1.40, 1.45)
 TABLE_2_3_SWINGS_DEG = (10, 20, 30, 40, 50, 60, 70, 80)
 
 _NAN = float("nan")
-#: Table 2-3 as printed (l.2574-2606): {swing in degrees: {row: 9 values}}; gamma in degrees.
+#: Table 2-3 as printed (§2.4 III): {swing in degrees: {row: 9 values}}; gamma in degrees.
 #: The a/c row of 10° prints only seven numbers (the last two are lost): NaN here.
 PRINTED_TABLE_2_3 = {
     10: {"a/c": (0.086, 0.084, 0.083, 0.082, 0.081, 0.080, 0.079, _NAN, _NAN),
@@ -400,12 +400,12 @@ PRINTED_TABLE_2_3 = {
          "d/c": (2.076, 1.676, 1.483, 1.361, 1.274, 1.207, 1.154, 1.109, 1.072),
          "gamma": (42.0, 38.38, 35.74, 33.63, 31.85, 30.32, 28.96, 27.74, 26.64)},
 }
-#: Table 2-4 as printed (l.2644-2648): phi = theta and (gamma_min)_max, degrees.
+#: Table 2-4 as printed (§2.4 III): phi = theta and (gamma_min)_max, degrees.
 PRINTED_TABLE_2_4 = {
     "theta": (4.37, 8.57, 12.56, 16.36, 20.0, 23.48, 26.81, 30.0, 33.06),
     "gamma": (67.85, 59.42, 53.4, 48.66, 44.76, 41.44, 38.58, 36.07, 33.85),
 }
-#: Table 2-5 as printed (l.2682-2689); gamma in degrees.
+#: Table 2-5 as printed (§2.4 III); gamma in degrees.
 PRINTED_TABLE_2_5 = {
     "a/H": (0.491, 0.483, 0.476, 0.470, 0.466, 0.461, 0.458, 0.455, 0.453),
     "b/H": (2.527, 1.796, 1.471, 1.279, 1.149, 1.054, 0.980, 0.921, 0.873),

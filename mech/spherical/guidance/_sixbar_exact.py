@@ -1,6 +1,6 @@
 """Exact design of Stephenson-1, Stephenson-2 and Watt-1 guidance six-bars for two to five
 orientations with prescribed input angles, by kinematic inversion (the spherical monograph,
-chapter 4: §4.1.2 for the Stephenson-1; the seed's table of contents stops there, so the
+chapter 4: §4.1.2 for the Stephenson-1; the monograph's table of contents at hand stops there, so the
 sections of the other two are not known).
 
 Each type is designed as three guidance dyads in turn. The rotations of one link seen from
