@@ -408,3 +408,17 @@ def test_variants_valid_fast(number):
 def test_variants_valid_thousand(number):
     for seed in range(1000):
         _valid(number, seed)
+
+
+def test_teaching_modules_import_light():
+    """The export, grading, figure and text modules import neither Matplotlib nor Typst
+    (nor an XML library) until a figure, a PDF or a quiz is asked for."""
+    import subprocess
+    import sys
+
+    probe = ("import mech.exercises, mech.exercises.__main__, mech.exercises._export, mech.exercises._grade, "
+             "mech.exercises._figures, mech.exercises._text, sys; "
+             "print(sorted({m.split('.')[0] for m in sys.modules} & {'matplotlib', 'typst', 'xml', 'scipy', "
+             "'sympy', 'zipfile'}))")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120, check=True)
+    assert done.stdout.strip() == "[]"
