@@ -121,7 +121,7 @@ def write_markdown(students, out, *, title="Problem sheet", html_too=True):
                 sheet += [f"![Figure of exercise {it.number}]({fig})", ""]
             sheet += ["Answer with these keys:", ""] + _answer_lines(it) + [""]
             key += [f"## Exercise {it.number}", "", "| key | asks for | value |", "|---|---|---|"]
-            key += [f"| `{q.key}` | {q.what} | {_fmt(q.value)} {q.unit} |".replace(" |", " |") for q in it.quantities]
+            key += [f"| `{q.key}` | {q.what} | {_fmt(q.value)} {q.unit} |" for q in it.quantities]
             key += ["", it.solution.as_markdown(), ""]
         for name, lines in ((f"{st.label}.md", sheet), (f"{st.label}_key.md", key)):
             text = "\n".join(lines).rstrip() + "\n"
