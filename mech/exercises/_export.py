@@ -144,8 +144,13 @@ def write_markdown(students, out, *, title="Problem sheet", html_too=True):
 def _solution_html(item):
     from mech.exercises._sheet import markdown_to_html
 
+    import re
+
     page = markdown_to_html(item.solution.as_markdown(), title="")
-    return page.split("<body>\n", 1)[1].rsplit("</body>", 1)[0]
+    body = page.split("<body>\n", 1)[1].rsplit("</body>", 1)[0]
+    # the LMS's MathJax filter reads \( ... \): the formulas typeset there
+    body = re.sub(r'<span class="math inline">(.*?)</span>', r"\\(\1\\)", body)
+    return re.sub(r'<div class="math block">(.*?)</div>', r"\\[\1\\]", body, flags=re.S)
 
 
 def write_moodle(students, path, *, rtol=0.01, atol=0.01, category="mech"):
