@@ -422,3 +422,23 @@ def test_teaching_modules_import_light():
              "'sympy', 'zipfile'}))")
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120, check=True)
     assert done.stdout.strip() == "[]"
+
+
+@pytest.mark.parametrize("argv", [
+    [], ["bogus"], ["show"], ["show", "2-99"], ["show", "2-3", "--set", "AB"], ["variant", "2-3", "--seed", "x"],
+    ["variant", "2-3", "--seed", "-1"], ["sheet", "--out", "/dev/null/sheet"], ["sheet", "2-3", "--students", "0",
+                                                                                 "--out", "OUT"],
+    ["sheet", "2-3", "--format", "docx", "--out", "OUT"], ["sheet", "2-3", "--rtol", "-1", "--out", "OUT"],
+    ["check"], ["check", "2-3", "--seed", "7"], ["check", "2-3", "--seed", "7", "--answer", "K=abc"],
+    ["check", "2-3", "--seed", "7", "--answer", "Z=1"], ["check", "--answers", "/nonexistent.csv"],
+    ["check", "2-3", "--answer", "@/nonexistent.txt"], ["check", "2-3", "--seed", "7", "--answer", "K=1", "--atol", "nan"],
+])
+def test_bad_command_lines_one_line_exit_2(argv, tmp_path, capsys):
+    argv = [str(tmp_path / "out") if a == "OUT" else a for a in argv]
+    with pytest.raises(SystemExit) as err:
+        main(argv)
+    assert err.value.code == 2
+    captured = capsys.readouterr()
+    lines = captured.err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("python -m mech.exercises") and "error:" in lines[0], lines
+    assert "Traceback" not in captured.err
