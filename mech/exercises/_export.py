@@ -204,10 +204,11 @@ def write_moodle(students, path, *, rtol=0.01, atol=0.01, category="mech"):
                 a = text_el(q, "answer", _fmt(qq.value), "moodle_auto_format", fraction="100")
                 ET.SubElement(a, "tolerance").text = f"{qq.tolerance(rtol, atol):.6g}"
                 text_el(a, "feedback", "", "html")
-                units = ET.SubElement(q, "units")
-                u = ET.SubElement(units, "unit")
-                ET.SubElement(u, "multiplier").text = "1"
-                ET.SubElement(u, "unit_name").text = qq.unit or "1"
+                if qq.unit:                              # a ratio or an efficiency has none
+                    units = ET.SubElement(q, "units")
+                    u = ET.SubElement(units, "unit")
+                    ET.SubElement(u, "multiplier").text = "1"
+                    ET.SubElement(u, "unit_name").text = qq.unit
                 ET.SubElement(q, "unitgradingtype").text = "0"      # a missing unit costs nothing
                 ET.SubElement(q, "unitpenalty").text = "0.1000000"
                 ET.SubElement(q, "showunits").text = "3"            # units shown in the text only

@@ -218,8 +218,12 @@ def check_moodle(path, students, numbers):
             assert len(answers_) == 1 and answers_[0].get("fraction") == "100"
             tol = float(answers_[0].find("tolerance").text)
             assert tol > 0
-            assert q.find("units/unit/unit_name").text and q.find("units/unit/multiplier").text == "1"
             if quantities:
+                if quantities[0].unit:
+                    assert q.find("units/unit/unit_name").text == quantities[0].unit
+                    assert q.find("units/unit/multiplier").text == "1"
+                else:
+                    assert q.find("units") is None
                 assert float(answers_[0].find("text").text) == pytest.approx(quantities[0].value, rel=1e-5)
         else:
             assert q.get("type") == "cloze"
