@@ -34,10 +34,11 @@ check-generated: $(STAMP)
 
 ## System packages of the browser test (tests/browser): Debian's chromium, a CJK font and
 ## an OpenType math font for the MathML (Latin Modern Math), installed with apt-get only
-## when missing (as root, or with password-less sudo).
-CHROME_DEBS := chromium fonts-noto-cjk fonts-lmodern
+## when missing (as root, or with password-less sudo). poppler-utils (pdftotext, pdftoppm)
+## reads back the exercise sheets' PDFs in tests/exercises/test_teaching.py.
+CHROME_DEBS := chromium fonts-noto-cjk fonts-lmodern poppler-utils
 browser-deps:
-	@if command -v chromium >/dev/null && fc-list :lang=zh 2>/dev/null | grep -q . \
+	@if command -v chromium >/dev/null && command -v pdftotext >/dev/null && fc-list :lang=zh 2>/dev/null | grep -q . \
 	    && fc-list 2>/dev/null | grep -q "Latin Modern Math"; then :; \
 	elif [ "$$(id -u)" = 0 ]; then \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $(CHROME_DEBS); \

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import integer, real_number
+from mech.exercises._grade import Verdict
 
 __all__ = [
     "DEFAULT_EXERCISES",
@@ -49,12 +50,19 @@ def _normal(text):
 @dataclass(frozen=True)
 class Quantity:
     """A numeric answer of an exercise: its result name, the key to answer it by, its value
-    in the unit a student uses (degrees for angles) and that unit."""
+    in the unit a student uses (degrees for angles), that unit, what the key asks for, and
+    other names that ``check`` accepts for it (the keys spelt before the vocabulary)."""
 
     name: str
     key: str
     value: float
     unit: str
+    what: str = ""
+    aliases: tuple = ()
+
+    def tolerance(self, rtol=0.01, atol=0.01):
+        """The absolute tolerance of this answer: ``rtol * |value| + atol``."""
+        return rtol * abs(self.value) + atol
 
 
 _SYMBOL = re.compile(r"[A-Z][A-Za-z0-9]{0,3}|[A-Za-z][A-Za-z0-9]*_[A-Za-z0-9_]+|[α-ω](?:_[A-Za-z0-9]+)?")
@@ -69,15 +77,9 @@ def _symbol(name):
     return None
 
 
-def answer_quantities(solution):
-    """The numeric results of a :class:`~mech.exercises.Solution` as a tuple of `Quantity`.
-
-    Only finite real results count (not yes/no, text, joint sets or intervals). Angles are
-    given in degrees. A quantity's key is the symbol in its name, spelt in ASCII ("time
-    ratio K" -> ``K``, "crank angle θ" -> ``theta``) when no other quantity has the same
-    symbol, else its whole name as one word (``crank_angle_at_gamma_min``), numbered
-    ``_2``, ``_3`` ... if names repeat.
-    """
+def _spelt_keys(solution):
+    """The keys spelt from the result names (the scheme before the vocabulary), as
+    ``Quantity`` records of every finite numeric result."""
     found = []
     for r in solution.results():
         v = r.value
@@ -105,19 +107,34 @@ def answer_quantities(solution):
     return tuple(out)
 
 
-def _lookup(quantities, given, number):
-    """The quantity that the answer name ``given`` means (by key or full name)."""
+def answer_quantities(solution):
+    """The answers that the statement of ``solution``'s exercise asks for, as a tuple of
+    `Quantity`, keyed by the vocabulary of :mod:`mech.exercises._answers` (``gamma_min``,
+    ``K``, ``l_AB`` ...). Angles are in degrees. Each quantity lists as aliases the key
+    spelt from its result name before the vocabulary and the result's full name.
+    """
+    from mech.exercises._answers import answers
+
+    spelt = {q.name: q.key for q in _spelt_keys(solution)}
+    return tuple(Quantity(name, key, value, unit, what,
+                          tuple(a for a in (spelt.get(name), name) if a and _normal(a) != _normal(key)))
+                 for key, name, value, unit, what in answers(solution))
+
+
+def _lookup(quantities, given, number, extra=()):
+    """The quantity that the answer name ``given`` means: a key of the vocabulary, one of
+    its aliases, or else a result outside the vocabulary by its spelt key or full name
+    (``extra``, from `_spelt_keys`)."""
     want = _normal(given)
-    hits = [q for q in quantities if want == _normal(q.key)]
-    hits = hits or [q for q in quantities if want == _normal(q.name)]
-    if len(hits) == 1:
-        return hits[0]
+    for pool in ([q for q in quantities if want == _normal(q.key)],
+                 [q for q in quantities if any(want == _normal(a) for a in q.aliases)],
+                 [q for q in extra if want in (_normal(q.key), _normal(q.name))]):
+        if len(pool) == 1:
+            return pool[0]
+        if len(pool) > 1:
+            raise ValueError(f"Expected one quantity of exercise {number} for the answer name {given!r}, "
+                             f"got several: {', '.join(q.key for q in pool)}; use one of these keys")
     keys = ", ".join(q.key for q in quantities)
-    several = [q.key for q in quantities if _symbol(q.name) and _normal(
-        "".join(_GREEK.get(ch, ch) for ch in _symbol(q.name))) == want]
-    if len(several) > 1:
-        raise ValueError(f"Expected one quantity of exercise {number} for the answer name {given!r}, "
-                         f"got several: {', '.join(several)}; use one of these keys")
     raise ValueError(f"Expected an answer name of exercise {number} among {keys}, got {given!r}")
 
 
@@ -217,59 +234,49 @@ def markdown_to_html(text, *, title="Problem sheet"):
             f"<title>{escape(title)}</title>\n<style>{style}</style>\n</head>\n<body>\n{body}</body>\n</html>\n")
 
 
-@dataclass(frozen=True)
-class Verdict:
-    """One checked answer: the quantity, the number given, and whether it is right."""
-
-    quantity: Quantity
-    given: float
-    right: bool
-
-    def line(self):
-        q = self.quantity
-        unit = f" {q.unit}" if q.unit else ""
-        if self.right:
-            return f"right  {q.key} ({q.name}) = {self.given:g}{unit}"
-        sense = "too high" if self.given > q.value else "too low"
-        return f"WRONG  {q.key} ({q.name}) = {self.given:g}{unit}: {sense}"
-
-
 def check_answers(exercise, seed, answers, *, rtol=0.01, atol=0.01):
-    """Check a student's numbers for the variant ``seed`` of ``exercise``.
+    """Check a student's answers for the variant ``seed`` of ``exercise``.
 
     Parameters
     ----------
     exercise : Exercise
     seed : int
         The student's seed (as on their sheet, or as given to ``variant``).
-    answers : mapping or sequence of (str, float)
-        Answer names (keys as on the sheet, or full result names) and values; angles in
-        degrees.
+    answers : mapping or sequence of (str, float or str)
+        Answer names (keys of the vocabulary, their aliases, or full result names) and
+        values: numbers in the quantity's unit (degrees for angles), or text with a unit
+        (``"0.5 rad"``, ``"1.2 m"``), converted.
     rtol, atol : float
         An answer is right when ``|given - value| <= rtol * |value| + atol`` (defaults: 1 %
-        plus 0.01 in the quantity's unit).
+        plus 0.01 in the quantity's unit); the same tolerance is written into quizzes.
 
     Returns
     -------
     tuple of Verdict
+        One per answer; a value that does not read as a number with a fitting unit is
+        graded "malformed", with the reason.
 
     Raises
     ------
     ValueError
         Naming an answer name that the exercise does not have, or a bad tolerance.
     """
-    rtol = real_number("rtol", rtol)
-    atol = real_number("atol", atol)
-    if rtol < 0 or atol < 0 or rtol + atol == 0:
-        raise ValueError(f"Expected `rtol`, `atol` >= 0, not both zero, got rtol={rtol!r}, atol={atol!r}")
+    from mech.exercises._grade import judge
+
+    rtol, atol = tolerances(rtol, atol)
     pairs = list(answers.items()) if hasattr(answers, "items") else list(answers)
     if not pairs:
         raise ValueError(f"Expected at least one answer NAME=VALUE for exercise {exercise.number}, got none")
     _, solution = solved_variant(exercise, seed)
-    quantities = answer_quantities(solution)
-    out = []
-    for name, value in pairs:
-        q = _lookup(quantities, name, exercise.number)
-        value = real_number(name, value)
-        out.append(Verdict(q, value, bool(abs(value - q.value) <= rtol * abs(q.value) + atol)))
-    return tuple(out)
+    quantities, extra = answer_quantities(solution), _spelt_keys(solution)
+    return tuple(judge(_lookup(quantities, name, exercise.number, extra), value, rtol, atol)
+                 for name, value in pairs)
+
+
+def tolerances(rtol, atol):
+    """Checked ``(rtol, atol)``: real, not negative, not both zero."""
+    rtol = real_number("rtol", rtol)
+    atol = real_number("atol", atol)
+    if rtol < 0 or atol < 0 or rtol + atol == 0:
+        raise ValueError(f"Expected `rtol`, `atol` >= 0, not both zero, got rtol={rtol!r}, atol={atol!r}")
+    return rtol, atol

@@ -353,13 +353,27 @@ def test_exercise_2_6_rejects_crank_that_cannot_turn():
 def test_main_list(capsys):
     assert main(["list"]) == 0
     out = capsys.readouterr().out
-    assert [line.split()[0] for line in out.splitlines()] == ["2-1", "2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-8", "2-9", "2-10", "2-11", "2-12", "2-13", "2-14", "2-15", "2-16", "2-17", "2-18", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-25", "2-26", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
+    tags = [line.split()[0] for line in out.splitlines() if line.startswith("  [")]
+    assert tags == ["[N]", "[A]", "[G]"] and out.startswith("Tags:")
+    assert [line.split()[0] for line in out.splitlines() if line.startswith("2-")] == ["2-1", "2-2", "2-3", "2-4", "2-5", "2-6", "2-7", "2-8", "2-9", "2-10", "2-11", "2-12", "2-13", "2-14", "2-15", "2-16", "2-17", "2-18", "2-19", "2-20", "2-21", "2-22", "2-23", "2-24", "2-25", "2-26", "2-27", "2-28", "2-29", "2-30", "2-31", "2-32"]
 
 
 def test_main_show(capsys):
     assert main(["show", "2-2"]) == 0
     out = capsys.readouterr().out
     assert "BC = 50 mm" in out and "(0, 15] mm" in out and "[45, 55] mm" in out
+
+
+def test_main_show_plain_text(capsys):
+    """`show` and `variant` print plain text for a terminal: no Markdown marks, no LaTeX;
+    ``--markdown`` gives the Markdown."""
+    for argv in (["show", "2-6"], ["variant", "2-6", "--seed", "3"]):
+        assert main(argv) == 0
+        out = capsys.readouterr().out
+        assert "**" not in out and "$" not in out and "\\" not in out and "`" not in out
+        assert "cos γ" in out and "Solution of exercise 2-6\n----" in out
+    assert main(["show", "2-6", "--markdown"]) == 0
+    assert "**Solution of exercise 2-6**" in capsys.readouterr().out
 
 
 def test_main_show_set(capsys):
