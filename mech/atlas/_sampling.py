@@ -27,6 +27,8 @@ KINDS = ("crank-rocker", "rocker-crank", "double-crank", "double-rocker", "tripl
 #: Default ranges of the normalised design space (ratios to the ground d = 1, and (u, v)).
 LENGTHS = (0.2, 5.0)
 COUPLER = (-1.0, 2.0, -1.5, 1.5)
+#: The largest seed: an atlas keeps each row's seed in a 64-bit signed integer column.
+_MAX_SEED = 2**63 - 1
 
 
 class _Samples:
@@ -257,7 +259,7 @@ def sample_fourbars(n, *, seed=0, lengths=LENGTHS, coupler=COUPLER, branch=None,
     True
     """
     n = integer("n", n, minimum=0, maximum=10**7)
-    seed = integer("seed", seed, minimum=0)
+    seed = integer("seed", seed, minimum=0, maximum=_MAX_SEED)
     low, high = _box("lengths", lengths, 2)
     if not low > 0.0:
         raise ValueError(f"Expected `lengths` > 0, got {_show(lengths)}")

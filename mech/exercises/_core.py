@@ -270,8 +270,34 @@ class Exercise:
         return self.statement.format(**{k: _fmt_number(v) for k, v in p.items()})
 
     def solve(self, params=None, **overrides):
-        """Solve the exercise for the textbook's numbers, or for the given ones."""
-        solution = self.solver(self.params(params, **overrides))
+        """Solve the exercise for the textbook's numbers, or for the given ones.
+
+        Raises
+        ------
+        ValueError
+            If the givens make no valid instance of the exercise; the message names the
+            given at fault, or every given with its value when the fault lies in a quantity
+            derived from several of them. A result that would not be finite is refused so.
+        AssemblyError
+            If a pose of an analysed linkage cannot be assembled.
+        """
+        return self._run(self.params(params, **overrides))
+
+    def _run(self, given):
+        """The solver on complete givens: its `Solution` with units, or an error naming givens."""
+        try:
+            solution = self.solver(given)
+        except AssemblyError:
+            raise
+        except (ValueError, ArithmeticError) as exc:
+            # ArithmeticError: ZeroDivisionError, OverflowError, FloatingPointError
+            if isinstance(exc, ValueError) and (getattr(exc, "_names_givens", False)
+                                                or any(f"`{k}`" in str(exc) for k in given)):
+                raise
+            raise _naming_givens(self.number, given, f"({type(exc).__name__}: {exc})") from exc
+        bad = [r.name for r in solution.results() if not _finite(r.value)]
+        if bad:
+            raise _naming_givens(self.number, given, f"(not finite: {', '.join(bad)})")
         return replace(solution, units={p.name: p.unit for p in self.parameters})
 
     def variant(self, rng=None, *, max_tries=1000):
@@ -291,12 +317,35 @@ class Exercise:
         for _ in range(max_tries):
             candidate = self.params(self.sampler(rng))
             try:
-                solution = self.solver(candidate)
+                solution = self._run(candidate)
             except ValueError:
                 continue
-            return candidate, replace(solution, units={p.name: p.unit for p in self.parameters})
+            return candidate, solution
         raise ValueError(f"Expected a valid variant of exercise {self.number} within `max_tries` = "
                          f"{max_tries} draws, got none")
+
+
+def _finite(value):
+    """False for a numeric result (number or array) with a NaN or infinite entry; True otherwise."""
+    if value is None or isinstance(value, (str, bool, np.bool_)):
+        return True
+    try:
+        arr = np.asarray(value)
+    except (TypeError, ValueError):
+        return True
+    if arr.dtype.kind not in "fc":
+        return True
+    return bool(np.all(np.isfinite(arr)))
+
+
+def _naming_givens(number, given, why):
+    """A ValueError that names every given of exercise ``number`` with its value, and why."""
+    listed = [f"`{k}`" for k in given]
+    names = ", ".join(listed[:-1]) + " and " + listed[-1] if len(listed) > 1 else listed[0]
+    shown = ", ".join(f"{k}={v!r}" for k, v in given.items())
+    err = ValueError(f"Expected {names} for which exercise {number} can be solved, got {shown} {why}")
+    err._names_givens = True
+    return err
 
 
 def check_links_close(*, resolved=False, **links):
