@@ -17,9 +17,13 @@ from typing import Any, Callable
 import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
-from mech._validate import integer, real_number
+from mech._validate import MAX_ANGLE, integer, real_number
 
 __all__ = ["Parameter", "Interval", "Result", "Part", "Solution", "Exercise"]
+
+#: The largest angle given in degrees an exercise accepts: 2**52 rad, beyond which float64
+#: has no fractional radians.
+_MAX_DEGREES = math.degrees(MAX_ANGLE)
 
 
 # ----------------------------------------------------------------------------- formatting
@@ -262,6 +266,11 @@ class Exercise:
                 f"got {unknown[0]!r}"
             )
         out.update({k: real_number(k, v) for k, v in given.items()})
+        for p in self.parameters:
+            if p.unit == "°" and not abs(out[p.name]) < _MAX_DEGREES:
+                # an angle with no fractional radians names no direction (`mech._validate.angle`)
+                raise ValueError(f"Expected `{p.name}` to be an angle below {_MAX_DEGREES:.6g} degrees (2**52 rad) "
+                                 f"in size, got {out[p.name]!r}")
         return out
 
     def statement_text(self, params=None, **overrides):
