@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import _show, branch_sign, integer, nonnegative_number
-from mech.atlas._sampling import _MAX_SEED, _Samples
+from mech.atlas._sampling import _MAX_SEED, _check_sizes, _Samples
 from mech.planar.kinematics._slider_crank import SliderCrank
 
 __all__ = ["SliderCrankSamples", "sample_slider_cranks"]
@@ -205,6 +205,8 @@ def sample_slider_cranks(n, *, seed=0, rods=RODS, offsets=OFFSETS, coupler=SLIDE
         raise ValueError(f"Expected `rods` > 0, got {_show(rods)}")
     e0, e1 = _box("offsets", offsets, 2)
     u0, u1, v0, v1 = _box("coupler", coupler, 4)
+    _check_sizes(("rods", rods, high), ("offsets", offsets, max(abs(e0), abs(e1))),
+                 ("coupler", coupler, high * max(abs(u0), abs(u1), abs(v0), abs(v1))))
     if branch is not None:
         branch = branch_sign(branch)
     min_transmission = nonnegative_number("min_transmission", min_transmission)

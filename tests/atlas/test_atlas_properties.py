@@ -142,3 +142,21 @@ def test_seed_beyond_int64_refused_by_name(call, seed):
 
 def test_largest_seed_accepted():
     assert len(build_atlas(20, seed=2**63 - 1)) == 20
+
+
+@settings(max_examples=40, deadline=None)
+@given(low=st.integers(min_value=-300, max_value=300), width=st.integers(min_value=1, max_value=600),
+       u=st.integers(min_value=-300, max_value=300))
+def test_sampling_ranges_sample_cleanly_or_are_refused_by_name(low, width, u):
+    """Any range of ratios and coupler box: samples with no warning, or a ValueError naming it."""
+    lengths = (10.0**low, 10.0 ** min(low + width, 308))
+    box = (-(10.0**u), 10.0**u, -(10.0**u), 10.0**u)
+    for name, call in (("lengths", lambda: sample_fourbars(30, seed=1, lengths=lengths, coupler=box)),
+                       ("rods", lambda: sample_slider_cranks(30, seed=1, rods=lengths, coupler=box))):
+        try:
+            samples = _quiet(call)
+        except ValueError as exc:
+            assert f"`{name}`" in str(exc) or "`coupler`" in str(exc), str(exc)
+        else:
+            usable = samples.take(samples.usable)
+            assert np.all(np.isfinite(usable.gamma_min))
