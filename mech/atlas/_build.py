@@ -112,7 +112,7 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
     n : int
         Number of linkages, in [1, 10**7].
     seed : int, optional
-        Master seed of the build.
+        Master seed of the build, in [0, 2**63 - 1] (atlases keep it in a 64-bit column).
     harmonics, samples : int, optional
         Signature settings (see `curve_signature`); `samples` is also the number of input
         steps along each coupler curve.

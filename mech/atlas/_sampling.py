@@ -239,7 +239,7 @@ def sample_fourbars(n, *, seed=0, lengths=LENGTHS, coupler=COUPLER, branch=None,
     n : int
         Number of samples, in [0, 10**7].
     seed : int, optional
-        Seed of ``numpy.random.default_rng``; the same seed gives the same samples.
+        Seed of ``numpy.random.default_rng``, in [0, 2**63 - 1]; the same seed gives the same samples.
     lengths : (float, float), optional
         Range of a, b, c as ratios to the ground, 0 < low < high <= 1e150.
     coupler : (float, float, float, float), optional

@@ -45,7 +45,9 @@ def _curves(points, closed, name="points", scaled=False):
     lead = z.shape[:-1]
     flat = z.reshape(-1, z.shape[-1])
     given, scale = flat, _row_scales(flat)
-    flat = flat / scale[:, None]
+    # part by part: a complex division by a subnormal scale overflows (Smith's algorithm)
+    flat = np.empty_like(given)
+    flat.real, flat.imag = given.real / scale[:, None], given.imag / scale[:, None]
     span = np.max(np.abs(flat - flat[:, :1]), axis=1)
     if not np.all(span > 0.0):
         row = int(np.flatnonzero(~(span > 0.0))[0])

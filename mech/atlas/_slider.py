@@ -169,11 +169,11 @@ def sample_slider_cranks(n, *, seed=0, rods=RODS, offsets=OFFSETS, coupler=SLIDE
     n : int
         Number of samples, in [0, 10**7].
     seed : int, optional
-        Seed of ``numpy.random.default_rng``; the same seed gives the same samples.
+        Seed of ``numpy.random.default_rng``, in [0, 2**63 - 1]; the same seed gives the same samples.
     rods : (float, float), optional
-        Range of the rod b as a ratio to the crank, 0 < low < high.
+        Range of the rod b as a ratio to the crank, 0 < low < high <= 1e150.
     offsets : (float, float), optional
-        Range of the offset e as a ratio to the crank, low < high.
+        Range of the offset e as a ratio to the crank, low < high, each at most 1e150 in size.
     coupler : (float, float, float, float), optional
         ``(u_low, u_high, v_low, v_high)``: the coupler point in units of the rod b.
     branch : {1, -1}, optional

@@ -65,7 +65,7 @@ def build_sphere_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, arcs=
     n : int
         Number of linkages, in [1, 10**7].
     seed : int, optional
-        Master seed of the build.
+        Master seed of the build, in [0, 2**63 - 1] (atlases keep it in a 64-bit column).
     harmonics, samples : int, optional
         Signature settings (see `sphere_signature`).
     arcs, coupler_arc : (float, float), optional

@@ -218,7 +218,7 @@ def sample_sphere_fourbars(n, *, seed=0, arcs=ARCS, coupler_arc=COUPLER_ARC, bra
     n : int
         Number of samples, in [0, 10**7].
     seed : int, optional
-        Seed of ``numpy.random.default_rng``.
+        Seed of ``numpy.random.default_rng``, in [0, 2**63 - 1].
     arcs, coupler_arc : (float, float), optional
         Ranges of the four arcs and of r, radians, 0 < low < high < pi.
     branch : {1, -1}, optional

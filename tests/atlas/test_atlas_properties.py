@@ -160,3 +160,12 @@ def test_sampling_ranges_sample_cleanly_or_are_refused_by_name(low, width, u):
         else:
             usable = samples.take(samples.usable)
             assert np.all(np.isfinite(usable.gamma_min))
+
+
+@pytest.mark.parametrize("s", [1e-310, 1e-320])
+def test_subnormal_target(atlas, target, s):
+    """A target in subnormal numbers: the complex division by its subnormal scale overflowed."""
+    best = _quiet(query, atlas, target * s, k=1)[0]
+    assert np.isfinite(best.relative_error) and np.isfinite(best.error) and np.all(np.isfinite(best.curve))
+    assert np.all(np.isfinite(_quiet(curve_signature, target * s)))
+    assert best.index == 17 if s > 1e-315 else True
