@@ -322,12 +322,14 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     Raises
     ------
     ValueError
-        For a target that is not finite points, has fewer than 3 or all equal, or bad
-        options (named).
+        For a target that is not finite points, has fewer than 3 or all equal, whose
+        matches would have lengths beyond the float range, or bad options (named).
 
     Notes
     -----
-    The signature stage compares each atlas signature with all four normal forms of the
+    The search runs on the target divided by the power of two of its largest coordinate
+    and multiplies the lengths of the matches back, so a target in any unit of length
+    (1e-300 to 1e300) gives the same rows and relative errors. The signature stage compares each atlas signature with all four normal forms of the
     target (:ref:`deriv-shape-signature`), so it needs no tie-break; the alignment stage
     then removes the normalisation's sensitivity (a nearly circular first harmonic) by
     aligning exactly. Matches are linkages of the atlas scaled, turned and moved; their
