@@ -389,8 +389,13 @@ def linkage_2_22(layout=None):
 def _solve_2_22(p):
     P = positive_length("P", p["P"])
     d_pin = positive_length("d_pin", p["d_pin"])
-    rho = friction_circle(p["mu0"], d_pin / 2.0)
+    rho = 0.5 * float(friction_circle(p["mu0"], d_pin))       # mu0 (d/2), with d/2 of 5e-324 not 0
     L = LAYOUT_2_22
+    if not 2.0 * rho < L["CD"]:
+        # the friction circles at the two pins of the two-force link CD must not overlap (as
+        # `static_forces` requires, naming its own `rho`)
+        raise ValueError(f"Expected `mu0` and `d_pin` whose friction circles (ρ = `mu0`·`d_pin`/2 = {rho!r} mm) fit "
+                         f"between the pins of CD, 2ρ < {L['CD']:g} mm, got mu0={p['mu0']!r}, d_pin={d_pin!r}")
     lk = linkage_2_22()
     sol = lk.solve(L["theta"], order=1, strict=True)          # lever 1 turns counter-clockwise
     w2 = float(sol.omegas["lever2"])
