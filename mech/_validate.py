@@ -239,6 +239,25 @@ def real_number(name, value):
     return x
 
 
+#: The largest angle (radians) `angle` accepts: from 2**52 on, float64 has no fractional
+#: radians (its spacing is 1 rad or more), so such an angle fixes no direction.
+MAX_ANGLE = 2.0**52
+
+
+def angle(name, value):
+    """Return ``value`` as a float after checking that it is a finite angle, |value| < 2**52 rad.
+
+    A larger angle has no digits below one radian: it names no direction, and the result
+    of the computation it enters would depend on rounding. Refusing it here, by name, keeps
+    it from reaching (and tripping) checks on other arguments.
+    """
+    x = real_number(name, value)
+    if not abs(x) < MAX_ANGLE:
+        raise ValueError(f"Expected `{name}` to be an angle below 2**52 ~ 4.5e15 rad in size (beyond it float64 "
+                         f"has no fractional radians), got {x!r}")
+    return x
+
+
 def positive_length(name, value):
     """Return ``value`` as a float after checking that it is finite and > 0."""
     x = _scalar(name, value)

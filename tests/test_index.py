@@ -94,9 +94,9 @@ def test_parse_query(query, keys):
 
 
 def test_parse_query_rejects():
-    with pytest.raises(ValueError, match="Expected a number"):
+    with pytest.raises(ValueError, match="Expected `query` to name a number"):
         parse_query("four-bar")
-    with pytest.raises(ValueError, match="Expected a kind"):
+    with pytest.raises(ValueError, match="Expected `query` to name a kind"):
         parse_query("bolt 2-3")
 
 

@@ -132,9 +132,16 @@ def _plot(target, matches, path):
     print(f"drew {path}")
 
 
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line on stderr (status 2), not a usage block."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python -m mech.atlas", description=__doc__.splitlines()[0])
-    sub = parser.add_subparsers(dest="command", required=True)
+    parser = _Parser(prog="python -m mech.atlas", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     b = sub.add_parser("build", help="sample four-bars and store their signatures")
     b.add_argument("atlas", help="atlas folder (Parquet parts)")
     b.add_argument("-n", type=int, default=10_000, help="linkages to add (default 10000)")
@@ -160,7 +167,8 @@ def main(argv=None):
     args = parser.parse_args(argv)
     try:
         (_build if args.command == "build" else _query)(args)
-    except ValueError as exc:
+    except (ValueError, TypeError, OSError, ImportError) as exc:
+        # a bad value, an unreadable or unwritable path, a missing optional package: one line
         print(f"error: {exc}", file=sys.stderr)
         return 2
     return 0

@@ -18,7 +18,7 @@ from contextlib import closing
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
-from mech.atlas._sampling import COUPLER, LENGTHS, coupler_curves, sample_fourbars
+from mech.atlas._sampling import _MAX_SEED, COUPLER, LENGTHS, coupler_curves, sample_fourbars
 from mech.atlas._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
 from mech.atlas._slider import OFFSETS, RODS, check_mechanism, sample_slider_cranks
 from mech.atlas._store import (
@@ -112,7 +112,7 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
     n : int
         Number of linkages, in [1, 10**7].
     seed : int, optional
-        Master seed of the build.
+        Master seed of the build, in [0, 2**63 - 1] (atlases keep it in a 64-bit column).
     harmonics, samples : int, optional
         Signature settings (see `curve_signature`); `samples` is also the number of input
         steps along each coupler curve.
@@ -171,7 +171,7 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
     ('slider-crank', True)
     """
     n = integer("n", n, minimum=1, maximum=10**7)
-    seed = integer("seed", seed, minimum=0)
+    seed = integer("seed", seed, minimum=0, maximum=_MAX_SEED)
     harmonics = integer("harmonics", harmonics, minimum=1, maximum=1 << 14)
     samples = _samples(samples, harmonics=harmonics)
     block = integer("block", block, minimum=16, maximum=10**6)

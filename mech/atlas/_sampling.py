@@ -27,6 +27,20 @@ KINDS = ("crank-rocker", "rocker-crank", "double-crank", "double-rocker", "tripl
 #: Default ranges of the normalised design space (ratios to the ground d = 1, and (u, v)).
 LENGTHS = (0.2, 5.0)
 COUPLER = (-1.0, 2.0, -1.5, 1.5)
+#: The largest ratio of a link to the ground `sample_fourbars` draws.
+_MAX_RATIO = 1e150
+#: The largest seed: an atlas keeps each row's seed in a 64-bit signed integer column.
+_MAX_SEED = 2**63 - 1
+
+
+def _check_sizes(*ranges):
+    """Raise ValueError naming the first of ``(name, given, size)`` whose drawn lengths (as
+    ratios to the ground) may exceed `_MAX_RATIO`: the type, input range and transmission
+    angle use their squares and sums of squares, which must stay finite."""
+    for name, given, size in ranges:
+        if not size <= _MAX_RATIO:
+            raise ValueError(f"Expected `{name}` that keeps every drawn length within {_MAX_RATIO:g} times the "
+                             f"ground (their squares must stay finite), got {_show(given)}")
 
 
 class _Samples:
@@ -225,11 +239,12 @@ def sample_fourbars(n, *, seed=0, lengths=LENGTHS, coupler=COUPLER, branch=None,
     n : int
         Number of samples, in [0, 10**7].
     seed : int, optional
-        Seed of ``numpy.random.default_rng``; the same seed gives the same samples.
+        Seed of ``numpy.random.default_rng``, in [0, 2**63 - 1]; the same seed gives the same samples.
     lengths : (float, float), optional
-        Range of a, b, c as ratios to the ground, 0 < low < high.
+        Range of a, b, c as ratios to the ground, 0 < low < high <= 1e150.
     coupler : (float, float, float, float), optional
-        ``(u_low, u_high, v_low, v_high)``: the coupler point in units of the coupler b.
+        ``(u_low, u_high, v_low, v_high)``: the coupler point in units of the coupler b
+        (``b * max |u|, |v|`` at most 1e150).
     branch : {1, -1}, optional
         Draw one branch only.
     min_transmission : float, optional
@@ -257,11 +272,12 @@ def sample_fourbars(n, *, seed=0, lengths=LENGTHS, coupler=COUPLER, branch=None,
     True
     """
     n = integer("n", n, minimum=0, maximum=10**7)
-    seed = integer("seed", seed, minimum=0)
+    seed = integer("seed", seed, minimum=0, maximum=_MAX_SEED)
     low, high = _box("lengths", lengths, 2)
     if not low > 0.0:
         raise ValueError(f"Expected `lengths` > 0, got {_show(lengths)}")
     u0, u1, v0, v1 = _box("coupler", coupler, 4)
+    _check_sizes(("lengths", lengths, high), ("coupler", coupler, high * max(abs(u0), abs(u1), abs(v0), abs(v1))))
     if branch is not None:
         branch = branch_sign(branch)
     min_transmission = nonnegative_number("min_transmission", min_transmission)

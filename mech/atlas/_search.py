@@ -9,7 +9,7 @@ exact error; it ranks by the remaining RMS distance and places each linkage, and
 Roberts-Chebyshev cognates, on the target. `refine` improves a match by optimisation.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -322,12 +322,14 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     Raises
     ------
     ValueError
-        For a target that is not finite points, has fewer than 3 or all equal, or bad
-        options (named).
+        For a target that is not finite points, has fewer than 3 or all equal, whose
+        matches would have lengths beyond the float range, or bad options (named).
 
     Notes
     -----
-    The signature stage compares each atlas signature with all four normal forms of the
+    The search runs on the target divided by the power of two of its largest coordinate
+    and multiplies the lengths of the matches back, so a target in any unit of length
+    (1e-300 to 1e300) gives the same rows and relative errors. The signature stage compares each atlas signature with all four normal forms of the
     target (:ref:`deriv-shape-signature`), so it needs no tie-break; the alignment stage
     then removes the normalisation's sensitivity (a nearly circular first harmonic) by
     aligning exactly. Matches are linkages of the atlas scaled, turned and moved; their
@@ -365,11 +367,45 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     starts = integer("starts", starts, minimum=1, maximum=1024)
     if k > shortlist:
         raise ValueError(f"Expected `k` <= shortlist = {shortlist}, got {k}")
-    z, lead = _curves(target, closed, "target")
+    z, lead, scale = _curves(target, closed, "target", scaled=True)
     if lead != (1,) and lead != ():
         raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
+    # the search runs on the target divided by a power of two (its largest coordinate in
+    # [1, 2)); lengths of the matches are multiplied back, exactly, at the end
     if not closed:
-        return _query_arc(atlas, z, k, shortlist, span, starts)
+        return [_rescaled(m, float(scale[0])) for m in _query_arc(atlas, z, k, shortlist, span, starts)]
+    return [_rescaled(m, float(scale[0])) for m in _query_closed(atlas, z, k, shortlist, resampled)]
+
+
+def _rescaled(match, s):
+    """`match` with its lengths (linkages, placement, error, curve) multiplied by `s`."""
+    if s == 1.0:
+        return match
+    placed = (match.linkage, *match.cognates)
+    sizes = [max(abs(p.slider.a), abs(p.slider.b), abs(p.slider.e), *map(abs, p.coupler)) if hasattr(p, "slider")
+             else max(p.fourbar.a, p.fourbar.b, p.fourbar.c, p.fourbar.d, *map(abs, p.fourbar.coupler)) for p in placed]
+    if not np.isfinite(max(sizes) * s) or not np.isfinite(abs(match.linkage.origin) * s):
+        raise ValueError(f"Expected `target` small enough that its matches fit in floating point, got a target "
+                         f"whose match of rank {match.rank} has a link or pivot {max(sizes):.6g} * {s:.6g}, beyond "
+                         f"{np.finfo(float).max:.6g}")
+    return replace(match, linkage=_rescaled_linkage(match.linkage, s),
+                   cognates=tuple(_rescaled_linkage(c, s) for c in match.cognates),
+                   error=match.error * s, curve=match.curve * s)
+
+
+def _rescaled_linkage(placed, s):
+    if isinstance(placed, PlacedSliderCrank):
+        from mech.planar.kinematics._slider_crank import SliderCrank
+
+        sc = placed.slider
+        return replace(placed, slider=SliderCrank(sc.a * s, sc.b * s, sc.e * s, branch=sc.branch),
+                       coupler=(placed.coupler[0] * s, placed.coupler[1] * s), origin=placed.origin * s)
+    f = placed.fourbar
+    return replace(placed, fourbar=_scaled(f.a, f.b, f.c, f.d, *f.coupler, f.branch, s), origin=placed.origin * s)
+
+
+def _query_closed(atlas, z, k, shortlist, resampled):
+    """`query` for a closed target `z` (1, m) of size about 1."""
     n = atlas.samples
     if resampled:
         if z.shape[1] != n:
@@ -587,10 +623,12 @@ def refine(match, target, *, samples=128, iterations=400):
                          f"of a {match.linkage.name}")
     samples = _samples(samples, harmonics=1)
     iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
-    z, lead = _curves(target, True, "target")
+    z, lead, scale = _curves(target, True, "target", scaled=True)
     if lead not in ((), (1,)):
         raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
+    # the search runs on the target divided by a power of two, as in `query`
     t = _resample_rows(z, samples, True)[0]
+    s = float(scale[0])
     f = match.linkage.fourbar
     branch = f.branch
     x0 = np.array([np.log(f.a / f.d), np.log(f.b / f.d), np.log(f.c / f.d), f.coupler[0] / f.b, f.coupler[1] / f.b])
@@ -610,5 +648,5 @@ def refine(match, target, *, samples=128, iterations=400):
     row = describe([a], [b], [c], [1.0], [b * x[3]], [b * x[4]], [branch])
     dense = coupler_curves(row.columns(), _DENSE * samples)
     err, w, centroid, radius, curves, direction = _best_fits(t, dense, 1)
-    return _match(match.rank, match.index, row, t, w[0], centroid[0], err[0], radius, direction[0],
-                  match.distance, curves[0], refined=True)
+    return _rescaled(_match(match.rank, match.index, row, t, w[0], centroid[0], err[0], radius, direction[0],
+                            match.distance, curves[0], refined=True), s)

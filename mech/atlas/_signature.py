@@ -22,20 +22,38 @@ HARMONICS = 8
 _MAX_SAMPLES = 1 << 16
 
 
-def _curves(points, closed, name="points"):
-    """Check a curve or a stack of curves; return them as a 2-D complex array and the lead shape."""
+def _row_scales(flat):
+    """Per row, the power of two 2**k with 2**k <= max |x|, |y| < 2**(k + 1) (1 for a zero row).
+
+    Dividing a curve by it is exact (a power of two) and puts its largest coordinate in
+    [1, 2): no square, sum of squares or cumulative arc length then overflows, and none
+    underflows for want of size, whatever the unit (1e-300 to 1e308)."""
+    biggest = np.maximum(np.max(np.abs(flat.real), axis=1), np.max(np.abs(flat.imag), axis=1))
+    return np.where(biggest > 0.0, np.ldexp(1.0, np.frexp(biggest)[1] - 1), 1.0)
+
+
+def _curves(points, closed, name="points", scaled=False):
+    """Check a curve or a stack of curves; return them as a 2-D complex array and the lead shape.
+
+    With `scaled`, each row comes divided by its `_row_scales` and the scales (rows,) come
+    third: the caller works on curves of size about 1 and multiplies lengths back.
+    """
     z = planar_points(name, points)
     least = 3 if closed else 2
     if z.ndim == 0 or z.shape[-1] < least:
         raise ValueError(f"Expected `{name}` of shape (..., m) with m >= {least}, got shape {z.shape}: {_show(points)}")
     lead = z.shape[:-1]
     flat = z.reshape(-1, z.shape[-1])
+    given, scale = flat, _row_scales(flat)
+    # part by part: a complex division by a subnormal scale overflows (Smith's algorithm)
+    flat = np.empty_like(given)
+    flat.real, flat.imag = given.real / scale[:, None], given.imag / scale[:, None]
     span = np.max(np.abs(flat - flat[:, :1]), axis=1)
     if not np.all(span > 0.0):
         row = int(np.flatnonzero(~(span > 0.0))[0])
         where = f" (curve {row})" if lead else ""
-        raise ValueError(f"Expected `{name}` that are not all equal{where}, got {_show(flat[row])}")
-    return flat, lead
+        raise ValueError(f"Expected `{name}` that are not all equal{where}, got {_show(given[row])}")
+    return (flat, lead, scale) if scaled else (given, lead)
 
 
 def _samples(samples, *, even=False, harmonics=None):
@@ -127,9 +145,9 @@ def resample(points, samples=SAMPLES, *, closed=True):
     array([0.+0.j, 0.+1.j, 0.+2.j, 0.+3.j, 0.+4.j])
     """
     closed = bool_flag("closed", closed)
-    z, lead = _curves(points, closed)
+    z, lead, scale = _curves(points, closed, scaled=True)
     samples = _samples(samples)
-    return _resample_rows(z, samples, closed).reshape(*lead, samples)
+    return (_resample_rows(z, samples, closed) * scale[:, None]).reshape(*lead, samples)
 
 
 def _close_arc(z):
@@ -258,7 +276,7 @@ def curve_signature(points, *, closed=True, harmonics=HARMONICS, samples=SAMPLES
     closed = bool_flag("closed", closed)
     resampled = bool_flag("resampled", resampled)
     harmonics = integer("harmonics", harmonics, minimum=1, maximum=_MAX_SAMPLES // 4)
-    z, lead = _curves(points, closed)
+    z, lead, _ = _curves(points, closed, scaled=True)      # the signature does not depend on the size
     if resampled:
         if not closed:
             z = _close_arc(z)

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import _show, branch_sign, integer, nonnegative_number
-from mech.atlas._sampling import _Samples
+from mech.atlas._sampling import _MAX_SEED, _check_sizes, _Samples
 from mech.planar.kinematics._slider_crank import SliderCrank
 
 __all__ = ["SliderCrankSamples", "sample_slider_cranks"]
@@ -169,11 +169,11 @@ def sample_slider_cranks(n, *, seed=0, rods=RODS, offsets=OFFSETS, coupler=SLIDE
     n : int
         Number of samples, in [0, 10**7].
     seed : int, optional
-        Seed of ``numpy.random.default_rng``; the same seed gives the same samples.
+        Seed of ``numpy.random.default_rng``, in [0, 2**63 - 1]; the same seed gives the same samples.
     rods : (float, float), optional
-        Range of the rod b as a ratio to the crank, 0 < low < high.
+        Range of the rod b as a ratio to the crank, 0 < low < high <= 1e150.
     offsets : (float, float), optional
-        Range of the offset e as a ratio to the crank, low < high.
+        Range of the offset e as a ratio to the crank, low < high, each at most 1e150 in size.
     coupler : (float, float, float, float), optional
         ``(u_low, u_high, v_low, v_high)``: the coupler point in units of the rod b.
     branch : {1, -1}, optional
@@ -199,12 +199,14 @@ def sample_slider_cranks(n, *, seed=0, rods=RODS, offsets=OFFSETS, coupler=SLIDE
     from mech.atlas._sampling import _box
 
     n = integer("n", n, minimum=0, maximum=10**7)
-    seed = integer("seed", seed, minimum=0)
+    seed = integer("seed", seed, minimum=0, maximum=_MAX_SEED)
     low, high = _box("rods", rods, 2)
     if not low > 0.0:
         raise ValueError(f"Expected `rods` > 0, got {_show(rods)}")
     e0, e1 = _box("offsets", offsets, 2)
     u0, u1, v0, v1 = _box("coupler", coupler, 4)
+    _check_sizes(("rods", rods, high), ("offsets", offsets, max(abs(e0), abs(e1))),
+                 ("coupler", coupler, high * max(abs(u0), abs(u1), abs(v0), abs(v1))))
     if branch is not None:
         branch = branch_sign(branch)
     min_transmission = nonnegative_number("min_transmission", min_transmission)

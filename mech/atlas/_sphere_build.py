@@ -14,6 +14,7 @@ import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
 from mech.atlas._build import _blocks, _take_blocks, block_seed
+from mech.atlas._sampling import _MAX_SEED
 from mech.atlas._signature import HARMONICS, SAMPLES
 from mech.atlas._sphere_sampling import ARCS, COUPLER_ARC, SphereSamples, sample_sphere_fourbars, sphere_curves
 from mech.atlas._sphere_signature import _resample_closed, _signature_rows
@@ -64,7 +65,7 @@ def build_sphere_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, arcs=
     n : int
         Number of linkages, in [1, 10**7].
     seed : int, optional
-        Master seed of the build.
+        Master seed of the build, in [0, 2**63 - 1] (atlases keep it in a 64-bit column).
     harmonics, samples : int, optional
         Signature settings (see `sphere_signature`).
     arcs, coupler_arc : (float, float), optional
@@ -97,7 +98,7 @@ def build_sphere_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, arcs=
     ['crank-rocker', 'double-crank', 'double-rocker', 'rocker-crank', 'triple-rocker']
     """
     n = integer("n", n, minimum=1, maximum=10**7)
-    seed = integer("seed", seed, minimum=0)
+    seed = integer("seed", seed, minimum=0, maximum=_MAX_SEED)
     harmonics = integer("harmonics", harmonics, minimum=1, maximum=1 << 12)
     samples = integer("samples", samples, minimum=4, maximum=1 << 16)
     if samples <= 2 * harmonics:

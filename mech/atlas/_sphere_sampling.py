@@ -18,7 +18,7 @@ import numpy as np
 from mech._generated.spherical_fourbar import spherical_fourbar_limit_theta, spherical_fourbar_position
 from mech._generated.spherical_types import spherical_type_slacks
 from mech._validate import _show, branch_sign, integer, nonnegative_number, real_tuple
-from mech.atlas._sampling import KINDS, _Samples
+from mech.atlas._sampling import _MAX_SEED, KINDS, _Samples
 
 __all__ = ["SphereSamples", "sample_sphere_fourbars"]
 
@@ -218,7 +218,7 @@ def sample_sphere_fourbars(n, *, seed=0, arcs=ARCS, coupler_arc=COUPLER_ARC, bra
     n : int
         Number of samples, in [0, 10**7].
     seed : int, optional
-        Seed of ``numpy.random.default_rng``.
+        Seed of ``numpy.random.default_rng``, in [0, 2**63 - 1].
     arcs, coupler_arc : (float, float), optional
         Ranges of the four arcs and of r, radians, 0 < low < high < pi.
     branch : {1, -1}, optional
@@ -247,7 +247,7 @@ def sample_sphere_fourbars(n, *, seed=0, arcs=ARCS, coupler_arc=COUPLER_ARC, bra
     True
     """
     n = integer("n", n, minimum=0, maximum=10**7)
-    seed = integer("seed", seed, minimum=0)
+    seed = integer("seed", seed, minimum=0, maximum=_MAX_SEED)
     lo, hi = _pair("arcs", arcs)
     r0, r1 = _pair("coupler_arc", coupler_arc)
     if branch is not None:

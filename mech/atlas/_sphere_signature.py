@@ -21,10 +21,13 @@ def _sphere_curves(points, name="points"):
     x = real_array(name, points)
     if x.ndim < 2 or x.shape[-1] != 3 or x.shape[-2] < 3:
         raise ValueError(f"Expected `{name}` of shape (..., m, 3) with m >= 3, got shape {x.shape}")
-    norm = np.linalg.norm(x, axis=-1)
-    if not np.all(norm > 0.0):
+    # each point is a direction: divided first by the power of two of its largest
+    # component, so its norm neither overflows (1e300) nor underflows (1e-300)
+    biggest = np.max(np.abs(x), axis=-1)
+    if not np.all(biggest > 0.0):
         raise ValueError(f"Expected `{name}` without zero vectors, got {_show(points)}")
-    return x / norm[..., None]
+    x = x / np.ldexp(1.0, np.frexp(biggest)[1] - 1)[..., None]
+    return x / np.linalg.norm(x, axis=-1)[..., None]
 
 
 def _interpolate(z, frac):

@@ -17,9 +17,13 @@ from typing import Any, Callable
 import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
-from mech._validate import integer, real_number
+from mech._validate import MAX_ANGLE, integer, real_number
 
 __all__ = ["Parameter", "Interval", "Result", "Part", "Solution", "Exercise"]
+
+#: The largest angle given in degrees an exercise accepts: 2**52 rad, beyond which float64
+#: has no fractional radians.
+_MAX_DEGREES = math.degrees(MAX_ANGLE)
 
 
 # ----------------------------------------------------------------------------- formatting
@@ -263,6 +267,11 @@ class Exercise:
                 f"got {unknown[0]!r}"
             )
         out.update({k: real_number(k, v) for k, v in given.items()})
+        for p in self.parameters:
+            if p.unit == "°" and not abs(out[p.name]) < _MAX_DEGREES:
+                # an angle with no fractional radians names no direction (`mech._validate.angle`)
+                raise ValueError(f"Expected `{p.name}` to be an angle below {_MAX_DEGREES:.6g} degrees (2**52 rad) "
+                                 f"in size, got {out[p.name]!r}")
         return out
 
     def statement_text(self, params=None, **overrides):
@@ -271,8 +280,34 @@ class Exercise:
         return self.statement.format(**{k: _fmt_number(v) for k, v in p.items()})
 
     def solve(self, params=None, **overrides):
-        """Solve the exercise for the textbook's numbers, or for the given ones."""
-        solution = self.solver(self.params(params, **overrides))
+        """Solve the exercise for the textbook's numbers, or for the given ones.
+
+        Raises
+        ------
+        ValueError
+            If the givens make no valid instance of the exercise; the message names the
+            given at fault, or every given with its value when the fault lies in a quantity
+            derived from several of them. A result that would not be finite is refused so.
+        AssemblyError
+            If a pose of an analysed linkage cannot be assembled.
+        """
+        return self._run(self.params(params, **overrides))
+
+    def _run(self, given):
+        """The solver on complete givens: its `Solution` with units, or an error naming givens."""
+        try:
+            solution = self.solver(given)
+        except AssemblyError:
+            raise
+        except (ValueError, ArithmeticError) as exc:
+            # ArithmeticError: ZeroDivisionError, OverflowError, FloatingPointError
+            if isinstance(exc, ValueError) and (getattr(exc, "_names_givens", False)
+                                                or any(f"`{k}`" in str(exc) for k in given)):
+                raise
+            raise _naming_givens(self.number, given, f"({type(exc).__name__}: {exc})") from exc
+        bad = [r.name for r in solution.results() if not _finite(r.value)]
+        if bad:
+            raise _naming_givens(self.number, given, f"(not finite: {', '.join(bad)})")
         return replace(solution, units={p.name: p.unit for p in self.parameters})
 
     def variant(self, rng=None, *, max_tries=1000):
@@ -292,12 +327,35 @@ class Exercise:
         for _ in range(max_tries):
             candidate = self.params(self.sampler(rng))
             try:
-                solution = self.solver(candidate)
+                solution = self._run(candidate)
             except ValueError:
                 continue
-            return candidate, replace(solution, units={p.name: p.unit for p in self.parameters})
+            return candidate, solution
         raise ValueError(f"Expected a valid variant of exercise {self.number} within `max_tries` = "
                          f"{max_tries} draws, got none")
+
+
+def _finite(value):
+    """False for a numeric result (number or array) with a NaN or infinite entry; True otherwise."""
+    if value is None or isinstance(value, (str, bool, np.bool_)):
+        return True
+    try:
+        arr = np.asarray(value)
+    except (TypeError, ValueError):
+        return True
+    if arr.dtype.kind not in "fc":
+        return True
+    return bool(np.all(np.isfinite(arr)))
+
+
+def _naming_givens(number, given, why):
+    """A ValueError that names every given of exercise ``number`` with its value, and why."""
+    listed = [f"`{k}`" for k in given]
+    names = ", ".join(listed[:-1]) + " and " + listed[-1] if len(listed) > 1 else listed[0]
+    shown = ", ".join(f"{k}={v!r}" for k, v in given.items())
+    err = ValueError(f"Expected {names} for which exercise {number} can be solved, got {shown} {why}")
+    err._names_givens = True
+    return err
 
 
 def check_links_close(*, resolved=False, **links):

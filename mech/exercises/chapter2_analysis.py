@@ -60,6 +60,8 @@ def _reversals(position, samples=2048, sections=64, rounds=10):
     idx = np.flatnonzero(up != np.roll(up, -1))
     lo, hi = theta[idx], theta[idx] + _TURN / samples
     up_lo = up[idx]
+    if idx.size == 0:                        # the output never reverses (or its rate is not finite)
+        return np.empty(0), np.empty(0)
     frac = np.arange(1, sections) / sections
     rows = np.arange(idx.size)
     for _ in range(rounds):

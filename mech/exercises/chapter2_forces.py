@@ -25,8 +25,10 @@ __all__ = ["EXERCISE_2_19", "EXERCISE_2_20", "EXERCISE_2_21", "EXERCISE_2_23", "
 
 def _angle(name, value, low=0.0, high=90.0):
     x = float(value)
-    if not math.isfinite(x) or not low < x < high:
-        raise ValueError(f"Expected `{name}` in ({low:g}, {high:g}) degrees, got {x!r}")
+    if not math.isfinite(x) or not low < x < high or not math.radians(low) < math.radians(x):
+        # the last: an angle of a few 1e-324 degrees is 0.0 in radians
+        raise ValueError(f"Expected `{name}` in ({low:g}, {high:g}) degrees (and above {low:g} once in radians), "
+                         f"got {x!r}")
     return math.radians(x)
 
 
@@ -132,6 +134,10 @@ _STATEMENT_2_21 = (
 def _solve_2_21(p):
     mu, e = _nonneg("mu", p["mu"]), positive_length("e", p["e"])
     _, L_min = push_rod(mu, e, 1.0)
+    if not (0.0 < L_min and math.isfinite(2.0 * L_min)):
+        # mu = 0: no friction, no shortest guide; 2 mu e below the smallest float or too large
+        raise ValueError(f"Expected `mu` > 0 and `e` whose shortest guide 2 mu e (and twice it) is a positive "
+                         f"finite float, got mu={mu!r}, e={e!r} (2 mu e = {L_min!r})")
     L_example = 2.0 * L_min
     eta_example, _ = push_rod(mu, e, L_example)
     assumptions = (
@@ -168,6 +174,8 @@ def _solve_2_23(p):
     alpha, mu = _angle("alpha", p["alpha"], high=90.0 + 1e-9), _nonneg("mu", p["mu"])
     if d1 >= d2 or d1p >= d2:
         raise ValueError(f"Expected `d1` and `d1p` < `d2`, got d1 = {d1!r}, d1p = {d1p!r}, d2 = {d2!r}")
+    if not mu > 0.0:
+        raise ValueError(f"Expected `mu` > 0 (without friction a brake has no torque to compare), got {mu!r}")
     flat = thrust_friction_moment(1.0, mu, d2 / 2, d1 / 2, condition="run-in")
     cone = thrust_friction_moment(1.0, mu, d2 / 2, d1p / 2, condition="run-in", cone_half_angle=alpha)
     flat_new = thrust_friction_moment(1.0, mu, d2 / 2, d1 / 2)
@@ -215,6 +223,11 @@ def _solve_2_24(p):
     mu = _nonneg("mu", p["mu"])
     if d0 >= D:
         raise ValueError(f"Expected `d0` < `D`, got d0 = {d0!r} >= D = {D!r}")
+    lead = math.atan2(pitch, math.pi * d2)
+    if not 0.0 < lead < math.pi / 2:
+        # tan(lead) = p / (pi d2): a pitch too small or too large beside d2 rounds it to 0 or 90 degrees
+        raise ValueError(f"Expected `p` and `d2` whose lead angle atan(p / (pi d2)) lies strictly between 0 and 90 "
+                         f"degrees in floating point, got p={pitch!r}, d2={d2!r}")
     results = []
     for cond, label in (("run-in", "run-in collar"), ("new", "new collar")):
         jack = ScrewJack(d2, pitch, mu, collar=(D, d0), collar_condition=cond)

@@ -142,6 +142,11 @@ _STATEMENT_2_9 = (
 )
 
 
+#: The smallest wheel of exercise 2-9 against the largest (2**-20 ~ 1e-6): the ratio found
+#: through P13 then keeps about ten digits.
+_SMALLEST_WHEEL = 2.0**-20
+
+
 @names_givens("2-9")
 def wheels_2_9(params=None):
     """Centres and contact points of exercise 2-9's assumed wheels, as a dict of complex points.
@@ -158,6 +163,13 @@ def wheels_2_9(params=None):
     beta = real_number("beta", p["beta"])
     if not 0.0 < beta < 180.0 or math.sin(beta * _DEG) * (r2 + r3) <= 0.0:
         raise ValueError(f"Expected 0 < `beta` < 180 degrees (A, B and C not in one line), got {beta!r}")
+    biggest = max(r1, r2, r3)
+    for name, r in (("r1", r1), ("r3", r3)):
+        # P13 lies about r1 (or r3) from A (or C) on AC; built from contacts whose rounding is
+        # eps * biggest, its distances keep no digits when the wheel is much smaller
+        if r < _SMALLEST_WHEEL * biggest:
+            raise ValueError(f"Expected `{name}` at least 2**-20 times the largest radius ({biggest!r}) so that "
+                             f"the instant centre P13 is resolved, got {r!r}")
     u = complex(np.exp(1j * beta * _DEG))
     if abs((r1 + r2) - (r2 + r3) * u) <= r1 + r3:
         raise ValueError(f"Expected `r1`, `r2`, `r3` and `beta` that keep wheels 1 and 3 apart (|AC| > r1 + r3), "

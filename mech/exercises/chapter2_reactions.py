@@ -273,6 +273,13 @@ def linkage_2_26(params=None, *, theta=45.0):
 def _solve_2_26(p):
     r, length, d = (positive_length(n, p[n]) for n in ("r", "l", "d"))
     Mr = positive_length("Mr", p["Mr"]) * 1000.0
+    if not math.isfinite(Mr):
+        raise ValueError(f"Expected `Mr` below {np.finfo(float).max / 1000:.6g} N·m (in N·mm it must stay finite), "
+                         f"got {p['Mr']!r}")
+    # the statics run on the moment divided by a power of two (in [1, 2) N·mm) and the forces
+    # are multiplied back: friction lines and efficiencies do not depend on the load's size,
+    # but a subnormal load would lose their digits
+    unit = math.ldexp(1.0, math.frexp(Mr)[1] - 1)
     mu0, mu = real_number("mu0", p["mu0"]), real_number("mu", p["mu"])
     if r >= length:
         raise ValueError(f"Expected `r` < `l` = {length!r} so that the crank turns fully, got {r!r}")
@@ -290,23 +297,24 @@ def _solve_2_26(p):
             # computed from the closed form no longer closes in floating point
             raise AssemblyError(f"Expected `l` short enough beside `r` that the pose at θ = {deg:g}° closes "
                                 f"in floating point (`l`/`r` below about 1e13), got l={length!r}, r={r!r}")
-        sf = static_forces(sol, couples={"crank": -Mr}, rho=rho, mu=mu)
-        sf0 = static_forces(sol, couples={"crank": -Mr})
+        sf = static_forces(sol, couples={"crank": -Mr / unit}, rho=rho, mu=mu)
+        sf0 = static_forces(sol, couples={"crank": -Mr / unit})
         if bool(np.any(sf.self_locking)):
             raise ValueError(f"Expected `mu0`, `d` and `mu` that let the slider drive the crank at θ = {deg:g}°, "
                              f"got self-locking at mu0={mu0!r}, d={d!r}, mu={mu!r}")
-        F = float(sf.balancing)
+        F = float(sf.balancing) * unit
         P = {k: complex(v) for k, v in sol.points.items()}
         res = [Result(f"θ = {deg:g}°: driving force F", F, "N", "`static_forces(..., rho=ρ, mu=μ).balancing`, "
                       "+ to the right"),
-               Result(f"θ = {deg:g}°: F without friction", float(sf0.balancing), "N", "`static_forces` with ρ = μ = 0"),
+               Result(f"θ = {deg:g}°: F without friction", float(sf0.balancing) * unit, "N",
+                      "`static_forces` with ρ = μ = 0"),
                Result(f"θ = {deg:g}°: efficiency", float(sf.efficiency), "", "frictionless over actual driving power")]
         notes = []
         for label, key, pin in (("R_41", ("ground", "crank"), "A"), ("R_21", ("rod", "crank"), "B"),
                                 ("R_23", ("rod", "slider"), "C")):
             R = complex(sf.reactions[key])
             arm = float(np.imag(np.conj(complex(sf.lines[key]) - P[pin]) * R)) / abs(R)
-            res.append(Result(f"θ = {deg:g}°: {label} size", abs(R), "N", "`static_forces(...).reactions`"))
+            res.append(Result(f"θ = {deg:g}°: {label} size", abs(R) * unit, "N", "`static_forces(...).reactions`"))
             res.append(Result(f"θ = {deg:g}°: {label} direction", math.atan2(R.imag, R.real), "rad",
                               "from +x, counter-clockwise"))
             res.append(Result(f"θ = {deg:g}°: {label} moment arm about {pin}", arm, "mm",
@@ -381,8 +389,13 @@ def linkage_2_22(layout=None):
 def _solve_2_22(p):
     P = positive_length("P", p["P"])
     d_pin = positive_length("d_pin", p["d_pin"])
-    rho = friction_circle(p["mu0"], d_pin / 2.0)
+    rho = 0.5 * float(friction_circle(p["mu0"], d_pin))       # mu0 (d/2), with d/2 of 5e-324 not 0
     L = LAYOUT_2_22
+    if not 2.0 * rho < L["CD"]:
+        # the friction circles at the two pins of the two-force link CD must not overlap (as
+        # `static_forces` requires, naming its own `rho`)
+        raise ValueError(f"Expected `mu0` and `d_pin` whose friction circles (ρ = `mu0`·`d_pin`/2 = {rho!r} mm) fit "
+                         f"between the pins of CD, 2ρ < {L['CD']:g} mm, got mu0={p['mu0']!r}, d_pin={d_pin!r}")
     lk = linkage_2_22()
     sol = lk.solve(L["theta"], order=1, strict=True)          # lever 1 turns counter-clockwise
     w2 = float(sol.omegas["lever2"])

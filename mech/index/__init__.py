@@ -26,6 +26,7 @@ From the command line: ``python -m mech.index 2-19`` (every kind numbered 2-19),
 ``chapter 5``, ``§1.3.1``; ``python -m mech.index --missing`` lists what is not covered.
 """
 
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -241,7 +242,10 @@ def parse_query(query, keys=()):
     ------
     ValueError
         If the query names no number.
+    TypeError
+        If the query is not a string.
     """
+    _check_query(query)
     text = query.strip()
     m = re.fullmatch(r"\(\s*(2-\d{1,3})\s*\)", text)
     if m:
@@ -253,7 +257,7 @@ def parse_query(query, keys=()):
         if word:
             kind = _QUERY_WORDS.get(word.lower().rstrip(".")) or kind_of_word(word)
             if kind is None or kind in ("chapter", "section"):
-                raise ValueError(f"Expected a kind among eq, ex (example), table, fig, "
+                raise ValueError(f"Expected `query` to name a kind among eq, ex (example), table, fig, "
                                  f"exercise, got {word!r} in {query!r}")
             return [(kind, number)]
         kinds = [k for k in KINDS if (k, number) in keys] if keys else \
@@ -266,13 +270,34 @@ def parse_query(query, keys=()):
         if kind == "chapter" and "." in number:
             kind = "section"
         if kind not in ("chapter", "section"):
-            raise ValueError(f"Expected `chapter N` or `§N.N` for the monograph, got {query!r}")
+            raise ValueError(f"Expected `query` of the form chapter N or §N.N for the monograph, got {query!r}")
         return [(kind, number)]
-    raise ValueError(f"Expected a number like 2-19, eq 2-19, fig 2-86, ex 2-15, exercise 2-27, "
+    raise ValueError(f"Expected `query` to name a number like 2-19, eq 2-19, fig 2-86, ex 2-15, exercise 2-27, "
                      f"table 2-3, chapter 5 or §1.3.1, got {query!r}")
 
 
+def _check_query(query):
+    """Raise TypeError naming `query` unless it is a string (checked before any work)."""
+    if not isinstance(query, str):
+        raise TypeError(f"Expected `query` to be a string such as '2-19' or 'eq 2-19', got {query!r} "
+                        f"of type {type(query).__name__}")
+
+
 def lookup(query, *, root=None, index=None):
-    """The entries that answer ``query`` (a list, maybe empty)."""
+    """The entries that answer ``query`` (a list, maybe empty).
+
+    Raises
+    ------
+    TypeError
+        If ``query`` is not a string or ``index`` is not an :class:`Index`.
+    ValueError
+        If ``query`` names no number (see :func:`parse_query`).
+    """
+    _check_query(query)
+    parse_query(query)                       # a bad query is refused before the harvest
+    if index is not None and not isinstance(index, Index):
+        raise TypeError(f"Expected `index` to be an Index (from build_index) or None, got {index!r}")
+    if root is not None and (isinstance(root, bytes) or not isinstance(root, (str, os.PathLike))):
+        raise TypeError(f"Expected `root` to be a folder name or None, got {root!r}")
     index = index if index is not None else build_index(root)
     return index.lookup(query)

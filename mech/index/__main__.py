@@ -18,8 +18,15 @@ from mech.index._refs import KINDS
 from mech.index._render import entry_text
 
 
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line on stderr (status 2), not a usage block."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
 def main(argv=None):
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="python -m mech.index",
         description="Find a textbook number: its derivation, functions, book page and tests.")
     parser.add_argument("query", nargs="*", help="e.g. 2-19, eq 2-19, fig 2-86, ex 2-15, "
@@ -33,7 +40,7 @@ def main(argv=None):
         parser.print_help()
         return 2
     query = " ".join(args.query)
-    if query:
+    if args.query:                            # an empty or blank query is refused, not ignored
         try:
             parse_query(query)
         except ValueError as exc:
@@ -62,7 +69,7 @@ def main(argv=None):
                 print(f"{e.title}{name}: {e.not_covered or 'NO REASON GIVEN'}")
         for e in index.stale():
             print(f"{e.title}: covered now; delete its entry in mech/index/_not_covered.py")
-    if query:
+    if args.query:
         entries = index.lookup(query)
         if not entries:
             print(f"No entry for {query!r}: nothing declares it and the textbook data does not list it.",

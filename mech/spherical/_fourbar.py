@@ -3,6 +3,7 @@
 import numpy as np
 
 from mech import _backend
+from mech._scaling import DEAD_POINT_RTOL
 from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
 from mech.spherical._fourbar_branch import change_gaps, solve_change_point
@@ -306,6 +307,7 @@ class SphericalFourBar:
             run("spherical_fourbar_position", (a, b, c, d, r, gamma, theta, -self._branch),
                 (out["psi"],) + points)
             if order < 1:
+                self._dead_points(theta, out)
                 return
             omega = inputs[1]
             lam = np.empty(n) if numba else work[0]       # row 0: the coupler's relative spin
@@ -326,6 +328,42 @@ class SphericalFourBar:
             dwin[:, 0] = 0.0
             dwin[:, 1] = 0.0
             dwin[:, 2] = alpha
+
+    def _dead_points(self, theta, out):
+        """Positions within `DEAD_POINT_RTOL` (a + b + c + d) of a dead point are the dead point.
+
+        A dead point is where the arc BD is b + c or |b - c|: C lies on the great circle
+        through B and D. Whether a float input there assembles is decided by a rounding, which
+        the same linkage at another input a few ulps away decides the other way; within the
+        band the pose that did not assemble is the dead point's (C on the arc BD, at arc b
+        from B), as the planar solvers give it. Positions only: the rates are unbounded there.
+        """
+        miss = np.flatnonzero(np.isnan(out["psi"]))
+        if miss.size == 0:
+            return
+        a, b, c, d, (r, gamma) = self._a, self._b, self._c, self._d, self._coupler
+        th = theta[miss]
+        B = np.stack([np.sin(a) * np.cos(th), np.sin(a) * np.sin(th), np.full(th.shape, np.cos(a))], axis=-1)
+        D = np.array([np.sin(d), 0.0, np.cos(d)])
+        sin_k = np.linalg.norm(np.cross(B, D), axis=-1)
+        k = np.arctan2(sin_k, B @ D)                                 # the arc BD, well conditioned
+        tol = DEAD_POINT_RTOL * (a + b + c + d)
+        far = np.abs(k - (b + c)) <= tol
+        close = np.abs(k - abs(b - c)) <= tol
+        snap = (far | close) & (sin_k > 0.0)
+        if not snap.any():
+            return
+        B, k, sin_k = B[snap], k[snap], sin_k[snap]
+        # C on the great circle BD at arc b from B: towards D, or away from it when c > b
+        sb = np.where(far[snap] | (b >= c), b, -b)
+        C = (np.sin(k - sb)[:, None] * B + np.sin(sb)[:, None] * D) / sin_k[:, None]
+        C /= np.linalg.norm(C, axis=-1, keepdims=True)
+        t = C - np.sum(B * C, axis=-1, keepdims=True) * B
+        t /= np.linalg.norm(t, axis=-1, keepdims=True)
+        P = np.cos(r) * B + np.sin(r) * (np.cos(gamma) * t + np.sin(gamma) * np.cross(B, t))
+        rows = miss[snap]
+        out["B"][rows], out["C"][rows], out["P"][rows] = B, C, P
+        out["psi"][rows] = np.arctan2(C[:, 1], np.cos(d) * C[:, 0] - np.sin(d) * C[:, 2])
 
     def _solve_change_block(self, inputs, order, out):
         """`_solve_block` for a change-point linkage: the smooth closed form, whose exact

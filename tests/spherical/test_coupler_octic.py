@@ -266,18 +266,20 @@ def test_coupler_octic_rejects_bad_input():
         coupler_octic([0, 0, 0, 0.5, 1.0, 0.9, 1.2, 0.6, 0.8], [0, 1])
     with pytest.raises(ValueError, match="`points` small enough"):
         coupler_octic([0, 0, 0, 0.5, 1.0, 0.9, 1.2, 0.6, 0.8], [0, 1e300, 1])
-    value, grad = coupler_octic([0, 0, 0, 0.5, 1.0, 0.9, 1.2, 0.6, 0.8], [0.0, 0.0, 0.0])
-    assert value == 0.0 and np.all(grad == 0.0)
+    with pytest.raises(ValueError, match="Expected non-zero `points`"):
+        coupler_octic([0, 0, 0, 0.5, 1.0, 0.9, 1.2, 0.6, 0.8], [0.0, 0.0, 0.0])
 
 
-def test_coupler_quartic_is_not_homogeneous_but_octic_factors_on_sphere():
-    """On the unit sphere F(x) = Q(x) Q(-x) (eq. (4)); off it Q is evaluated as given."""
+def test_coupler_quartic_takes_directions_and_octic_factors_on_sphere():
+    """On the unit sphere F(x) = Q(x) Q(-x) (eq. (4)); off it Q is evaluated at x / |x|."""
     rng = np.random.default_rng(12)
     params = _random_params(rng)
     P = to_xyz(rng.uniform(-3, 3, 20), rng.uniform(-1.5, 1.5, 20))
     F = coupler_octic(params, P)[0]
     assert np.allclose(F, coupler_quartic(params, P)[0] * coupler_quartic(params, -P)[0], rtol=1e-10, atol=0)
-    assert not np.allclose(coupler_quartic(params, 2 * P)[0], 2**4 * coupler_quartic(params, P)[0])
+    # 2 and 2**-1000 are powers of two: x / |x| is then the same float vector
+    for s in (2.0, 2.0**-1000, 2.0**1000):
+        assert np.array_equal(coupler_quartic(params, s * P)[0], coupler_quartic(params, P)[0])
 
 
 # ----------------------------------------------------------------------------- the gradient
@@ -313,9 +315,9 @@ def _mp_central_gradient(function, params, x, h=mpmath.mpf(10) ** -15):
 @pytest.mark.parametrize("seed", range(4))
 def test_coupler_octic_gradient_central_differences(seed, form):
     """The generated gradient of F (eq. (4), or eqs. (7)-(9) on A's half of the sphere) and
-    of Q against central differences of F at 50 digits computed by another route (numeric
-    elimination, rotations), for random linkages in arbitrary placement, at points off the
-    curve (any length) and on it: relative 1e-9."""
+    of Q (at the direction of the point) against central differences of F at 50 digits
+    computed by another route (numeric elimination, rotations), for random linkages in
+    arbitrary placement, at points off the curve (any length) and on it: relative 1e-9."""
     rng = np.random.default_rng(1420 + seed)
     params = _random_params(rng)
     points = list(rng.normal(size=(4, 3)) * rng.uniform(0.5, 2.0, (4, 1)))
@@ -328,8 +330,9 @@ def test_coupler_octic_gradient_central_differences(seed, form):
             _, grad = coupler_octic(params, x, form=form)
             reference = _mp_central_gradient(_mp_octic_placed, params, x)
             worst_F = max(worst_F, float(np.linalg.norm(grad - reference) / np.linalg.norm(reference)))
+            # Q and its gradient are taken at the direction x / |x| (Q means the curve on the sphere)
             _, grad = coupler_quartic(params, x)
-            reference = _mp_central_gradient(_mp_quartic_placed, params, x)
+            reference = _mp_central_gradient(_mp_quartic_placed, params, x / np.linalg.norm(x))
             worst_Q = max(worst_Q, float(np.linalg.norm(grad - reference) / np.linalg.norm(reference)))
     assert len(points) >= 6
     assert worst_F < 1e-9 and worst_Q < 1e-9, (worst_F, worst_Q)

@@ -560,7 +560,9 @@ def _assemble(sol, pairs, rough, coeff, force, couple, effort, effort0, ok):
             # -c i R / |R|^2 as (c / |R|) times the unit vector R / |R|: no |R|^2 to overflow
             absR = np.abs(R)
             safe = np.where(absR > 0, absR, 1.0)
-            off = np.where(absR > 0, -(c / safe) * 1j * (R / safe), 0.0)
+            # the unit vector part by part: a complex division by a subnormal |R| overflows
+            unit = np.real(R) / safe + 1j * (np.imag(R) / safe)
+            off = np.where(absR > 0, -(c / safe) * 1j * unit, 0.0)
             line = p.at + off
         else:
             N = np.real(R / (1j * p.e))

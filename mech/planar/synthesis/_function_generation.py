@@ -14,7 +14,7 @@ meets its pairs, on which branch, and whether one branch covers the range.
 import numpy as np
 
 from mech._generated.function_generation import fg_output_terms, fg_row
-from mech._validate import bool_flag, function_pairs, naming, positive_length, real_number
+from mech._validate import angle, bool_flag, function_pairs, naming, positive_length, real_number
 from mech.planar.synthesis._function_generator import (
     FunctionGenerator,
     FunctionMap,
@@ -227,8 +227,8 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=1.0, target=None, x_range
     """
     x, y = function_pairs(x, y, 3)
     n = x.size
-    theta0 = None if theta0 is None else real_number("theta0", theta0)
-    psi0 = None if psi0 is None else real_number("psi0", psi0)
+    theta0 = None if theta0 is None else angle("theta0", theta0)
+    psi0 = None if psi0 is None else angle("psi0", psi0)
     given = (theta0 is not None) + (psi0 is not None)
     if n > 5:
         raise ValueError(f"Expected at most 5 precision pairs (use least_squares for more) in `x` and `y`, got {n}")
@@ -336,7 +336,7 @@ def least_squares(x, y, *, theta0, psi0, d=1.0, kind="structural", fit_start=Fal
     (True, 0.01)
     """
     x, y = function_pairs(x, y, 3)
-    theta0, psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
+    theta0, psi0 = angle("theta0", theta0), angle("psi0", psi0)
     d = positive_length("d", d)
     fit_start = bool_flag("fit_start", fit_start)
     if not (isinstance(kind, str) and kind in ("structural", "equation")):

@@ -9,7 +9,7 @@ covers the input range. The synthesis itself is in ``_function_generation``.
 import numpy as np
 
 from mech._generated.function_generation import fg_coefficients, fg_lengths
-from mech._validate import (MAX_COUNT, branch_sign, finite_array, function_pairs, integer, positive_length,
+from mech._validate import (MAX_COUNT, angle, branch_sign, finite_array, function_pairs, integer, positive_length,
                             real_array, real_number, common_shape)
 from mech.planar.kinematics._fourbar import FourBar
 
@@ -307,7 +307,7 @@ class FunctionGenerator:
             raise ValueError(f"Expected `lengths` (a, b, c, d), got shape {values.shape}: {lengths!r}")
         a, b, c, d = (positive_length(n, v) for n, v in zip("abcd", values))
         self.lengths = (a, b, c, d)
-        self.theta0, self.psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
+        self.theta0, self.psi0 = angle("theta0", theta0), angle("psi0", psi0)
         self.branch = branch_sign(branch)
         self.x, self.y = function_pairs(x, y, 1)
         x_range = _common(target, x_range, samples, tol)

@@ -22,7 +22,7 @@ from typing import Callable
 import numpy as np
 
 from mech._scaling import length_scale
-from mech._validate import (InputTypeError, branch_sign, finite_array, nonnegative_int, positive_length,
+from mech._validate import (InputTypeError, branch_sign, finite_array, integer, nonnegative_int, positive_length,
                             real_number)
 from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.kinematics._guide_bar import GuideBar
@@ -282,7 +282,7 @@ def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side
     min_transmission : float, optional
         The permitted transmission angle [gamma] in [0, pi/2) (rad).
     samples : int, optional
-        Values of alpha sampled on (0, pi - theta) before the crossings of [gamma] are
+        Values of alpha (at least 2) sampled on (0, pi - theta) before the crossings of [gamma] are
         refined by Brent's method and the best alpha by a bounded scalar search.
     xtol : float, optional
         Absolute tolerance (rad) on alpha of those refinements.
@@ -314,7 +314,7 @@ def crank_rocker_family(time_ratio, rocker, swing, *, min_transmission=0.0, side
     gmin = real_number("min_transmission", min_transmission)
     if not 0.0 <= gmin < math.pi / 2:
         raise ValueError(f"Expected `min_transmission` in [0, pi/2), got {gmin!r}")
-    samples = nonnegative_int("samples", samples, 10**7)
+    samples = integer("samples", samples, minimum=2, maximum=10**7)
     xtol = positive_length("xtol", xtol)
 
     def gamma_of(al):
@@ -347,7 +347,7 @@ def slider_crank_family(time_ratio, stroke, *, min_transmission=0.0, samples=200
     gmin = real_number("min_transmission", min_transmission)
     if not 0.0 <= gmin < math.pi / 2:
         raise ValueError(f"Expected `min_transmission` in [0, pi/2), got {gmin!r}")
-    samples = nonnegative_int("samples", samples, 10**7)
+    samples = integer("samples", samples, minimum=2, maximum=10**7)
     xtol = positive_length("xtol", xtol)
 
     def gamma_of(al):

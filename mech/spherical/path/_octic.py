@@ -17,6 +17,9 @@ __all__ = ["CouplerOctic", "coupler_octic", "coupler_quartic", "nine_parameters"
 _BLOCK = 1 << 14          # points per call of the generated code (cache-sized temporaries)
 _NAMES = ("lon", "lat", "heading", "a", "b", "c", "d", "r", "gamma")
 _FORMS = ("auto", "direct", "scaled")
+#: The smallest linkage `coupler_octic` evaluates: F is of order size**12 near the linkage
+#: (its gradient size**11), which below 2**-80 leaves the normal range of float64.
+_SMALLEST = 2.0**-80
 
 
 def nine_parameters(linkage):
@@ -96,14 +99,18 @@ def _evaluate(function, degree, linkage, points, *, form="direct", frame=None, s
         raise ValueError(f"Expected `points` of shape (..., 3), got shape {x.shape}")
     shape = np.broadcast_shapes(x.shape[:-1], p.shape[:-1])
     big = np.max(np.abs(x), axis=-1)
-    safe = np.where(big > 0.0, big, 1.0)
-    u = x / safe[..., None]
+    if not np.all(big > 0.0):
+        # the origin is on every cone: it is no point of a curve on the sphere
+        raise ValueError(f"Expected non-zero `points` (directions from the sphere's centre), got {x[big == 0.0][0]!r}")
+    if degree == 8 and np.any(_octic_small.linkage_size(p) < _SMALLEST):
+        size = float(np.min(_octic_small.linkage_size(p)))
+        raise ValueError(f"Expected `linkage` of size (its largest arc among a, b, c, d, r) at least 2**-80 "
+                         f"~ {_SMALLEST:.3g} rad (below it the octic, of order size**12, underflows), got {size!r}")
+    # divided by the largest component first, so that |x| neither overflows nor underflows
+    u = x / big[..., None]
     n = np.sqrt(np.sum(u * u, axis=-1))
-    # the origin is evaluated at (0, 0, 1) and then set to 0: F and grad vanish there
-    u = np.where((n > 0.0)[..., None], u / np.where(n > 0.0, n, 1.0)[..., None], [0.0, 0.0, 1.0])
-    norm = big * n                                   # |x| without overflow
-    if degree is None:                               # not homogeneous: evaluate where given
-        u = x
+    u = u / n[..., None]
+    norm = big * n
     u = np.broadcast_to(u, shape + (3,)).reshape(-1, 3)
     flat_p = np.broadcast_to(p, shape + (9,)).reshape(-1, 9)
     one_linkage = p.ndim == 1
@@ -133,14 +140,12 @@ def _evaluate(function, degree, linkage, points, *, form="direct", frame=None, s
             p if one_linkage and one_R else flat_p[scaled], R if one_linkage and one_R else flat_R[scaled],
             u[scaled], block=_BLOCK)
     value, grad = value.reshape(shape), grad.reshape(shape + (3,))
-    if degree is None:
+    if degree is None:                               # the quartic: at the direction, on the sphere
         return value, grad
     norm = np.broadcast_to(norm, shape)
-    with np.errstate(over="ignore"):
+    with np.errstate(over="ignore", under="ignore"):
         value = value * norm**degree
         grad = grad * (norm ** (degree - 1))[..., None]
-    zero = norm == 0.0
-    value, grad = np.where(zero, 0.0, value), np.where(zero[..., None], 0.0, grad)
     if not (np.all(np.isfinite(value)) and np.all(np.isfinite(grad))):
         bad = float(norm[~np.isfinite(value) | ~np.all(np.isfinite(grad), axis=-1)].ravel()[0])
         raise ValueError(f"Expected `points` small enough for a finite octic (|x|**8), got a point of length {bad!r}")
@@ -181,7 +186,9 @@ def coupler_octic(linkage, points, *, form="auto", small=0.1):
     ------
     ValueError
         If an input is not finite, has the wrong shape, an arc is outside (0, pi), `form`
-        is unknown, `small` < 0, or a point is so long that |x|**8 overflows.
+        is unknown, `small` < 0, a point is the zero vector or so long that |x|**8
+        overflows, or the linkage is smaller than 2**-80 rad (F, of order size**12, would
+        underflow).
 
     Notes
     -----
@@ -238,7 +245,8 @@ def coupler_quartic(linkage, points):
 
     Eq. (3) of the derivation (monograph §2.1): ``Q = |N|**2 - Delta**2`` from Cramer's
     rule on the linear system (2) for the pin B. Q is not homogeneous: it means the curve
-    only on the unit sphere, so `points` are used as given (not scaled). No surface of
+    only on the unit sphere, so each point is taken as a direction and Q is evaluated at
+    ``x / |x|`` (the same value for a point given in any unit of length). No surface of
     lower degree cuts the curve from the sphere. The longitude-latitude form is
     ``Q(to_xyz(lon, lat))``.
 
@@ -247,17 +255,20 @@ def coupler_quartic(linkage, points):
     linkage : array_like, shape (..., 9), or SphericalFourBar
         As in `coupler_octic`.
     points : array_like, shape (..., 3)
-        Points, normally on the unit sphere.
+        Non-zero vectors, taken as directions (points on the unit sphere).
 
     Returns
     -------
     value : ndarray, shape (...)
+        Q at ``x / |x|``.
     gradient : ndarray, shape (..., 3)
+        The gradient of Q at ``x / |x|``.
 
     Raises
     ------
     ValueError
-        As `coupler_octic`.
+        If an input is not finite or has the wrong shape, an arc is outside (0, pi), or a
+        point is the zero vector.
 
     Notes
     -----

@@ -97,7 +97,9 @@ def _task(points, theta):
     Q = real_array("points", points)
     if Q.ndim != 2 or Q.shape[1] != 3 or Q.shape[0] < 2:
         raise ValueError(f"Expected `points` of shape (n, 3) with n >= 2, got shape {Q.shape}")
-    norms = np.linalg.norm(Q, axis=1)
+    # |Q| after dividing by the largest component: no square under- or overflows (1e-300, 1e300)
+    big = np.max(np.abs(Q), axis=1)
+    norms = big * np.linalg.norm(Q / np.where(big > 0.0, big, 1.0)[:, None], axis=1)
     if np.any(np.abs(norms - 1.0) > 1e-9):
         bad = float(norms[np.argmax(np.abs(norms - 1.0))])
         raise ValueError(f"Expected `points` to be unit vectors, got a norm of {bad!r}")
