@@ -22,7 +22,7 @@ import numpy as np
 
 from mech._validate import _show, nonnegative_number
 
-__all__ = ["SAME", "distinct_poses", "distinct_orientations", "distinct_points", "tolerance",
+__all__ = ["SAME", "distinct_poses", "distinct_orientations", "distinct_points", "tolerance", "single_roots",
            "planar_dyad_error", "spherical_dyad_error"]
 
 # Two entries of a task closer than this, relative to the task's size, are one entry. It is
@@ -116,7 +116,7 @@ def distinct_orientations(R, name="R"):
             if gaps[i, j] <= SAME * size:
                 raise ValueError(
                     f"Expected distinct orientations in `{name}`, got orientations {_pair_text(i, j)} the same "
-                    f"orientation (relative turn {gaps[i, j]!r} rad, largest turn in the set {size!r} rad)")
+                    f"orientation (relative turn {float(gaps[i, j])!r} rad, largest turn in the set {size!r} rad)")
 
 
 def distinct_points(name, points, what="points"):
@@ -172,3 +172,35 @@ def spherical_dyad_error(R, z, u):
     moved = max(float(np.max(np.linalg.norm(W - W[k], axis=1))) for k in range(len(W)))
     size = moved if moved > 0 else 1.0
     return float(np.max(arcs) - np.min(arcs)) / size
+
+
+def single_roots(points, drifts, close):
+    """Which polished roots of a design equation are distinct real solutions.
+
+    Each root of a solver's polynomial is moved onto the real line and polished by real
+    Newton steps; ``points[k]`` is where root k ends and ``drifts[k]`` how far it moved.
+    Several roots can end at one point: the two roots of a complex pair (their real parts,
+    or their projections onto the unit circle, are equal) or a root far from the real
+    line that Newton's method carries to a real solution some other root already found.
+    Within such a group the root that moved least is the real one when it moved at most a
+    tenth as far as any other; otherwise (a tie, as for a complex pair or a double root)
+    none is. ``close(p, q)`` says whether two points are one.
+
+    Returns
+    -------
+    list of int
+        The indices kept, in order.
+    """
+    n = len(points)
+    group = list(range(n))
+    for i in range(n):
+        for j in range(i):
+            if close(points[i], points[j]):
+                old, new = group[i], group[j]
+                group = [new if g == old else g for g in group]
+    kept = []
+    for g in sorted(set(group)):
+        members = sorted((k for k in range(n) if group[k] == g), key=lambda k: drifts[k])
+        if len(members) == 1 or 10.0 * drifts[members[0]] < drifts[members[1]]:
+            kept.append(members[0])
+    return sorted(kept)

@@ -13,7 +13,7 @@ import numpy as np
 
 from mech._generated import displacement as _gen
 from mech._validate import nonnegative_int, nonnegative_number, real_array, real_number
-from mech._task import planar_dyad_error
+from mech._task import SAME, planar_dyad_error, single_roots
 from mech.planar.synthesis._displacement import complex_array, pose_set
 
 # a solution farther than this (in units of the pose set's size) is a slider, not a crank:
@@ -99,12 +99,23 @@ def _bisector_point(w, along):
     return 0.5 * (w[..., 0] + w[..., 1]) + along * 1j * (w[..., 1] - w[..., 0])
 
 
-def _checked_dyad(z, A, Z1, name, value):
-    """A `Dyad`, after checking that every crank has a finite, non-zero length."""
+def _checked_dyad(z, A, Z1, name, value, w=None, d=None):
+    """A `Dyad`, after checking that every crank has a finite, non-zero length.
+
+    With the positions `w` (last axis: the poses) and the translations `d`, a point whose
+    positions coincide to `mech._task.SAME` of the task's size (the spread of `d`, or the
+    point's own distance from the reference point) is a pole and refused too: its crank
+    length would be rounding.
+    """
     length = np.abs(Z1 - A)
     bad = ~np.isfinite(length) | (length == 0.0)
+    if w is not None:
+        spread = float(np.max(np.abs(d - d.mean())))
+        scale = np.maximum(spread, np.abs(z))
+        moved = np.max(np.abs(w - w[..., :1]), axis=-1)
+        bad |= moved <= SAME * scale
     if np.any(bad):
-        k = np.flatnonzero(bad.ravel())[0]
+        k = np.flatnonzero(np.ravel(bad))[0]
         raise ValueError(
             f"Expected `{name}` whose positions fix a crank of finite, non-zero length (not a pole, "
             f"not on a line through three positions), got {complex(np.ravel(value)[k])!r}"
@@ -160,7 +171,7 @@ def dyad_for_circle_point(theta, d, circle_point, *, along=0.0):
     along = real_number("along", along)
     w = _images(theta, d, z)
     A = _circumcentre(w) if theta.size == 3 else _bisector_point(w, along)
-    return _checked_dyad(z, A, w[..., 0], "circle_point", z)
+    return _checked_dyad(z, A, w[..., 0], "circle_point", z, w, d)
 
 
 def dyad_for_centre_point(theta, d, centre_point, *, along=0.0):
@@ -207,7 +218,7 @@ def dyad_for_centre_point(theta, d, centre_point, *, along=0.0):
     seen = np.exp(-1j * theta) * (A[..., None] - d)
     z = _circumcentre(seen) if theta.size == 3 else _bisector_point(seen, along)
     Z1 = np.exp(1j * theta[0]) * z + d[0]
-    return _checked_dyad(z, A, Z1, "centre_point", A)
+    return _checked_dyad(z, A, Z1, "centre_point", A, seen, np.exp(-1j * theta) * d)
 
 
 # --- five poses -----------------------------------------------------------------------------
@@ -374,9 +385,10 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
     root appears. A solution at infinity (a slider, when the quartic's leading
     coefficient vanishes), or so far away that it is one in floating point (more than 1e8
     times the pose set's size), is not a crank: it is left out of ``dyads`` and counted in
-    ``n_infinite``. A root is real when its verified crank meets the task; the two roots
-    of a complex pair, however close to the real line, polish to one and the same point
-    and are both counted complex. Near a double root (two Burmester points about to
+    ``n_infinite``. A root is real when its verified crank meets the task; when several
+    roots polish to one crank, only the one that moved least is, and only if it moved
+    much less than the others: the two roots of a complex pair, however close to the real
+    line, share their real part and are both counted complex. Near a double root (two Burmester points about to
     merge) the accuracy drops as sqrt(machine epsilon).
     Derivation of the linear form: :ref:`deriv-displacement`.
 
@@ -428,19 +440,17 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
             n_infinite += 1             # numerically at infinity: a slider, not a crank
             continue
         error = planar_dyad_error(theta, dn, z_n, A_n)
-        drift = np.max(np.abs(X[:4] - np.array([x, y, p, q])))
-        if error <= imag_tol and drift <= _DRIFT * max(1.0, far):
-            found.append((z_n, A_n, error))
+        drift = np.max(np.abs(X[:4] - np.array([x, y, p, q]))) / max(1.0, far)
+        if error <= imag_tol and drift <= _DRIFT:
+            found.append((z_n, A_n, error, drift))
         else:
             n_complex += 1
-    # two roots that polish to one crank are a complex pair (conjugates share their real
-    # part) or a double root: neither is listed, so the count of real dyads stays even
+    # one crank reached from several roots is listed once at most (`mech._task.single_roots`)
+    keep = single_roots([f[:2] for f in found], [f[3] for f in found],
+                        lambda a, b: abs(a[0] - b[0]) + abs(a[1] - b[1]) <= 1e-6 * max(1.0, *map(abs, a)))
+    n_complex += len(found) - len(keep)
     dyads, worst = [], 0.0
-    for k, (z_n, A_n, error) in enumerate(found):
-        if any(abs(z_n - zo) + abs(A_n - Ao) <= 1e-6 * max(1.0, abs(z_n), abs(A_n))
-               for o, (zo, Ao, _) in enumerate(found) if o != k):
-            n_complex += 1
-            continue
+    for z_n, A_n, error, _ in (found[k] for k in keep):
         worst = max(worst, error)
         z, A = z_n * size, centre + A_n * size
         Z1 = np.exp(1j * theta[0]) * z + d[0]

@@ -9,6 +9,10 @@ import numpy as np
 
 from mech._validate import nonnegative_int, nonnegative_number, real_array
 from mech.spherical.guidance._dyads import SphericalDyad, arc_between, make_dyad
+from mech._task import single_roots, spherical_dyad_error
+
+# a root may lie this far from the polished crank's root on the unit circle, and no farther
+_DRIFT = 1e-2
 from mech.spherical.guidance._orientations import _axis_angle, _parts, orientation_set
 
 __all__ = ["SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve",
@@ -296,6 +300,34 @@ def _polish(K, u, w):
     return u / np.linalg.norm(u), w / np.linalg.norm(w)
 
 
+def _polish_chords(K, u, w):
+    """Newton steps on the crank equations in chord form, then |u| = |w| = 1.
+
+    ``u . (w_j - w_1) = 0`` is written ``(u - m_j) . c_j = 0`` with the chord
+    ``c_j = K_j w`` and its middle ``m_j = w + c_j / 2`` (equal to ``u^T K_j w`` since D_j is a
+    rotation); near the planar limit both factors are small and nothing cancels, where
+    ``u^T K_j w`` loses the square of the arcs to rounding.
+    """
+    for _ in range(10):
+        c = K @ w                                              # chords, shape (4, 3)
+        a = u - w - 0.5 * c                                    # u - m_j
+        F = np.concatenate([np.sum(a * c, axis=1), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
+        J = np.zeros((6, 6))
+        J[:4, :3] = c
+        J[:4, 3:] = np.einsum("ji,jik->jk", a, K) - c - 0.5 * np.einsum("ji,jik->jk", c, K)
+        J[4, :3], J[5, 3:] = u, w
+        try:
+            step = np.linalg.solve(J, F)
+        except np.linalg.LinAlgError:
+            break
+        if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > 0.5:
+            break
+        u, w = u - step[:3], w - step[3:]
+        if np.max(np.abs(step)) <= 1e-17:
+            break
+    return u / np.linalg.norm(u), w / np.linalg.norm(w)
+
+
 def _deflate(coef, root):
     """Divide the polynomial (lowest degree first) by (x - root); synthetic division."""
     n = coef.size - 1
@@ -307,7 +339,7 @@ def _deflate(coef, root):
     return out
 
 
-def burmester(R, *, imag_tol=1e-6):
+def burmester(R, *, imag_tol=1e-7):
     """All Burmester dyads of five orientations: every spherical crank that meets all five.
 
     The four design equations (4) are bilinear in the fixed axis u and the moving axis w;
@@ -319,23 +351,33 @@ def burmester(R, *, imag_tol=1e-6):
     out the two known directions leaves the sextic (10). Its roots on the unit circle are
     the real solutions, polished by Newton's method on the six equations.
 
+    Which roots are real is decided by verifying the cranks, not by their distance from the
+    unit circle (near the planar limit a real root drifts from it by up to 1e-4): every root
+    is moved onto the circle, its crank polished, and the crank kept when its arcs at the
+    five orientations agree to ``imag_tol`` times the largest arc its body point moves. Two
+    roots whose cranks polish to one crank (the two roots of a complex pair project to one
+    point of the circle; a double root) are both counted complex.
+
     Parameters
     ----------
     R : array_like, shape (5, 3, 3)
-        Orientations.
+        Orientations, no two the same.
     imag_tol : float, optional
-        A root x of the sextic counts as real when ``abs(abs(x) - 1)`` is at most this.
+        Largest spread of a kept crank's arcs, relative to the largest arc its body point
+        moves between two orientations; at least 0.
 
     Returns
     -------
     SphericalBurmesterPoints
-        ``dyads`` (every real solution, by arc), ``n_complex``, ``residual``, ``sextic``.
+        ``dyads`` (every real solution, by arc, each verified), ``n_complex`` (the other
+        solutions; the two add up to 6), ``residual``, ``sextic``.
 
     Raises
     ------
     ValueError
-        For a wrong number of orientations, bad input, or orientations too special for
-        finitely many solutions (e.g. all turning about one axis).
+        For a wrong number of orientations, bad input, two orientations that are the same,
+        a negative or non-finite `imag_tol`, or orientations too special for finitely many
+        solutions (e.g. all turning about one axis).
 
     Notes
     -----
@@ -401,16 +443,31 @@ def burmester(R, *, imag_tol=1e-6):
         coef = _deflate(coef, np.exp(2j * np.arctan2(s @ e2, s @ e1)))
     sextic = coef
     roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
-    dyads, n_complex, worst = [], 6 - roots.size, 0.0
+    found, n_complex = [], 6 - roots.size
     for x in roots:
-        if abs(abs(x) - 1.0) > imag_tol:
-            n_complex += 1
-            continue
-        w = _common_point(Ma, Mb, Pa, e1, e2, x)
+        # every root is tried on the unit circle (x / |x|: a real great circle through Pa);
+        # the crank it gives, polished, must meet the five orientations (verification
+        # decides, not the distance of x from the circle)
+        w = _common_point(Ma, Mb, Pa, e1, e2, x / abs(x) if abs(x) > 0 else 1.0)
         u = _null(np.stack([Kj @ w for Kj in K]))
         u, w = _polish(K, u, w)
-        worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
+        u = u if u @ w >= 0.0 else -u
+        u, w = _polish_chords(K * sizes[:, None, None], u, w)
         z = R[0].T @ w
+        error = spherical_dyad_error(R, z, u) if np.all(np.isfinite(u)) and np.all(np.isfinite(w)) else np.inf
+        s = w - (w @ Pa) * Pa
+        drift = abs(x - np.exp(2j * np.arctan2(s @ e2, s @ e1)))      # the polished crank's root
+        if error <= imag_tol and arc_between(u, w) > 0.0 and drift <= _DRIFT:
+            found.append((u, w, z, error, drift))
+        else:
+            n_complex += 1
+    # one crank reached from several roots is listed once at most (`mech._task.single_roots`)
+    keep = single_roots([f[1] for f in found], [f[4] for f in found],
+                        lambda a, b: min(np.linalg.norm(a - b), np.linalg.norm(a + b)) <= 1e-6)
+    n_complex += len(found) - len(keep)
+    dyads, worst = [], 0.0
+    for u, w, z, error, _ in (found[k] for k in keep):
+        worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
         dyads.append(make_dyad(z, w, u, "R", R[0]))
     dyads.sort(key=lambda k: float(k.arc))
     return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa)
