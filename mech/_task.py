@@ -182,9 +182,10 @@ def single_roots(points, drifts, close):
     Several roots can end at one point: the two roots of a complex pair (their real parts,
     or their projections onto the unit circle, are equal) or a root far from the real
     line that Newton's method carries to a real solution some other root already found.
-    Within such a group the root that moved least is the real one when it moved at most a
-    tenth as far as any other; otherwise (a tie, as for a complex pair or a double root)
-    none is. ``close(p, q)`` says whether two points are one.
+    Within such a group the root that moved least is the real one when it moved at most
+    half as far as any other; otherwise (a tie, as for a complex pair, whose two roots move
+    equally far, or by a factor of at most 1.5 for the pair ``x``, ``1/conj(x)`` of a
+    spherical solver within 0.5 of the unit circle; or a double root) none is. ``close(p, q)`` says whether two points are one.
 
     Returns
     -------
@@ -201,6 +202,6 @@ def single_roots(points, drifts, close):
     kept = []
     for g in sorted(set(group)):
         members = sorted((k for k in range(n) if group[k] == g), key=lambda k: drifts[k])
-        if len(members) == 1 or 10.0 * drifts[members[0]] < drifts[members[1]]:
+        if len(members) == 1 or 2.0 * drifts[members[0]] < drifts[members[1]]:
             kept.append(members[0])
     return sorted(kept)

@@ -12,7 +12,7 @@ from mech.spherical.guidance._dyads import SphericalDyad, arc_between, make_dyad
 from mech._task import single_roots, spherical_dyad_error
 
 # a root may lie this far from the polished crank's root on the unit circle, and no farther
-_DRIFT = 1e-2
+_DRIFT = 0.5
 from mech.spherical.guidance._orientations import _axis_angle, _parts, orientation_set
 
 __all__ = ["SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve",
@@ -328,6 +328,13 @@ def _polish_chords(K, u, w):
     return u / np.linalg.norm(u), w / np.linalg.norm(w)
 
 
+def _dyad_error(R, u, w):
+    """`mech._task.spherical_dyad_error` of the crank (u, w), inf when not finite."""
+    if not (np.all(np.isfinite(u)) and np.all(np.isfinite(w))):
+        return np.inf
+    return spherical_dyad_error(R, R[0].T @ w, u)
+
+
 def _deflate(coef, root):
     """Divide the polynomial (lowest degree first) by (x - root); synthetic division."""
     n = coef.size - 1
@@ -352,11 +359,14 @@ def burmester(R, *, imag_tol=1e-7):
     the real solutions, polished by Newton's method on the six equations.
 
     Which roots are real is decided by verifying the cranks, not by their distance from the
-    unit circle (near the planar limit a real root drifts from it by up to 1e-4): every root
-    is moved onto the circle, its crank polished, and the crank kept when its arcs at the
-    five orientations agree to ``imag_tol`` times the largest arc its body point moves. Two
-    roots whose cranks polish to one crank (the two roots of a complex pair project to one
-    point of the circle; a double root) are both counted complex.
+    unit circle (near the planar limit the sextic's real roots drift from it, by 1e-4 at
+    arcs of 1e-6 and by 0.1 at 1e-8): every root within 0.5 of the circle is moved onto
+    it, its crank polished (in the cosine form of eq. (4) and in the chord form, see
+    `_polish_chords`), and the crank kept when its arcs at the five orientations agree to
+    ``imag_tol`` times the largest arc its body point moves. When several roots polish to
+    one crank (or to its antipode), only the root that moved least counts, and only if it
+    moved at most half as far as the others: the two roots ``x`` and ``1/conj(x)`` of a
+    complex pair move almost equally far and are both counted complex.
 
     Parameters
     ----------
@@ -386,13 +396,15 @@ def burmester(R, *, imag_tol=1e-7):
     of degree 8. Near a double root (two Burmester points about to merge) the accuracy
     drops to about sqrt(machine epsilon), before polishing. The planar counterpart has at
     most four solutions (`mech.planar.synthesis.burmester`); as the arcs shrink four spherical
-    solutions tend to the planar ones and the other two become complex. The accuracy falls
-    as the displacements shrink: the equations hold the turns of the orientations at full
-    size but their translations only at the size of the arcs, so the small residual means
-    less. For Example 2-15 carried to the sphere by `planar_orientations` at scale s, the
-    four-bar it gives reproduces the orientations to 2e-15 rad at s = 1e-3 (cranks of about
-    0.1 rad), 2e-13 at 1e-4, 1e-11 at 1e-5, 2e-9 at 1e-6 and 1e-6 at 1e-7; `guidance_fourbars`
-    with its default ``rtol=1e-9`` passes none below s = 1e-6.
+    solutions tend to the planar ones and the other two become complex. The equations hold
+    the turns of the orientations at full size but their translations only at the size of
+    the arcs, and the cosine form (4) keeps them only at the square of the arcs; the chord
+    form keeps the cranks accurate to rounding (relative to the arcs) down to arcs of about
+    1e-7 rad, below which the sextic loses real roots. For Example 2-15 carried to the sphere
+    by `planar_orientations` at scale s, all four cranks are found from s = 1e-3 to 3e-8;
+    the best four-bar reproduces the orientations to 1e-15 rad at s = 1e-3, 2e-14 at 1e-4,
+    9e-13 at 1e-5, 6e-11 at 1e-6 and 2e-8 at 1e-7 (its analysis loses accuracy too), and
+    `guidance_fourbars` with its default ``rtol=1e-9`` passes none below s = 1e-6.
 
     Examples
     --------
@@ -445,16 +457,22 @@ def burmester(R, *, imag_tol=1e-7):
     roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
     found, n_complex = [], 6 - roots.size
     for x in roots:
+        if not abs(abs(x) - 1.0) <= _DRIFT:
+            n_complex += 1              # its projection is farther than _DRIFT: no need to polish
+            continue
         # every root is tried on the unit circle (x / |x|: a real great circle through Pa);
         # the crank it gives, polished, must meet the five orientations (verification
         # decides, not the distance of x from the circle)
         w = _common_point(Ma, Mb, Pa, e1, e2, x / abs(x) if abs(x) > 0 else 1.0)
-        u = _null(np.stack([Kj @ w for Kj in K]))
-        u, w = _polish(K, u, w)
-        u = u if u @ w >= 0.0 else -u
-        u, w = _polish_chords(K * sizes[:, None, None], u, w)
-        z = R[0].T @ w
-        error = spherical_dyad_error(R, z, u) if np.all(np.isfinite(u)) and np.all(np.isfinite(w)) else np.inf
+        u0 = _null(np.stack([Kj @ w for Kj in K]))
+        u0 = u0 if u0 @ w >= 0.0 else -u0
+        u, w1 = _polish(K, u0, w)
+        u = u if u @ w1 >= 0.0 else -u
+        # the chord form is the better one near the planar limit, where the cosine form may
+        # also wander from the start: keep whichever of the three meets the task best
+        error, u, w, z = min(((_dyad_error(R, u_, w_), u_, w_, R[0].T @ w_) for u_, w_ in
+                              ((u, w1), _polish_chords(K * sizes[:, None, None], u, w1),
+                               _polish_chords(K * sizes[:, None, None], u0, w))), key=lambda t: t[0])
         s = w - (w @ Pa) * Pa
         drift = abs(x - np.exp(2j * np.arctan2(s @ e2, s @ e1)))      # the polished crank's root
         if error <= imag_tol and arc_between(u, w) > 0.0 and drift <= _DRIFT:
@@ -462,8 +480,12 @@ def burmester(R, *, imag_tol=1e-7):
         else:
             n_complex += 1
     # one crank reached from several roots is listed once at most (`mech._task.single_roots`)
-    keep = single_roots([f[1] for f in found], [f[4] for f in found],
-                        lambda a, b: min(np.linalg.norm(a - b), np.linalg.norm(a + b)) <= 1e-6)
+    # (two cranks are one when they, or one and the other's antipode, differ by 1e-6 of their
+    # arcs: near the planar limit all of them lie within a small cap, and only their own size
+    # measures them)
+    keep = single_roots([f[:2] for f in found], [f[4] for f in found],
+                        lambda a, b: min(np.linalg.norm(a[0] - k * b[0]) + np.linalg.norm(a[1] - k * b[1])
+                                         for k in (1.0, -1.0)) <= 1e-6 * (arc_between(*a) + arc_between(*b)))
     n_complex += len(found) - len(keep)
     dyads, worst = [], 0.0
     for u, w, z, error, _ in (found[k] for k in keep):
