@@ -81,8 +81,8 @@ def distinct_poses(theta, d, names=("theta", "d")):
                 whole = "" if theta[i] == theta[j] else " (a whole number of turns apart)"
                 raise ValueError(
                     f"Expected distinct poses in `{names[0]}`/`{names[1]}`, got poses {_pair_text(i, j)} "
-                    f"the same pose{whole}: theta = {float(theta[i])!r} and {float(theta[j])!r}, "
-                    f"d = {complex(d[i])!r} and {complex(d[j])!r}")
+                    f"the same pose{whole}: {names[0]} = {float(theta[i])!r} and {float(theta[j])!r}, "
+                    f"{names[1]} = {complex(d[i])!r} and {complex(d[j])!r}")
 
 
 def _rotation_gap(Ri, Rj):

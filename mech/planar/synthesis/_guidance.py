@@ -479,7 +479,9 @@ class BurmesterCurve:
     length : ndarray, shape (m, 2)
         Crank lengths.
     valid : ndarray of bool, shape (m, 2)
-        True where the intersection is real and finite.
+        True where the intersection is real and finite and its crank, checked at the four
+        poses, meets them (radii equal to 1e-7 of the larger of the pose set's size and
+        the crank).
     pole : complex
         The pole (body coordinates) the tracing lines pass through.
     """
@@ -628,6 +630,12 @@ def circle_point_curve(theta, d, *, samples=360, phi=None):
     moving = np.exp(1j * theta[0]) * zb + d[0]
     length = np.abs(moving - Ab)
     valid &= np.isfinite(length) & (length > 0)
+    # every point kept is verified: its four radii agree (normalised units) to 1e-7 of the
+    # larger of the pose set's size and its crank; the rest are marked not valid
+    with np.errstate(invalid="ignore", over="ignore"):
+        radii = np.abs(np.exp(1j * theta) * z[..., None] + dn - A[..., None])
+        spread = np.max(radii, axis=-1) - np.min(radii, axis=-1)
+    valid &= spread <= 1e-7 * np.maximum(1.0, np.max(radii, axis=-1))
     nan = complex(np.nan, np.nan)
     return BurmesterCurve(phi, np.where(valid, zb, nan), np.where(valid, moving, nan),
                           np.where(valid, Ab, nan), np.where(valid, length, np.nan), valid, complex(z0 * size))

@@ -39,7 +39,8 @@ class SphericalBurmesterCurve:
     arc : ndarray, shape (m, 2)
         Crank arcs in (0, pi/2].
     valid : ndarray of bool, shape (m, 2)
-        True where the point is real.
+        True where the point is real and verified: its positions are equidistant from the
+        centre point (on the guide, for sliders) to 1e-9 of the displacements.
     pole : ndarray, shape (3,)
         The pole (ground frame) the tracing great circles pass through.
     """
@@ -151,10 +152,16 @@ def _largest_pole(K):
 def _curve(R, M, P, phi, rows_of, base_index):
     w, valid = _trace(M, P, phi)
     flat = np.where(valid[..., None], w, 0.0).reshape(-1, 3)
-    u = _null(rows_of(flat)).reshape(w.shape)
+    rows = rows_of(flat)
+    u = _null(rows).reshape(w.shape)
     u = np.where(np.sum(u * w, axis=-1, keepdims=True) < 0.0, -u, u)
     arc = arc_between(u, w)
     valid &= arc > 0.0
+    # every point kept is verified: u is orthogonal to each row (an equal arc, or a position
+    # on the guide) to 1e-9 of the row's length; the rest are marked not valid
+    scale = np.maximum(np.linalg.norm(rows, axis=-1), np.finfo(float).tiny)
+    miss = np.max(np.abs(np.einsum("nij,nj->ni", rows, u.reshape(-1, 3))) / scale, axis=-1)
+    valid &= (miss <= 1e-9).reshape(valid.shape)
     z = np.einsum("ji,...j->...i", R[0], w)              # body coordinates: R_1^T w
     nan = np.where(valid[..., None], 0.0, np.nan)
     return SphericalBurmesterCurve(phi, z + nan, w + nan, u + nan, np.where(valid, arc, np.nan), valid, P)
@@ -400,7 +407,9 @@ def burmester(R, *, imag_tol=1e-7):
     the turns of the orientations at full size but their translations only at the size of
     the arcs, and the cosine form (4) keeps them only at the square of the arcs; the chord
     form keeps the cranks accurate to rounding (relative to the arcs) down to arcs of about
-    1e-7 rad, below which the sextic loses real roots. For Example 2-15 carried to the sphere
+    1e-7 rad; there the sextic's roots have moved so far from their places (by 0.1 and
+    more) that for some sets no root leads to one of the real cranks, which is then lost
+    with its partner counted complex (an odd count). For Example 2-15 carried to the sphere
     by `planar_orientations` at scale s, all four cranks are found from s = 1e-3 to 3e-8;
     the best four-bar reproduces the orientations to 1e-15 rad at s = 1e-3, 2e-14 at 1e-4,
     9e-13 at 1e-5, 6e-11 at 1e-6 and 2e-8 at 1e-7 (its analysis loses accuracy too), and
