@@ -137,6 +137,10 @@ def test_curve_points_meet_their_orientations(seed):
     sliders = slider_point_curve(R3, samples=12)
     for z, n in zip(sliders.circle_point[sliders.valid], sliders.centre_point[sliders.valid]):
         assert max(abs(float(n @ (Rj @ z))) for Rj in R3) <= 1e-9
+    found = slider_dyads(R)
+    assert len(found) % 2 == 0
+    for k in found:                 # four positions on the guide: equal (right-angle) chords from its pole
+        assert _chord_spread(R, k.circle_point, k.centre_point) <= 1e-7
 
 
 @settings(max_examples=8, deadline=None)

@@ -527,7 +527,7 @@ def _common_point(Ma, Mb, P, e1, e2, x):
     return w / np.linalg.norm(w)
 
 
-def slider_dyads(R, *, imag_tol=1e-6):
+def slider_dyads(R, *, imag_tol=1e-7):
     """Every spherical slider through four orientations (§3.5): up to six slider points.
 
     A slider point's four positions lie on one great circle, so it lies on the slider-point
@@ -542,7 +542,9 @@ def slider_dyads(R, *, imag_tol=1e-6):
     R : array_like, shape (4, 3, 3)
         Orientations.
     imag_tol : float, optional
-        A root x of the sextic counts as real when ``abs(abs(x) - 1)`` is at most this.
+        A root x of the sextic is real when, moved onto the unit circle and polished, it
+        gives a slider whose four positions lie on its guide to this times the largest
+        distance the point moves (verified, as in `burmester`); at least 0.
 
     Returns
     -------
@@ -553,7 +555,8 @@ def slider_dyads(R, *, imag_tol=1e-6):
     Raises
     ------
     ValueError
-        For a wrong number of orientations, bad input, or orientations 1 and 2 equal.
+        For a wrong number of orientations, bad input, two orientations the same, or a
+        negative or non-finite `imag_tol`.
 
     Notes
     -----
@@ -585,15 +588,28 @@ def slider_dyads(R, *, imag_tol=1e-6):
                          "slider cubics share a whole curve")
     sextic = (coef / top)[1:8]                     # the roots x = 0 and infinity are the complex axes of D_21
     roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
+    D = np.stack([np.eye(3)] + [np.eye(3) + Kj for Kj in K])
     found = []
     for x in roots:
-        if abs(abs(x) - 1.0) > imag_tol:
+        if not abs(abs(x) - 1.0) <= _DRIFT:
             continue
-        w = _common_point(Ma, Mb, P, e1, e2, x)
+        # as in `burmester`: the root moved onto the unit circle, polished, and verified
+        w = _common_point(Ma, Mb, P, e1, e2, x / abs(x) if abs(x) > 0 else 1.0)
         rows = np.stack([w, w + K[0] @ w, w + K[1] @ w, w + K[2] @ w])
         n = _null(rows)
         # polish: w on the guide at all four orientations (Newton on n^T D_j w = 0, |n| = |w| = 1)
-        D = np.stack([np.eye(3)] + [np.eye(3) + Kj for Kj in K])
         n, w = _polish(D, n, w)
-        found.append(make_dyad(R[0].T @ w, w, n, "R", R[0]))
-    return tuple(found)
+        W = D @ w
+        moved = max(float(np.max(np.linalg.norm(W - W[k], axis=1))) for k in range(4))
+        error = float(np.max(np.abs(W @ n))) / moved if moved > 0 and np.all(np.isfinite(W @ n)) else np.inf
+        t = w - (w @ P) * P
+        drift = abs(x - np.exp(2j * np.arctan2(t @ e2, t @ e1)))
+        if error <= imag_tol and drift <= _DRIFT:
+            found.append((n, w, moved, drift))
+    keep = single_roots([f[:3] for f in found], [f[3] for f in found],
+                        lambda a, b: min(np.linalg.norm(a[1] - k * b[1]) for k in (1.0, -1.0))
+                        <= 1e-6 * (a[2] + b[2]))
+    dyads = []
+    for n, w, _, _ in (found[k] for k in keep):
+        dyads.append(make_dyad(R[0].T @ w, w, n, "R", R[0]))
+    return tuple(dyads)
