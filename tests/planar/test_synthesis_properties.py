@@ -283,3 +283,17 @@ def test_example_2_15_count_and_lengths():
     found = burmester(EX_2_15_THETA, EX_2_15_D)
     assert real_count_mp(EX_2_15_THETA, EX_2_15_D) == len(found.dyads) == 4
     assert found.n_complex == found.n_infinite == 0
+
+
+@settings(max_examples=30, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), exponent=st.integers(-200, 200))
+def test_slider_dyads_meet_their_poses(seed, exponent):
+    theta, d = _pose_set(np.random.default_rng(seed), 4)
+    d = d * 10.0 ** exponent
+    size = max(abs(complex(x) - complex(d.mean())) for x in d)
+    for k in slider_dyads(theta, d):
+        u = complex(k.direction) / abs(complex(k.direction))
+        for t, x in zip(theta, d):
+            Z = cmath.exp(1j * float(t)) * complex(k.slider_point) / size + complex(x) / size
+            off = ((Z - complex(k.line_point) / size) * u.conjugate()).imag     # distance from the guide
+            assert abs(off) <= 1e-7 * max(1.0, abs(complex(k.slider_point)) / size)
