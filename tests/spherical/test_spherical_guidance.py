@@ -293,6 +293,8 @@ def test_bad_orientations():
         rng = np.random.default_rng(8)
         slider_dyad_for_point(_random_set(rng, 3), [0.3, 0.4, 0.8])
     with pytest.raises(ValueError, match="`dyads`"):
+        guidance_fourbars(_random_set(np.random.default_rng(8), 3), dyads=[])
+    with pytest.raises(ValueError, match="orientations 1 and 2 .*`R`|`R`.* 1 and 2"):
         guidance_fourbars(np.stack([np.eye(3)] * 3), dyads=[])
 
 

@@ -3,6 +3,7 @@
 import numpy as np
 
 from mech._generated import displacement as _gen
+from mech._task import distinct_poses
 from mech._validate import common_shape, planar_points, real_array, _show
 
 __all__ = ["displacement_matrix", "pole"]
@@ -17,8 +18,12 @@ def complex_array(name, value):
     return planar_points(name, value)
 
 
-def pose_set(theta, d, counts):
-    """Check a pose set: `theta` real of shape (n,), `d` complex of shape (n,), n in `counts`."""
+def pose_set(theta, d, counts, *, task=True):
+    """Check a pose set: `theta` real of shape (n,), `d` complex of shape (n,), n in `counts`.
+
+    With `task` (a design task, the default) no two poses may be the same pose
+    (`mech._task.distinct_poses`: equal, or a whole number of turns apart).
+    """
     theta = real_array("theta", theta)
     d = complex_array("d", d)
     if theta.ndim != 1 or d.shape != theta.shape:
@@ -28,6 +33,8 @@ def pose_set(theta, d, counts):
     if theta.size not in counts:
         allowed = " or ".join(str(c) for c in counts)
         raise ValueError(f"Expected {allowed} poses, got {theta.size}: `theta` = {_show(theta)}")
+    if task:
+        distinct_poses(theta, d)
     return theta, d
 
 

@@ -12,8 +12,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import displacement as _gen
-from mech._validate import nonnegative_int, real_array, real_number
+from mech._validate import nonnegative_int, nonnegative_number, real_array, real_number
+from mech._task import SAME, planar_dyad_error, single_roots
 from mech.planar.synthesis._displacement import complex_array, pose_set
+
+# a solution farther than this (in units of the pose set's size) is a slider, not a crank:
+# its radii agree only to about its distance times the rounding, beyond any tolerance
+_FAR = 1e8
+# a root may move this far (relative) when polished onto the real line, and no farther
+_DRIFT = 1e-2
 
 __all__ = ["Dyad", "BurmesterPoints", "BurmesterCurve", "dyad_for_circle_point", "dyad_for_centre_point",
            "circle_point_curve", "burmester"]
@@ -54,13 +61,17 @@ class BurmesterPoints:
     n_complex : int
         The number of complex (unusable) solutions among the four.
     residual : float
-        The largest half-form residual (2-40) over the real dyads, relative to the square
-        of the largest length involved.
+        The largest spread of a real dyad's radii over the five poses, relative to the pose
+        set's size (each dyad listed meets its poses to ``imag_tol`` of `burmester`).
+    n_infinite : int
+        The number of solutions at infinity or numerically there (a circle or centre point
+        more than 1e8 times the pose set's size away): sliders, not cranks, left out.
     """
 
     dyads: tuple
     n_complex: int
     residual: float
+    n_infinite: int = 0
 
 
 def _images(theta, d, z):
@@ -88,12 +99,23 @@ def _bisector_point(w, along):
     return 0.5 * (w[..., 0] + w[..., 1]) + along * 1j * (w[..., 1] - w[..., 0])
 
 
-def _checked_dyad(z, A, Z1, name, value):
-    """A `Dyad`, after checking that every crank has a finite, non-zero length."""
+def _checked_dyad(z, A, Z1, name, value, w=None, d=None):
+    """A `Dyad`, after checking that every crank has a finite, non-zero length.
+
+    With the positions `w` (last axis: the poses) and the translations `d`, a point whose
+    positions coincide to `mech._task.SAME` of the task's size (the spread of `d`, or the
+    point's own distance from the reference point) is a pole and refused too: its crank
+    length would be rounding.
+    """
     length = np.abs(Z1 - A)
     bad = ~np.isfinite(length) | (length == 0.0)
+    if w is not None:
+        spread = float(np.max(np.abs(d - d.mean())))
+        scale = np.maximum(spread, np.abs(z))
+        moved = np.max(np.abs(w - w[..., :1]), axis=-1)
+        bad |= moved <= SAME * scale
     if np.any(bad):
-        k = np.flatnonzero(bad.ravel())[0]
+        k = np.flatnonzero(np.ravel(bad))[0]
         raise ValueError(
             f"Expected `{name}` whose positions fix a crank of finite, non-zero length (not a pole, "
             f"not on a line through three positions), got {complex(np.ravel(value)[k])!r}"
@@ -149,7 +171,7 @@ def dyad_for_circle_point(theta, d, circle_point, *, along=0.0):
     along = real_number("along", along)
     w = _images(theta, d, z)
     A = _circumcentre(w) if theta.size == 3 else _bisector_point(w, along)
-    return _checked_dyad(z, A, w[..., 0], "circle_point", z)
+    return _checked_dyad(z, A, w[..., 0], "circle_point", z, w, d)
 
 
 def dyad_for_centre_point(theta, d, centre_point, *, along=0.0):
@@ -196,7 +218,7 @@ def dyad_for_centre_point(theta, d, centre_point, *, along=0.0):
     seen = np.exp(-1j * theta) * (A[..., None] - d)
     z = _circumcentre(seen) if theta.size == 3 else _bisector_point(seen, along)
     Z1 = np.exp(1j * theta[0]) * z + d[0]
-    return _checked_dyad(z, A, Z1, "centre_point", A)
+    return _checked_dyad(z, A, Z1, "centre_point", A, seen, np.exp(-1j * theta) * d)
 
 
 # --- five poses -----------------------------------------------------------------------------
@@ -335,8 +357,10 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
     d : array_like of complex, shape (5,)
         Pose translations (the reference points P_i of the textbook).
     imag_tol : float, optional
-        A solution counts as real when the imaginary parts of its coordinates (after
-        polishing, in units of the pose set's size) are at most this.
+        A solution counts as real when its real part, polished by Newton's method on the
+        real equations, makes a crank whose radii at the five poses differ by at most this
+        times the pose set's size (the crank is verified, whatever the root's imaginary
+        part was); at least 0.
     rank_tol : float, optional
         Relative size of the fourth singular value of the linear system below which the
         poses are too special (e.g. all turns about one point) for finitely many dyads.
@@ -344,20 +368,28 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
     Returns
     -------
     BurmesterPoints
-        ``dyads`` (every real solution, by crank length), ``n_complex``, ``residual``.
+        ``dyads`` (every real solution, by crank length, each verified), ``n_complex``,
+        ``residual``, ``n_infinite``. ``len(dyads) + n_complex + n_infinite`` is 4.
 
     Raises
     ------
     ValueError
-        For a wrong number of poses, non-finite input, or dependent design equations.
+        For a wrong number of poses, non-finite input, two poses that are the same pose
+        (equal, or a whole number of turns apart), a negative or non-finite tolerance, or
+        dependent design equations.
 
     Notes
     -----
     The data are first moved to their centroid and scaled by their size, so the result
     does not depend on the unit of length. No starting guess is needed, and no trivial
     root appears. A solution at infinity (a slider, when the quartic's leading
-    coefficient vanishes) is not a crank and is left out. Near a double root (two
-    Burmester points about to merge) the accuracy drops as sqrt(machine epsilon).
+    coefficient vanishes), or so far away that it is one in floating point (more than 1e8
+    times the pose set's size), is not a crank: it is left out of ``dyads`` and counted in
+    ``n_infinite``. A root is real when its verified crank meets the task; when several
+    roots polish to one crank, only the one that moved least is, and only if it moved
+    much less than the others: the two roots of a complex pair, however close to the real
+    line, share their real part and are both counted complex. Near a double root (two Burmester points about to
+    merge) the accuracy drops as sqrt(machine epsilon).
     Derivation of the linear form: :ref:`deriv-displacement`.
 
     Examples
@@ -371,8 +403,8 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
     [108.757, 186.698, 468.402, 1502.997]
     """
     theta, d = pose_set(theta, d, (5,))
-    imag_tol = real_number("imag_tol", imag_tol)
-    rank_tol = real_number("rank_tol", rank_tol)
+    imag_tol = nonnegative_number("imag_tol", imag_tol)
+    rank_tol = nonnegative_number("rank_tol", rank_tol)
     centre = d.mean()
     size = np.max(np.abs(d - centre))
     size = size if size > 0 else 1.0
@@ -392,25 +424,39 @@ def burmester(theta, d, *, imag_tol=1e-7, rank_tol=1e-12):
     X0 = np.linalg.lstsq(M, -rows[:, 6], rcond=None)[0]
     N = Vt[4:].T
     Q1, Q2 = _constraint_conics(X0, N)
-    dyads, n_complex, worst = [], 0, 0.0
-    for l, m in _intersect_conics(Q1, Q2):
+    roots = _intersect_conics(Q1, Q2)
+    found, n_complex, n_infinite = [], 0, 4 - len(roots)
+    for l, m in roots:
         X = X0 + N @ np.array([l, m])
         if not np.all(np.isfinite(X)):
+            n_infinite += 1
             continue
-        if np.max(np.abs(X.imag[:4])) > imag_tol * max(1.0, np.max(np.abs(X[:4]))):
-            n_complex += 1
-            continue
+        # the root is tried on the real line: its real part, polished by real Newton steps,
+        # must make a crank that meets the five poses (verification decides, not Im X)
         x, y, p, q = _polish(rows, X.real[:4])
-        # the residual in normalised coordinates: the same relative size, and no overflow
-        F = _gen.crank_residual(theta[0], dn[0].real, dn[0].imag, theta[1:], dn[1:].real, dn[1:].imag,
-                                x, y, p, q)
-        scale = max(np.max(np.abs(dn - (p + 1j * q))), abs(x + 1j * y)) ** 2
-        worst = max(worst, float(np.max(np.abs(F))) / scale)
-        z, A = (x + 1j * y) * size, centre + (p + 1j * q) * size
+        z_n, A_n = x + 1j * y, p + 1j * q
+        far = max(abs(z_n), abs(A_n))
+        if not far < _FAR:
+            n_infinite += 1             # numerically at infinity: a slider, not a crank
+            continue
+        error = planar_dyad_error(theta, dn, z_n, A_n)
+        drift = np.max(np.abs(X[:4] - np.array([x, y, p, q]))) / max(1.0, far)
+        if error <= imag_tol and drift <= _DRIFT:
+            found.append((z_n, A_n, error, drift))
+        else:
+            n_complex += 1
+    # one crank reached from several roots is listed once at most (`mech._task.single_roots`)
+    keep = single_roots([f[:2] for f in found], [f[3] for f in found],
+                        lambda a, b: abs(a[0] - b[0]) + abs(a[1] - b[1]) <= 1e-6 * max(1.0, *map(abs, a)))
+    n_complex += len(found) - len(keep)
+    dyads, worst = [], 0.0
+    for z_n, A_n, error, _ in (found[k] for k in keep):
+        worst = max(worst, error)
+        z, A = z_n * size, centre + A_n * size
         Z1 = np.exp(1j * theta[0]) * z + d[0]
         dyads.append(Dyad(complex(z), complex(Z1), complex(A), float(abs(Z1 - A))))
     dyads.sort(key=lambda k: k.length)
-    return BurmesterPoints(tuple(dyads), n_complex, worst)
+    return BurmesterPoints(tuple(dyads), n_complex, worst, n_infinite)
 
 
 # --- four poses: the circle-point and centre-point curves (Burmester's cubics), as curves ---------
@@ -433,7 +479,9 @@ class BurmesterCurve:
     length : ndarray, shape (m, 2)
         Crank lengths.
     valid : ndarray of bool, shape (m, 2)
-        True where the intersection is real and finite.
+        True where the intersection is real and finite and its crank, checked at the four
+        poses, meets them (radii equal to 1e-7 of the larger of the pose set's size and
+        the crank).
     pole : complex
         The pole (body coordinates) the tracing lines pass through.
     """
@@ -582,6 +630,12 @@ def circle_point_curve(theta, d, *, samples=360, phi=None):
     moving = np.exp(1j * theta[0]) * zb + d[0]
     length = np.abs(moving - Ab)
     valid &= np.isfinite(length) & (length > 0)
+    # every point kept is verified: its four radii agree (normalised units) to 1e-7 of the
+    # larger of the pose set's size and its crank; the rest are marked not valid
+    with np.errstate(invalid="ignore", over="ignore"):
+        radii = np.abs(np.exp(1j * theta) * z[..., None] + dn - A[..., None])
+        spread = np.max(radii, axis=-1) - np.min(radii, axis=-1)
+    valid &= spread <= 1e-7 * np.maximum(1.0, np.max(radii, axis=-1))
     nan = complex(np.nan, np.nan)
     return BurmesterCurve(phi, np.where(valid, zb, nan), np.where(valid, moving, nan),
                           np.where(valid, Ab, nan), np.where(valid, length, np.nan), valid, complex(z0 * size))

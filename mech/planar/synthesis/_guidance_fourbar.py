@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import displacement as _gen
-from mech._validate import InputTypeError, _show, finite_array, nonnegative_number, planar_points, real_number
+from mech._validate import InputTypeError, _show, finite_array, nonnegative_number, planar_points
 from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.kinematics._slider_crank import SliderCrank
 from mech.planar.structure._grashof import grashof
@@ -230,7 +230,7 @@ def guidance_fourbars(theta, d, dyads=None, *, rtol=1e-9):
     ('crank-rocker', [108.757, 191.146, 186.698, 188.847])
     """
     theta, d = pose_set(theta, d, (2, 3, 4, 5))
-    rtol = real_number("rtol", rtol)
+    rtol = nonnegative_number("rtol", rtol)
     user_dyads = dyads is not None
     if dyads is None:
         if theta.size != 5:

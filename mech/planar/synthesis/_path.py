@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated.path_generation import path_dyad_coefficients, path_dyad_residual
+from mech._task import distinct_poses
 from mech._validate import finite_array, nonnegative_int, planar_points, positive_length, real_array
 from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.structure._grashof import grashof
@@ -361,13 +362,19 @@ def path_timed(points, crank_angles, *, rtol=1e-9, imag_tol=1e-7):
     if np.all(points == points[0]):
         # `burmester` would divide by the zero size of the pose set
         raise ValueError(f"Expected `points` not all equal, got {points}")
+    # a point met twice at one crank angle (or a whole turn later) is one task pose
+    distinct_poses(crank_angles, points, names=("crank_angles", "points"))
     found = []
     for crank in burmester(crank_angles + np.pi, points, imag_tol=imag_tol).dyads:
         A = complex(crank.centre_point)
         B = A + np.exp(1j * crank_angles) * crank.circle_point
         beta = np.angle(points - B)
         size = max(abs(B[0] - A), abs(points[0] - B[0]))
-        for out in burmester(beta, points, imag_tol=imag_tol).dyads:
+        try:
+            outs = burmester(beta, points, imag_tol=imag_tol).dyads
+        except ValueError:
+            continue            # the coupler's poses repeat or are dependent: no output dyad
+        for out in outs:
             D = complex(out.centre_point)
             C = np.exp(1j * beta) * out.circle_point + points
             # the crank reappears among the coupler's dyads; it is not a second link

@@ -9,6 +9,10 @@ import numpy as np
 
 from mech._validate import nonnegative_int, nonnegative_number, real_array
 from mech.spherical.guidance._dyads import SphericalDyad, arc_between, make_dyad
+from mech._task import single_roots, spherical_dyad_error
+
+# a root may lie this far from the polished crank's root on the unit circle, and no farther
+_DRIFT = 0.5
 from mech.spherical.guidance._orientations import _axis_angle, _parts, orientation_set
 
 __all__ = ["SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve",
@@ -35,7 +39,8 @@ class SphericalBurmesterCurve:
     arc : ndarray, shape (m, 2)
         Crank arcs in (0, pi/2].
     valid : ndarray of bool, shape (m, 2)
-        True where the point is real.
+        True where the point is real and verified: its positions are equidistant from the
+        centre point (on the guide, for sliders) to 1e-9 of the displacements.
     pole : ndarray, shape (3,)
         The pole (ground frame) the tracing great circles pass through.
     """
@@ -147,10 +152,16 @@ def _largest_pole(K):
 def _curve(R, M, P, phi, rows_of, base_index):
     w, valid = _trace(M, P, phi)
     flat = np.where(valid[..., None], w, 0.0).reshape(-1, 3)
-    u = _null(rows_of(flat)).reshape(w.shape)
+    rows = rows_of(flat)
+    u = _null(rows).reshape(w.shape)
     u = np.where(np.sum(u * w, axis=-1, keepdims=True) < 0.0, -u, u)
     arc = arc_between(u, w)
     valid &= arc > 0.0
+    # every point kept is verified: u is orthogonal to each row (an equal arc, or a position
+    # on the guide) to 1e-9 of the row's length; the rest are marked not valid
+    scale = np.maximum(np.linalg.norm(rows, axis=-1), np.finfo(float).tiny)
+    miss = np.max(np.abs(np.einsum("nij,nj->ni", rows, u.reshape(-1, 3))) / scale, axis=-1)
+    valid &= (miss <= 1e-9).reshape(valid.shape)
     z = np.einsum("ji,...j->...i", R[0], w)              # body coordinates: R_1^T w
     nan = np.where(valid[..., None], 0.0, np.nan)
     return SphericalBurmesterCurve(phi, z + nan, w + nan, u + nan, np.where(valid, arc, np.nan), valid, P)
@@ -296,6 +307,41 @@ def _polish(K, u, w):
     return u / np.linalg.norm(u), w / np.linalg.norm(w)
 
 
+def _polish_chords(K, u, w):
+    """Newton steps on the crank equations in chord form, then |u| = |w| = 1.
+
+    ``u . (w_j - w_1) = 0`` is written ``(u - m_j) . c_j = 0`` with the chord
+    ``c_j = K_j w`` and its middle ``m_j = w + c_j / 2`` (equal to ``u^T K_j w`` since D_j is a
+    rotation); near the planar limit both factors are small and nothing cancels, where
+    ``u^T K_j w`` loses the square of the arcs to rounding.
+    """
+    for _ in range(10):
+        c = K @ w                                              # chords, shape (4, 3)
+        a = u - w - 0.5 * c                                    # u - m_j
+        F = np.concatenate([np.sum(a * c, axis=1), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
+        J = np.zeros((6, 6))
+        J[:4, :3] = c
+        J[:4, 3:] = np.einsum("ji,jik->jk", a, K) - c - 0.5 * np.einsum("ji,jik->jk", c, K)
+        J[4, :3], J[5, 3:] = u, w
+        try:
+            step = np.linalg.solve(J, F)
+        except np.linalg.LinAlgError:
+            break
+        if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > 0.5:
+            break
+        u, w = u - step[:3], w - step[3:]
+        if np.max(np.abs(step)) <= 1e-17:
+            break
+    return u / np.linalg.norm(u), w / np.linalg.norm(w)
+
+
+def _dyad_error(R, u, w):
+    """`mech._task.spherical_dyad_error` of the crank (u, w), inf when not finite."""
+    if not (np.all(np.isfinite(u)) and np.all(np.isfinite(w))):
+        return np.inf
+    return spherical_dyad_error(R, R[0].T @ w, u)
+
+
 def _deflate(coef, root):
     """Divide the polynomial (lowest degree first) by (x - root); synthetic division."""
     n = coef.size - 1
@@ -307,7 +353,7 @@ def _deflate(coef, root):
     return out
 
 
-def burmester(R, *, imag_tol=1e-6):
+def burmester(R, *, imag_tol=1e-7):
     """All Burmester dyads of five orientations: every spherical crank that meets all five.
 
     The four design equations (4) are bilinear in the fixed axis u and the moving axis w;
@@ -319,23 +365,36 @@ def burmester(R, *, imag_tol=1e-6):
     out the two known directions leaves the sextic (10). Its roots on the unit circle are
     the real solutions, polished by Newton's method on the six equations.
 
+    Which roots are real is decided by verifying the cranks, not by their distance from the
+    unit circle (near the planar limit the sextic's real roots drift from it, by 1e-4 at
+    arcs of 1e-6 and by 0.1 at 1e-8): every root within 0.5 of the circle is moved onto
+    it, its crank polished (in the cosine form of eq. (4) and in the chord form, see
+    `_polish_chords`), and the crank kept when its arcs at the five orientations agree to
+    ``imag_tol`` times the largest arc its body point moves. When several roots polish to
+    one crank (or to its antipode), only the root that moved least counts, and only if it
+    moved at most half as far as the others: the two roots ``x`` and ``1/conj(x)`` of a
+    complex pair move almost equally far and are both counted complex.
+
     Parameters
     ----------
     R : array_like, shape (5, 3, 3)
-        Orientations.
+        Orientations, no two the same.
     imag_tol : float, optional
-        A root x of the sextic counts as real when ``abs(abs(x) - 1)`` is at most this.
+        Largest spread of a kept crank's arcs, relative to the largest arc its body point
+        moves between two orientations; at least 0.
 
     Returns
     -------
     SphericalBurmesterPoints
-        ``dyads`` (every real solution, by arc), ``n_complex``, ``residual``, ``sextic``.
+        ``dyads`` (every real solution, by arc, each verified), ``n_complex`` (the other
+        solutions; the two add up to 6), ``residual``, ``sextic``.
 
     Raises
     ------
     ValueError
-        For a wrong number of orientations, bad input, or orientations too special for
-        finitely many solutions (e.g. all turning about one axis).
+        For a wrong number of orientations, bad input, two orientations that are the same,
+        a negative or non-finite `imag_tol`, or orientations too special for finitely many
+        solutions (e.g. all turning about one axis).
 
     Notes
     -----
@@ -344,13 +403,17 @@ def burmester(R, *, imag_tol=1e-6):
     of degree 8. Near a double root (two Burmester points about to merge) the accuracy
     drops to about sqrt(machine epsilon), before polishing. The planar counterpart has at
     most four solutions (`mech.planar.synthesis.burmester`); as the arcs shrink four spherical
-    solutions tend to the planar ones and the other two become complex. The accuracy falls
-    as the displacements shrink: the equations hold the turns of the orientations at full
-    size but their translations only at the size of the arcs, so the small residual means
-    less. For Example 2-15 carried to the sphere by `planar_orientations` at scale s, the
-    four-bar it gives reproduces the orientations to 2e-15 rad at s = 1e-3 (cranks of about
-    0.1 rad), 2e-13 at 1e-4, 1e-11 at 1e-5, 2e-9 at 1e-6 and 1e-6 at 1e-7; `guidance_fourbars`
-    with its default ``rtol=1e-9`` passes none below s = 1e-6.
+    solutions tend to the planar ones and the other two become complex. The equations hold
+    the turns of the orientations at full size but their translations only at the size of
+    the arcs, and the cosine form (4) keeps them only at the square of the arcs; the chord
+    form keeps the cranks accurate to rounding (relative to the arcs) down to arcs of about
+    1e-7 rad; there the sextic's roots have moved so far from their places (by 0.1 and
+    more) that for some sets no root leads to one of the real cranks, which is then lost
+    with its partner counted complex (an odd count). For Example 2-15 carried to the sphere
+    by `planar_orientations` at scale s, all four cranks are found from s = 1e-3 to 3e-8;
+    the best four-bar reproduces the orientations to 1e-15 rad at s = 1e-3, 2e-14 at 1e-4,
+    9e-13 at 1e-5, 6e-11 at 1e-6 and 2e-8 at 1e-7 (its analysis loses accuracy too), and
+    `guidance_fourbars` with its default ``rtol=1e-9`` passes none below s = 1e-6.
 
     Examples
     --------
@@ -401,16 +464,41 @@ def burmester(R, *, imag_tol=1e-6):
         coef = _deflate(coef, np.exp(2j * np.arctan2(s @ e2, s @ e1)))
     sextic = coef
     roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
-    dyads, n_complex, worst = [], 6 - roots.size, 0.0
+    found, n_complex = [], 6 - roots.size
     for x in roots:
-        if abs(abs(x) - 1.0) > imag_tol:
-            n_complex += 1
+        if not abs(abs(x) - 1.0) <= _DRIFT:
+            n_complex += 1              # its projection is farther than _DRIFT: no need to polish
             continue
-        w = _common_point(Ma, Mb, Pa, e1, e2, x)
-        u = _null(np.stack([Kj @ w for Kj in K]))
-        u, w = _polish(K, u, w)
+        # every root is tried on the unit circle (x / |x|: a real great circle through Pa);
+        # the crank it gives, polished, must meet the five orientations (verification
+        # decides, not the distance of x from the circle)
+        w = _common_point(Ma, Mb, Pa, e1, e2, x / abs(x) if abs(x) > 0 else 1.0)
+        u0 = _null(np.stack([Kj @ w for Kj in K]))
+        u0 = u0 if u0 @ w >= 0.0 else -u0
+        u, w1 = _polish(K, u0, w)
+        u = u if u @ w1 >= 0.0 else -u
+        # the chord form is the better one near the planar limit, where the cosine form may
+        # also wander from the start: keep whichever of the three meets the task best
+        error, u, w, z = min(((_dyad_error(R, u_, w_), u_, w_, R[0].T @ w_) for u_, w_ in
+                              ((u, w1), _polish_chords(K * sizes[:, None, None], u, w1),
+                               _polish_chords(K * sizes[:, None, None], u0, w))), key=lambda t: t[0])
+        s = w - (w @ Pa) * Pa
+        drift = abs(x - np.exp(2j * np.arctan2(s @ e2, s @ e1)))      # the polished crank's root
+        if error <= imag_tol and arc_between(u, w) > 0.0 and drift <= _DRIFT:
+            found.append((u, w, z, error, drift))
+        else:
+            n_complex += 1
+    # one crank reached from several roots is listed once at most (`mech._task.single_roots`)
+    # (two cranks are one when they, or one and the other's antipode, differ by 1e-6 of their
+    # arcs: near the planar limit all of them lie within a small cap, and only their own size
+    # measures them)
+    keep = single_roots([f[:2] for f in found], [f[4] for f in found],
+                        lambda a, b: min(np.linalg.norm(a[0] - k * b[0]) + np.linalg.norm(a[1] - k * b[1])
+                                         for k in (1.0, -1.0)) <= 1e-6 * (arc_between(*a) + arc_between(*b)))
+    n_complex += len(found) - len(keep)
+    dyads, worst = [], 0.0
+    for u, w, z, error, _ in (found[k] for k in keep):
         worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
-        z = R[0].T @ w
         dyads.append(make_dyad(z, w, u, "R", R[0]))
     dyads.sort(key=lambda k: float(k.arc))
     return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa)
@@ -439,7 +527,7 @@ def _common_point(Ma, Mb, P, e1, e2, x):
     return w / np.linalg.norm(w)
 
 
-def slider_dyads(R, *, imag_tol=1e-6):
+def slider_dyads(R, *, imag_tol=1e-7):
     """Every spherical slider through four orientations (§3.5): up to six slider points.
 
     A slider point's four positions lie on one great circle, so it lies on the slider-point
@@ -454,7 +542,9 @@ def slider_dyads(R, *, imag_tol=1e-6):
     R : array_like, shape (4, 3, 3)
         Orientations.
     imag_tol : float, optional
-        A root x of the sextic counts as real when ``abs(abs(x) - 1)`` is at most this.
+        A root x of the sextic is real when, moved onto the unit circle and polished, it
+        gives a slider whose four positions lie on its guide to this times the largest
+        distance the point moves (verified, as in `burmester`); at least 0.
 
     Returns
     -------
@@ -465,7 +555,8 @@ def slider_dyads(R, *, imag_tol=1e-6):
     Raises
     ------
     ValueError
-        For a wrong number of orientations, bad input, or orientations 1 and 2 equal.
+        For a wrong number of orientations, bad input, two orientations the same, or a
+        negative or non-finite `imag_tol`.
 
     Notes
     -----
@@ -497,15 +588,28 @@ def slider_dyads(R, *, imag_tol=1e-6):
                          "slider cubics share a whole curve")
     sextic = (coef / top)[1:8]                     # the roots x = 0 and infinity are the complex axes of D_21
     roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
+    D = np.stack([np.eye(3)] + [np.eye(3) + Kj for Kj in K])
     found = []
     for x in roots:
-        if abs(abs(x) - 1.0) > imag_tol:
+        if not abs(abs(x) - 1.0) <= _DRIFT:
             continue
-        w = _common_point(Ma, Mb, P, e1, e2, x)
+        # as in `burmester`: the root moved onto the unit circle, polished, and verified
+        w = _common_point(Ma, Mb, P, e1, e2, x / abs(x) if abs(x) > 0 else 1.0)
         rows = np.stack([w, w + K[0] @ w, w + K[1] @ w, w + K[2] @ w])
         n = _null(rows)
         # polish: w on the guide at all four orientations (Newton on n^T D_j w = 0, |n| = |w| = 1)
-        D = np.stack([np.eye(3)] + [np.eye(3) + Kj for Kj in K])
         n, w = _polish(D, n, w)
-        found.append(make_dyad(R[0].T @ w, w, n, "R", R[0]))
-    return tuple(found)
+        W = D @ w
+        moved = max(float(np.max(np.linalg.norm(W - W[k], axis=1))) for k in range(4))
+        error = float(np.max(np.abs(W @ n))) / moved if moved > 0 and np.all(np.isfinite(W @ n)) else np.inf
+        t = w - (w @ P) * P
+        drift = abs(x - np.exp(2j * np.arctan2(t @ e2, t @ e1)))
+        if error <= imag_tol and drift <= _DRIFT:
+            found.append((n, w, moved, drift))
+    keep = single_roots([f[:3] for f in found], [f[3] for f in found],
+                        lambda a, b: min(np.linalg.norm(a[1] - k * b[1]) for k in (1.0, -1.0))
+                        <= 1e-6 * (a[2] + b[2]))
+    dyads = []
+    for n, w, _, _ in (found[k] for k in keep):
+        dyads.append(make_dyad(R[0].T @ w, w, n, "R", R[0]))
+    return tuple(dyads)

@@ -287,7 +287,7 @@ def optimal_guidance(R, start=None, *, objective="orientation", theta_input=None
     >>> fit.design.in_order, fit.design.pose_error < 0.05
     (True, True)
     """
-    R = orientation_set("R", R)
+    R = orientation_set("R", R, task=True)
     n = R.shape[0]
     if n < 5:
         raise ValueError(f"Expected at least five orientations in `R`, got {n}")

@@ -11,6 +11,7 @@ to the position of the same body point at orientation j.
 import numpy as np
 
 from mech._generated import spherical_guidance as _gen
+from mech._task import distinct_orientations
 from mech._validate import _show, finite_array
 from mech.spherical._coordinates import _vectors
 
@@ -18,8 +19,12 @@ __all__ = ["relative_rotation", "rotation_pole", "pole_triangle", "crank_residua
            "planar_orientations"]
 
 
-def orientation_set(name, value, counts=None, tol=1e-9):
-    """Check a set of orientations: finite proper rotations of shape (n, 3, 3), n in `counts`."""
+def orientation_set(name, value, counts=None, tol=1e-9, *, task=None):
+    """Check a set of orientations: finite proper rotations of shape (n, 3, 3), n in `counts`.
+
+    With `task` (the default when `counts` is given: a design task) no two orientations
+    may be the same (`mech._task.distinct_orientations`).
+    """
     R = finite_array(name, value)
     shape = R.shape
     if R.ndim == 2:
@@ -39,6 +44,8 @@ def orientation_set(name, value, counts=None, tol=1e-9):
         k = int(np.flatnonzero(bad)[0])
         raise ValueError(f"Expected `{name}` of proper rotations (R.T @ R = I, det R = +1), got "
                          f"{np.array2string(R[k], precision=6)} at index {k}")
+    if task or (task is None and counts is not None):
+        distinct_orientations(R, name)
     return R
 
 
@@ -349,7 +356,7 @@ def planar_orientations(theta, d, scale):
     from mech._validate import positive_length
     from mech.planar.synthesis._displacement import pose_set
 
-    theta, d = pose_set(theta, d, range(1, 10**6))
+    theta, d = pose_set(theta, d, range(1, 10**6), task=False)
     scale = positive_length("scale", scale)
     arc = scale * np.abs(d)
     if np.any(~np.isfinite(arc)):

@@ -209,7 +209,7 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     >>> best.passes, bool(best.pose_error < 0.01)
     (True, True)
     """
-    R = orientation_set("R", R)
+    R = orientation_set("R", R, task=True)
     n = R.shape[0]
     if n < 5:
         raise ValueError(f"Expected at least 5 orientations in `R`, got {n}")

@@ -241,7 +241,7 @@ def guidance_stephenson3(R, theta, crank_pivot, *, subset=None, rtol=1e-9):
     >>> designs[0].passes, designs[0].pose_error < 1e-9
     (True, True)
     """
-    R = orientation_set("R", R)
+    R = orientation_set("R", R, task=True)
     n = R.shape[0]
     if n < 5:
         raise ValueError(f"Expected at least 5 orientations in `R`, got {n}")

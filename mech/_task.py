@@ -1,0 +1,207 @@
+"""The package's one task layer: checks that a design task (what a synthesis function is asked
+to meet) is a task at all, before any equation is built from it.
+
+`mech._validate` checks each argument on its own (type, shape, finite values). A design
+task can pass all of those checks and still be no task: two of its poses may be the same
+pose (equal, or one whole turn apart with the same translation), all its data may
+coincide, or a point the design needs may be at infinity. Such a task makes the design
+equations dependent, and a solver would otherwise fail deep inside (an SVD that does not
+converge), or quietly return a design for fewer poses than were given.
+
+Every check here compares the data with the task's own size (the spread of its
+translations or points; the turn of its orientations), never with a fixed length, so a
+task scaled by any power of ten from 1e-200 to 1e200 is accepted or refused alike. A
+refusal is a ``ValueError`` naming the argument and the offending entries, counted from 1
+as the textbooks count poses: "poses 1 and 5 of `theta`/`d` are the same pose".
+
+This is an internal shared module: the synthesis functions of `mech.planar.synthesis` and
+`mech.spherical` call it; it is not part of the public interface.
+"""
+
+import numpy as np
+
+from mech._validate import _show, nonnegative_number
+
+__all__ = ["SAME", "distinct_poses", "distinct_orientations", "distinct_points", "tolerance", "single_roots",
+           "planar_dyad_error", "spherical_dyad_error"]
+
+# Two entries of a task closer than this, relative to the task's size, are one entry. It is
+# far above rounding (a pose and the same pose plus a whole turn differ by about 1e-15 of
+# the angle) and far below any difference a designer means.
+SAME = 1e-12
+
+
+def tolerance(name, value):
+    """A tolerance argument: a finite float >= 0, refused by name otherwise."""
+    return nonnegative_number(name, value)
+
+
+def _wrapped(turn):
+    return turn - 2.0 * np.pi * np.round(turn / (2.0 * np.pi))
+
+
+def _pair_text(i, j):
+    return f"{i + 1} and {j + 1}"
+
+
+def distinct_poses(theta, d, names=("theta", "d")):
+    """Refuse a planar pose set in which two poses are the same pose.
+
+    Poses ``(theta_i, d_i)`` and ``(theta_j, d_j)`` are the same when their relative turn,
+    less its nearest whole number of turns, is within `SAME` of the larger angle (at least
+    one turn) and their translations differ by at most `SAME` times the spread of all the
+    translations. A set whose translations all coincide and whose angles all coincide (the
+    all-zero set, for one) is refused by its first two poses.
+
+    Parameters
+    ----------
+    theta : ndarray, shape (n,)
+        Pose angles (already checked by `mech._validate`).
+    d : ndarray of complex, shape (n,)
+        Pose translations.
+    names : tuple of str
+        The names of the two arguments, for the message.
+
+    Raises
+    ------
+    ValueError
+        "poses i and j of `theta`/`d` are the same pose", with their values.
+    """
+    n = theta.size
+    if n < 2:
+        return
+    centre = d.mean() if np.all(np.isfinite(d.mean())) else d[0]
+    spread = float(np.max(np.abs(d - centre)))
+    for i in range(n - 1):
+        for j in range(i + 1, n):
+            angle_scale = max(2.0 * np.pi, abs(float(theta[i])), abs(float(theta[j])))
+            turn = abs(float(_wrapped(theta[j] - theta[i])))
+            moved = abs(complex(d[j] - d[i]))
+            if turn <= SAME * angle_scale and moved <= SAME * spread:
+                whole = "" if theta[i] == theta[j] else " (a whole number of turns apart)"
+                raise ValueError(
+                    f"Expected distinct poses in `{names[0]}`/`{names[1]}`, got poses {_pair_text(i, j)} "
+                    f"the same pose{whole}: {names[0]} = {float(theta[i])!r} and {float(theta[j])!r}, "
+                    f"{names[1]} = {complex(d[i])!r} and {complex(d[j])!r}")
+
+
+def _rotation_gap(Ri, Rj):
+    """The angle of the relative rotation of two orientations, from their difference."""
+    chord = np.linalg.norm(Ri - Rj) / (2.0 * np.sqrt(2.0))        # sin(angle / 2)
+    return 2.0 * np.arcsin(min(1.0, chord))
+
+
+def distinct_orientations(R, name="R"):
+    """Refuse a set of orientations in which two are the same orientation.
+
+    Orientations are compared by the angle of their relative rotation; two are the same
+    when it is at most `SAME` times the largest such angle in the set (an exact repeat, or
+    one rounded from the other), or when every orientation in the set is equal.
+
+    Raises
+    ------
+    ValueError
+        "orientations i and j of `R` are the same orientation", naming their angle.
+    """
+    n = R.shape[0]
+    if n < 2:
+        return
+    gaps = np.zeros((n, n))
+    for i in range(n - 1):
+        for j in range(i + 1, n):
+            gaps[i, j] = _rotation_gap(R[i], R[j])
+    size = float(np.max(gaps))
+    for i in range(n - 1):
+        for j in range(i + 1, n):
+            if gaps[i, j] <= SAME * size:
+                raise ValueError(
+                    f"Expected distinct orientations in `{name}`, got orientations {_pair_text(i, j)} the same "
+                    f"orientation (relative turn {float(gaps[i, j])!r} rad, largest turn in the set {size!r} rad)")
+
+
+def distinct_points(name, points, what="points"):
+    """Refuse planar points (complex, shape (n,)) or axes (shape (n, 3)) in which two coincide.
+
+    Two entries coincide when they are at most `SAME` times the spread of the set apart;
+    a set whose entries all coincide is refused by its first two.
+    """
+    P = np.asarray(points)
+    flat = P.reshape(P.shape[0], -1) if P.ndim > 1 else P[:, None]
+    n = flat.shape[0]
+    if n < 2:
+        return
+    centre = flat.mean(axis=0) if np.all(np.isfinite(flat.mean(axis=0))) else flat[0]
+    spread = float(np.max(np.linalg.norm(flat - centre, axis=1)))
+    for i in range(n - 1):
+        gap = np.linalg.norm(flat[i + 1:] - flat[i], axis=1)
+        hit = np.flatnonzero(gap <= SAME * spread)
+        if hit.size:
+            j = i + 1 + int(hit[0])
+            raise ValueError(f"Expected distinct {what} in `{name}`, got entries {_pair_text(i, j)} equal: "
+                             f"{_show(P[i])} and {_show(P[j])}")
+
+
+def planar_dyad_error(theta, d, z, A):
+    """How far a planar crank (circle point `z`, centre point `A`) misses its poses.
+
+    The largest difference of the crank's radii ``|exp(1j*theta_j)*z + d_j - A|`` over the
+    poses, divided by the spread of the translations (the task's size), so a crank that
+    meets the task to rounding gives about 1e-15 at any unit. Computed on the data moved
+    to their centroid and scaled by their spread, so nothing overflows.
+    """
+    centre = d.mean()
+    size = float(np.max(np.abs(d - centre)))
+    size = size if size > 0 else max(abs(complex(z)), abs(complex(A - centre)), np.finfo(float).tiny)
+    with np.errstate(over="ignore", invalid="ignore"):
+        Z = np.exp(1j * theta) * (z / size) + (d - centre) / size
+        radii = np.abs(Z - (A - centre) / size)
+        err = float(np.max(radii) - np.min(radii))
+    return err if np.isfinite(err) else np.inf
+
+
+def spherical_dyad_error(R, z, u):
+    """How far a spherical crank (body axis `z`, fixed axis `u`) misses its orientations.
+
+    The largest difference of the crank's arcs (atan2 form) over the orientations,
+    divided by the task's size: the largest arc that the body point moves between two
+    orientations, so that near the planar limit, where the translations are small, the
+    error is still measured against them.
+    """
+    W = np.einsum("nij,j->ni", R, z)
+    arcs = np.arctan2(np.linalg.norm(np.cross(W, u), axis=1), W @ u)
+    moved = max(float(np.max(np.linalg.norm(W - W[k], axis=1))) for k in range(len(W)))
+    size = moved if moved > 0 else 1.0
+    return float(np.max(arcs) - np.min(arcs)) / size
+
+
+def single_roots(points, drifts, close):
+    """Which polished roots of a design equation are distinct real solutions.
+
+    Each root of a solver's polynomial is moved onto the real line and polished by real
+    Newton steps; ``points[k]`` is where root k ends and ``drifts[k]`` how far it moved.
+    Several roots can end at one point: the two roots of a complex pair (their real parts,
+    or their projections onto the unit circle, are equal) or a root far from the real
+    line that Newton's method carries to a real solution some other root already found.
+    Within such a group the root that moved least is the real one when it moved at most
+    half as far as any other; otherwise (a tie, as for a complex pair, whose two roots move
+    equally far, or by a factor of at most 1.5 for the pair ``x``, ``1/conj(x)`` of a
+    spherical solver within 0.5 of the unit circle; or a double root) none is. ``close(p, q)`` says whether two points are one.
+
+    Returns
+    -------
+    list of int
+        The indices kept, in order.
+    """
+    n = len(points)
+    group = list(range(n))
+    for i in range(n):
+        for j in range(i):
+            if close(points[i], points[j]):
+                old, new = group[i], group[j]
+                group = [new if g == old else g for g in group]
+    kept = []
+    for g in sorted(set(group)):
+        members = sorted((k for k in range(n) if group[k] == g), key=lambda k: drifts[k])
+        if len(members) == 1 or 2.0 * drifts[members[0]] < drifts[members[1]]:
+            kept.append(members[0])
+    return sorted(kept)
