@@ -426,7 +426,9 @@ def static_forces(solution, forces=None, couples=None, *, rho=0.0, mu=0.0, tol=1
     -----
     Derivation: :ref:`deriv-statics`; book page :ref:`book-forces-static-forces`.
     Without friction the balancing effort equals the virtual-work one,
-    M_b omega + sum(F . v) + sum(M omega) = 0.
+    M_b omega + sum(F . v) + sum(M omega) = 0. With friction the result's `self_locking`
+    flag marks poses that no finite effort can drive: the book finds the boundary of
+    Example 2-14 (the double slider) with it and compares it with the closed form.
 
     Examples
     --------

@@ -29,6 +29,7 @@ from mech.spherical.guidance._optimal import (
 from mech.spherical.guidance._sixbar import SphericalGuidanceSixBar, guidance_watt2, sixbar_orientations
 from mech.spherical.guidance._sixbar_optimal import SphericalOptimalSixBar, optimal_guidance_watt2
 from mech.spherical.guidance._sixbar_optimal_exact import optimal_guidance_sixbar
+from mech.spherical.guidance._stephenson3_optimal import SphericalOptimalStephenson3, optimal_guidance_stephenson3
 from mech.spherical.guidance._stephenson3 import SphericalGuidanceStephenson3, guidance_stephenson3
 from mech.spherical.guidance._sixbar_exact import (
     SphericalExactSixBar, guidance_stephenson1, guidance_stephenson2, guidance_watt1)
@@ -48,7 +49,7 @@ __all__ = [
     "SphericalGuidanceFourBar", "guidance_fourbars", "guidance_slider_crank",
     "SphericalGuidanceMotion", "SphericalOptimalGuidance", "guidance_motion", "optimal_guidance",
     "SphericalGuidanceSixBar", "guidance_watt2", "sixbar_orientations", "SphericalOptimalSixBar", "optimal_guidance_watt2",
-    "optimal_guidance_sixbar",
+    "optimal_guidance_sixbar", "SphericalOptimalStephenson3", "optimal_guidance_stephenson3",
     "SphericalGuidanceStephenson3", "guidance_stephenson3",
     "SphericalExactSixBar", "guidance_stephenson1", "guidance_stephenson2", "guidance_watt1",
 ]
