@@ -415,3 +415,36 @@ def test_grashof_transmission_and_limit_positions_agree_with_python():
         assert np.all(np.abs(ref[ok] - got[ok]) <= 1e-13 * (1 + np.abs(ref[ok]))), k
         ref_min = min_transmission_angle(*k)
         assert abs(ref_min[0] - gmin[0]) <= 1e-13 and ref_min[1] == pytest.approx(gmin[1], rel=1e-13, abs=1e-13), k
+
+
+def test_centrodes_layer_agrees_with_python():
+    from mech.planar import FourBar
+    from mech.planar.coupler._centrodes import coupler_centrodes
+
+    rng = np.random.default_rng(19)
+    cases = []
+    for a, b, c, d in _linkages(rng, 40):
+        scale = float(rng.choice([1e-150, 1.0, 1e150]))
+        theta = [float(t) for t in rng.uniform(-4, 4, 60)]
+        cases.append({"lengths": [a * scale, b * scale, c * scale, d * scale], "branch": int(rng.choice((-1, 1))),
+                      "theta": theta})
+    script = (f'import {{ FourBar, couplerCentrodes }} from "{LAYER.as_uri()}";\n'
+              f"const cases = {json.dumps(cases)};\n"
+              "const fix = (v) => (typeof v === 'number' && !Number.isFinite(v) ? String(v) : v);\n"
+              "const out = cases.map((k) => { const r = couplerCentrodes(new FourBar(...k.lengths, {branch: k.branch}), k.theta);\n"
+              "  return {valid: r.valid, inf: r.atInfinity, fx: Array.from(r.fixed.x, fix), fy: Array.from(r.fixed.y, fix),\n"
+              "          mx: Array.from(r.moving.x, fix), my: Array.from(r.moving.y, fix)}; });\n"
+              "process.stdout.write(JSON.stringify(out));")
+    for case, js in zip(cases, _node_json(script)):
+        cen = coupler_centrodes(FourBar(*case["lengths"], branch=case["branch"]), case["theta"])
+        where = f"FourBar{tuple(case['lengths'])}"
+        assert list(cen.valid) == js["valid"] and list(cen.at_infinity) == js["inf"], where
+        size = max(case["lengths"])
+        for want, got in ((cen.fixed, (js["fx"], js["fy"])), (cen.moving, (js["mx"], js["my"]))):
+            got = np.array(got[0], dtype=float) + 1j * np.array(got[1], dtype=float)
+            assert np.array_equal(np.isnan(want), np.isnan(got)), where
+            ok = ~np.isnan(want)
+            # a pole far away (crank nearly parallel to the rocker) at distance R moves by about
+            # eps R^2 / size when the inputs are rounded: its conditioning bound
+            far = np.abs(want[ok]) / size
+            assert np.all(np.abs(want[ok] - got[ok]) <= 1e-13 * size * (1 + far + far**2)), where

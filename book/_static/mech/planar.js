@@ -16,6 +16,7 @@ import * as fb from "../kernels/fourbar_position.js";
 import * as gr from "../kernels/grashof.js";
 import * as ta from "../kernels/transmission_angle.js";
 import * as lp from "../kernels/fourbar_limit_positions.js";
+import * as ic from "../kernels/instant_centres.js";
 import * as sc from "../kernels/slider_crank.js";
 import {
   DEAD_POINT_RTOL, LinkageInputError, finiteArray, finiteNumber, frexpExponent, fsum, keepPromise, ldexp,
@@ -268,6 +269,40 @@ export class FourBar {
   transmissionAngle(theta) {
     return transmissionAngle(this.a, this.b, this.c, this.d, theta);
   }
+}
+
+// --- instant centres ---------------------------------------------------------------------
+
+/** |W| below this times |(X, Y)| / d: the coupler pole is at infinity (crank parallel to rocker). */
+const INFINITE_RTOL = 1e-12;
+
+/**
+ * The coupler's absolute instant centre P24 = AB x DC over the crank angles `theta`, as
+ * mech.planar coupler_centrodes: `fixed` (the fixed centrode, in the frame) and `moving`
+ * (in the coupler's frame), each {x, y} with NaN at infinity or where the linkage cannot be
+ * assembled, and the masks `atInfinity` and `valid`.
+ */
+export function couplerCentrodes(fourbar, theta) {
+  if (!(fourbar instanceof FourBar)) throw new LinkageInputError(`Expected \`fourbar\` to be a FourBar, got ${show(fourbar)}`);
+  const pose = fourbar.solve(theta);
+  const e = fourbar.exponent;
+  // the pole's homogeneous coordinates are cubic in the lengths: on the scaled lengths
+  const ds = ldexp(fourbar.d, -e), bs = ldexp(fourbar.b, -e);
+  const n = pose.theta.length;
+  const out = { theta: pose.theta, valid: pose.valid, atInfinity: new Array(n),
+    fixed: { x: new Float64Array(n), y: new Float64Array(n) }, moving: { x: new Float64Array(n), y: new Float64Array(n) } };
+  for (let i = 0; i < n; i++) {
+    const [X, Y, W, U, V] = ic.fourbar_coupler_pole(ldexp(pose.Bx[i], -e), ldexp(pose.By[i], -e),
+      ldexp(pose.Cx[i], -e), ldexp(pose.Cy[i], -e), ds, bs);
+    const atInf = pose.valid[i] && Math.abs(W) <= (INFINITE_RTOL * Math.hypot(X, Y)) / ds;
+    const finite = pose.valid[i] && !atInf;
+    out.atInfinity[i] = atInf;
+    out.fixed.x[i] = finite ? ldexp(X / W, e) : NaN;
+    out.fixed.y[i] = finite ? ldexp(Y / W, e) : NaN;
+    out.moving.x[i] = finite ? ldexp(U / W, e) : NaN;
+    out.moving.y[i] = finite ? ldexp(V / W, e) : NaN;
+  }
+  return out;
 }
 
 // --- Grashof classification --------------------------------------------------------------
