@@ -448,3 +448,40 @@ def test_centrodes_layer_agrees_with_python():
             # eps R^2 / size when the inputs are rounded: its conditioning bound
             far = np.abs(want[ok]) / size
             assert np.all(np.abs(want[ok] - got[ok]) <= 1e-13 * size * (1 + far + far**2)), where
+
+
+def test_guidance_layer_agrees_with_python():
+    from mech.planar.synthesis import dyad_for_centre_point, dyad_for_circle_point, pole
+
+    rng = np.random.default_rng(23)
+    cases = []
+    for _ in range(300):
+        n = int(rng.choice((2, 3)))
+        scale = float(rng.choice([1e-100, 1.0, 1e100]))
+        theta = [float(t) for t in rng.uniform(-3, 3, n)]
+        d = [[float(x) * scale for x in rng.uniform(-1, 1, 2)] for _ in range(n)]
+        z = [float(x) * scale for x in rng.uniform(-1, 1, 2)]
+        cases.append({"theta": theta, "d": d, "z": z, "along": float(rng.uniform(-1, 1)), "scale": scale})
+    script = (f'import {{ pole, dyadForCirclePoint, dyadForCentrePoint }} from "{(LAYER.parent / "guidance.js").as_uri()}";\n'
+              f"const cases = {json.dumps(cases)};\n"
+              "const run = (f) => { try { return f(); } catch (e) { return e.message; } };\n"
+              "const out = cases.map((k) => [run(() => pole(k.theta[0], k.d[0], k.theta[1], k.d[1])),\n"
+              "  run(() => dyadForCirclePoint(k.theta, k.d, k.z, {along: k.along})),\n"
+              "  run(() => dyadForCentrePoint(k.theta, k.d, k.z, {along: k.along}))]);\n"
+              "process.stdout.write(JSON.stringify(out));")
+    for case, (q, circle, centre) in zip(cases, _node_json(script)):
+        theta = np.array(case["theta"])
+        d = np.array([x + 1j * y for x, y in case["d"]])
+        z = case["z"][0] + 1j * case["z"][1]
+        size = case["scale"]
+
+        def close(want, got):
+            far = abs(want) / size           # a far point (near a translation, near collinear) is ill-conditioned
+            return abs(want - complex(*got)) <= 1e-13 * size * (1 + far + far**2)
+
+        want_q = pole(theta[0], d[0], theta[1], d[1])
+        assert close(want_q, q), case
+        for fn, got in ((dyad_for_circle_point, circle), (dyad_for_centre_point, centre)):
+            want = fn(theta, d, z, along=case["along"])
+            assert close(want.centre_point, got["centrePoint"]) and close(want.circle_point, got["circlePoint"]), case
+            assert abs(want.length - got["length"]) <= 1e-13 * size * (1 + (want.length / size) ** 2), case
