@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: setup browser-deps book generate check-generated test test-fast bench clean
+.PHONY: setup browser-deps node-deps book generate check-generated test test-fast bench clean
 
 $(STAMP): requirements.txt pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -26,11 +26,24 @@ book: $(STAMP)
 	$(BIN)/python book/_check_offline.py book/_build/html
 
 ## Regenerate mech/_generated from the derivation notebooks.
-generate: $(STAMP)
+## (and book/_static/kernels, the JavaScript backend, checked under Node when installed)
+generate: $(STAMP) node-deps
 	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations
 
-check-generated: $(STAMP)
+check-generated: $(STAMP) node-deps
 	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check
+
+## Debian's nodejs: runs the generated JavaScript kernels in tests/generated/test_js_kernels.py
+## and in the generator's numeric check; installed with apt-get only when missing.
+node-deps:
+	@if command -v node >/dev/null; then :; \
+	elif [ "$$(id -u)" = 0 ]; then \
+	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y nodejs; \
+	elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then \
+	  sudo apt-get update && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y nodejs; \
+	else \
+	  echo "node-deps: node is missing and apt-get needs root; the JavaScript kernel test will skip"; \
+	fi
 
 ## System packages of the browser test (tests/browser): Debian's chromium, a CJK font and
 ## an OpenType math font for the MathML (Latin Modern Math), installed with apt-get only
@@ -50,10 +63,10 @@ browser-deps:
 	fi
 
 ## The test suite (doctests included), the browser test of the built book among them.
-test: $(STAMP) browser-deps
+test: $(STAMP) browser-deps node-deps
 	$(BIN)/python -m pytest
 
-test-fast: $(STAMP)
+test-fast: $(STAMP) node-deps
 	$(BIN)/python -m pytest -m "not slow"
 
 ## Benchmarks need pylinkage and numba (not in requirements.txt); results go to benchmarks/results.

@@ -1,4 +1,5 @@
-"""Regenerate every module of ``mech/_generated`` from the derivation notebooks.
+"""Regenerate every module of ``mech/_generated`` (and its JavaScript twin in
+``book/_static/kernels``) from the derivation notebooks.
 
     python -m derivations            # run every notebook; rewrite modules whose inputs changed
     python -m derivations --check    # run them without writing; fail if any module is stale
@@ -6,6 +7,8 @@
 
 Each notebook's code cells are run in order in a fresh namespace, without a Jupyter kernel;
 the notebook's own asserts (its proofs) and its final ``_codegen.write`` call do the work.
+A full run takes about 20 minutes on a quiet two-core machine: name the notebooks you
+changed to regenerate only those.
 """
 
 import argparse

@@ -1,14 +1,23 @@
-"""The project's code generator: SymPy expressions in, a plain NumPy module out.
+"""The project's code generator: SymPy expressions in, NumPy, numba and JavaScript out.
 
-Three steps; NumPy source with common subexpressions eliminated, and for functions that
-declare per-point (``vector``) arguments two more backends of the same expressions
-(``derivations/_kernels.py``): a NumPy kernel writing into caller-owned buffers and a numba
-fused loop in ``mech/_generated/<stem>_numba.py``:
+One generator, three backends (``derivations/_backends.py``) that share each function's
+common-subexpression elimination and differ only in their printer and template:
 
-- ``render(...)`` returns the module text;
-- ``write(...)`` rewrites ``mech/_generated/<stem>.py`` only when the input hash changed,
-  then checks the module numerically against mpmath;
-- ``check_fresh(...)`` checks the committed module without writing it.
+- NumPy, ``mech/_generated/<stem>.py``: every function, broadcasting like a ufunc, and for
+  functions that declare per-point (``vector``) arguments a kernel writing into buffers the
+  caller owns (``derivations/_kernels.py``);
+- numba, ``mech/_generated/<stem>_numba.py``: fused loops of the ``vector`` functions;
+- JavaScript, ``book/_static/kernels/<stem>.js``: an ES module of scalar functions for
+  the book's pages.
+
+Square roots of sums of squares are printed as ``hypot`` in every backend
+(``derivations/_printers.py``), so no intermediate square overflows.
+
+- ``render(...)`` returns the NumPy module's text;
+- ``write(...)`` rewrites each backend's file only when its hash changed and its text
+  differs, then checks the modules numerically against mpmath (the JavaScript one under
+  Node when ``node`` is on the PATH);
+- ``check_fresh(...)`` checks the committed files without writing them.
 
 A derivation notebook ends with one ``write`` call. With the environment variable
 ``MECH_CODEGEN=check`` (set by ``python -m derivations --check`` and by the freshness
@@ -23,22 +32,21 @@ import importlib.util
 import os
 import re
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import mpmath
 import numpy as np
 import sympy as sm
-from sympy.printing.numpy import NumPyPrinter
 
-from derivations import _kernels
+from derivations import _backends, _kernels, _node
 
-__all__ = ["Function", "render", "write", "check_fresh", "input_hash", "GENERATED_DIR"]
+__all__ = ["Function", "render", "write", "check_fresh", "input_hash", "GENERATED_DIR", "JS_DIR"]
 
-#: Bump when the template changes, so every module is regenerated.
-GENERATOR_VERSION = "1"
-#: Bump when the kernel templates change (only modules that declare `vector` arguments).
-KERNEL_VERSION = "6"
-GENERATED_DIR = Path(__file__).resolve().parent.parent / "mech" / "_generated"
+#: Bump when the template or the printer changes, so every module is regenerated
+#: (2: square roots of sums of squares printed as hypot).
+GENERATOR_VERSION = "2"
+KERNEL_VERSION = _kernels.KERNEL_VERSION
+GENERATED_DIR = _backends.GENERATED_DIR
+JS_DIR = _backends.JS_DIR
 
 
 @dataclass(frozen=True)
@@ -76,6 +84,9 @@ class Function:
         flag (default every output). Name fewer only where the derivation shows that, for
         finite scalar arguments, these are finite at a point only if every output is (a
         NaN or an infinity in any output reaches one of them): fewer additions per point.
+    equations : str, optional
+        The textbook equations this function implements (``"(2-11), (2-12)"``), cited in
+        its docstring; default the equations of the whole module (``write``'s argument).
     """
 
     name: str
@@ -86,6 +97,7 @@ class Function:
     vector: tuple = ()
     mask: str = None
     finite: tuple = None
+    equations: str = None
 
     def symbols(self):
         return [s for s, _ in self.args]
@@ -94,10 +106,12 @@ class Function:
         return [sm.sympify(e) for _, e, _ in self.outputs]
 
 
-def _canonical_text(functions, equations):
-    parts = [f"generator={GENERATOR_VERSION}", f"equations={equations}"]
+def _canonical_text(functions, equations, extra=""):
+    parts = [f"generator={GENERATOR_VERSION}", f"equations={equations}"] + ([extra] if extra else [])
     for f in functions:
         parts.append(f"def {f.name}(" + ",".join(sm.srepr(s) for s in f.symbols()) + ")")
+        if f.equations:
+            parts.append(f"equations {f.name}={f.equations}")
         if f.vector:
             # only modules with kernels carry the kernel template's version in their hash
             parts.append(f"kernels={KERNEL_VERSION} vector(" + ",".join(s.name for s in f.vector) + ")"
@@ -108,9 +122,10 @@ def _canonical_text(functions, equations):
     return "\n".join(parts)
 
 
-def input_hash(functions, equations=""):
-    """SHA-256 of the ``srepr`` of every argument and output expression."""
-    return "sha256:" + hashlib.sha256(_canonical_text(functions, equations).encode()).hexdigest()
+def input_hash(functions, equations="", extra=""):
+    """SHA-256 of the ``srepr`` of every argument and output expression (and ``extra``,
+    a backend's template version)."""
+    return "sha256:" + hashlib.sha256(_canonical_text(functions, equations, extra).encode()).hexdigest()
 
 
 def _validate(f):
@@ -128,118 +143,24 @@ def _validate(f):
             )
 
 
-def _print(expr):
-    return NumPyPrinter({"fully_qualified_modules": True}).doprint(expr).replace("numpy.", "np.")
-
-
-def _render_body(f, cse=True, common=None):
-    exprs = f.exprs()
-    lines = []
-    if common is not None:
-        replacements, reduced = common
-    elif cse:
-        symbols = sm.numbered_symbols("x")
-        replacements, reduced = sm.cse(exprs, symbols=symbols, order="none")
-    else:
-        replacements, reduced = [], exprs
-    for sym, sub in replacements:
-        lines.append(f"    {sym} = {_print(sub)}")
-    outs = [_print(e) for e in reduced]
-    if len(outs) == 1:
-        lines.append(f"    return {outs[0]}")
-    else:
-        lines.append("    return (")
-        lines.extend(f"        {o}," for o in outs)
-        lines.append("    )")
-    return lines
-
-
-def _render_doc(f, notebook, equations):
-    lines = [f'    """{f.summary}', "", f"    Generated from ``{notebook}``, equations {equations}.", ""]
-    lines += ["    Parameters", "    ----------"]
-    for sym, desc in f.args:
-        lines += [f"    {sym.name} : array_like", f"        {desc}"]
-    lines += ["", "    Returns", "    -------"]
-    for out_name, _, desc in f.outputs:
-        lines += [f"    {out_name} : ndarray", f"        {desc}"]
-    lines += ["", "    Arguments broadcast against each other like a NumPy ufunc.", '    """']
-    return lines
-
-
 def render(stem, notebook, equations, functions, *, cse=True):
     """Return the text of ``mech/_generated/<stem>.py`` for ``functions``."""
-    return _render_all(stem, notebook, equations, functions, cse=cse)[0]
-
-
-def _render_all(stem, notebook, equations, functions, *, cse=True):
-    """The NumPy module's text, and the numba module's text (None without kernels)."""
     for f in functions:
         _validate(f)
-    # kernels always work on the CSE'd expressions; the plain functions only with cse=True
-    # a complex output is two real outputs of the kernels, so their CSE is its own
-    plain = {f.name: _kernels.cse_of(f) for f in functions
-             if cse or (f.vector and not _kernels.has_complex(f))}
-    commons = {f.name: (plain[f.name] if cse else None) for f in functions}
-    kernels = [f for f in functions if f.vector]
-    kernel_cse = {f.name: (_kernels.cse_of(f, split=True) if _kernels.has_complex(f) else plain[f.name])
-                  for f in kernels}
-    names = [f.name for f in functions] + [f"{f.name}_into" for f in kernels]
-    out = [
-        f"# GENERATED by {notebook} — do not edit",
-        f"# Equations: {equations}",
-        f"# SymPy {sm.__version__}; regenerate with `python -m derivations`",
-        f'"""Generated NumPy functions for {notebook} ({equations})."""',
-        "",
-        "import numpy as np",
-        "",
-        f'INPUT_HASH = "{input_hash(functions, equations)}"',
-        "",
-        "__all__ = [" + ", ".join(repr(n) for n in names) + "]",
-    ]
-    rows = {}
-    for f in functions:
-        args = ", ".join(s.name for s in f.symbols())
-        out += ["", "", f"def {f.name}({args}):"]
-        out += _render_doc(f, notebook, equations)
-        out += _render_body(f, cse=cse, common=commons[f.name])
-        if f.vector:
-            lines, rows[f.name] = _kernels.numpy_kernel(f, *kernel_cse[f.name])
-            out += ["", ""] + lines
-    if kernels:
-        out += ["", "", "#: Rows of the ``work`` array each ``*_into`` kernel needs.",
-                "WORK_ROWS = {" + ", ".join(f"{k!r}: {v}" for k, v in rows.items()) + "}"]
-    numpy_text = "\n".join(out) + "\n"
-    if not kernels:
-        return numpy_text, None
-    nb = [
-        f"# GENERATED by {notebook} — do not edit",
-        f"# Equations: {equations}",
-        f"# SymPy {sm.__version__}; regenerate with `python -m derivations`",
-        f'"""Generated numba kernels (fused loops) for {notebook} ({equations}).',
-        "",
-        f"The same expressions as ``mech._generated.{stem}``; imported only by the numba backend.",
-        '"""',
-        "",
-        "import math",
-        "",
-        "import numba",
-        "",
-        f'INPUT_HASH = "{input_hash(functions, equations)}"',
-        "",
-        "__all__ = [" + ", ".join(repr(f"{f.name}{kind}") for f in kernels for kind in ("_kernel", "_fused_kernel")) + "]",
-        "",
-        "",
-        "@numba.njit(cache=True, nogil=True)",
-        "def _sign(x):",
-        "    if x > 0.0:",
-        "        return 1.0",
-        "    if x < 0.0:",
-        "        return -1.0",
-        "    return x  # 0.0, -0.0 or NaN, as numpy.sign",
-    ]
-    for f in kernels:
-        nb += ["", ""] + _kernels.numba_kernel(f, *kernel_cse[f.name])
-    return numpy_text, "\n".join(nb) + "\n"
+    rendering = _backends.Rendering(functions, cse=cse)
+    return _backends.NumPyBackend().render(stem, notebook, equations, rendering, input_hash(functions, equations))
+
+
+def backend_hash(backend, functions, equations=""):
+    """The hash a backend's file carries: of the functions it emits and its template."""
+    emitted = backend.emitted(functions)
+    extra = f"{type(backend).__name__}={backend.version}" if backend.version else ""
+    return input_hash(emitted, equations, extra) if emitted else None
+
+
+def backend_path(backend, stem):
+    """Where a backend's file of ``stem`` is (`GENERATED_DIR` or `JS_DIR`, read at call time)."""
+    return (JS_DIR if backend.folder == "js" else GENERATED_DIR) / f"{stem}{backend.suffix}"
 
 
 def _load(path, module_name):
@@ -267,35 +188,55 @@ def _kernel_outputs(call, f, values, samples):
     return joined
 
 
-def _numeric_check(module, functions, samples, rtol, numba_module=None):
+def _js_outputs(path, functions, values, samples):
+    """Each function of the JavaScript module at ``path`` on the sampled points, its
+    outputs put back together as the NumPy function returns them (complex from two parts)."""
+    calls = [(path, f.name, [np.broadcast_to(values[f.name][s], (samples,)) for s in f.symbols()],
+              len(_kernels.real_parts(f)[1])) for f in functions]
+    results = {}
+    for f, got in zip(functions, _node.evaluate(calls)):
+        joined = [np.zeros(samples, dtype=complex if _kernels.has_complex(f) else float) for _ in f.outputs]
+        for (k, part), o in zip(_kernels.real_parts(f)[1], got):
+            joined[k] = joined[k] + (1j * o if part == "imag" else o)
+        results[f.name] = joined
+    return results
+
+
+def _numeric_check(module, functions, samples, rtol, numba_module=None, js_path=None):
     """Compare every generated function (and its kernels) with mpmath at 50 digits."""
     rng = np.random.default_rng(20261121)
+    values = {}
+    for f in functions:
+        values[f.name] = {}
+        for s in f.symbols():
+            low, high = f.domain.get(s, (-2.0, 2.0))
+            values[f.name][s] = rng.uniform(low, high, samples)
+    js = _js_outputs(js_path, functions, values, samples) if js_path is not None else {}
     for f in functions:
         syms = f.symbols()
-        values = {}
-        for s in syms:
-            low, high = f.domain.get(s, (-2.0, 2.0))
-            values[s] = rng.uniform(low, high, samples)
-        got = getattr(module, f.name)(*(values[s] for s in syms))
+        points = values[f.name]
+        got = getattr(module, f.name)(*(points[s] for s in syms))
         candidates = {f.name: [got] if len(f.outputs) == 1 else list(got)}
+        if f.name in js:
+            candidates[f"{js_path.name}:{f.name}"] = js[f.name]
         if f.vector:
             into, rows = getattr(module, f"{f.name}_into"), module.WORK_ROWS[f.name]
             with np.errstate(all="ignore"):
                 candidates[f"{f.name}_into"] = _kernel_outputs(
-                    lambda args, outs: into(*args, outs, np.empty((rows, 1))), f, values, samples)
+                    lambda args, outs: into(*args, outs, np.empty((rows, 1))), f, points, samples)
             if numba_module is not None:
                 kernel = getattr(numba_module, f"{f.name}_kernel")
                 candidates[f"{f.name}_kernel"] = _kernel_outputs(
-                    lambda args, outs: kernel(*args, *outs), f, values, samples)
+                    lambda args, outs: kernel(*args, *outs), f, points, samples)
                 fused = getattr(numba_module, f"{f.name}_fused_kernel")
                 ones = (1.0,) * len(_kernels.real_parts(f)[1])
                 valid = (np.empty(1, dtype=bool),) if f.mask else ()
                 candidates[f"{f.name}_fused_kernel"] = _kernel_outputs(
-                    lambda args, outs: fused(*args, ones, *outs, *valid), f, values, samples)
+                    lambda args, outs: fused(*args, ones, *outs, *valid), f, points, samples)
         reference = sm.lambdify(syms, f.exprs(), modules="mpmath")
         with mpmath.workdps(50):
             for i in range(samples):
-                ref = reference(*(mpmath.mpf(float(values[s][i])) for s in syms))
+                ref = reference(*(mpmath.mpf(float(points[s][i])) for s in syms))
                 for label, outputs in candidates.items():
                     for (out_name, _, _), g, r in zip(f.outputs, outputs, ref):
                         g_i = complex(np.broadcast_to(g, (samples,))[i])
@@ -303,7 +244,7 @@ def _numeric_check(module, functions, samples, rtol, numba_module=None):
                         if not np.isfinite(r_i) and not np.isfinite(g_i):
                             continue
                         if abs(g_i - r_i) > rtol * max(1.0, abs(r_i)):
-                            point = {s.name: float(values[s][i]) for s in syms}
+                            point = {s.name: float(points[s][i]) for s in syms}
                             raise AssertionError(
                                 f"{label}.{out_name} disagrees with mpmath at {point}: "
                                 f"{g_i!r} vs {r_i!r}"
@@ -311,49 +252,62 @@ def _numeric_check(module, functions, samples, rtol, numba_module=None):
 
 
 def _hash_of(path):
-    committed = re.search(r'^INPUT_HASH = "([^"]+)"', path.read_text(), re.M) if path.exists() else None
+    text = path.read_text() if path.exists() else ""
+    committed = re.search(r'^(?:export const )?INPUT_HASH = "([^"]+)"', text, re.M)
     return committed.group(1) if committed else None
 
 
 def check_fresh(stem, notebook, equations, functions, *, samples=25, rtol=1e-11):
-    """Raise ``AssertionError`` unless the committed module matches these inputs.
+    """Raise ``AssertionError`` unless every backend's committed file matches these inputs.
 
     With kernels (a function declares ``vector`` arguments), the numba module must match
-    too; its kernels are checked numerically when numba is importable.
+    too; its kernels are checked numerically when numba is importable, and the
+    JavaScript module when Node is installed.
     """
     path = GENERATED_DIR / f"{stem}.py"
     if not path.exists():
         raise AssertionError(f"{path} is missing: run `python -m derivations`")
-    expected = input_hash(functions, equations)
-    if _hash_of(path) != expected:
-        raise AssertionError(f"{path.name} is stale (hash differs): run `python -m derivations`")
-    numba_module = None
-    if any(f.vector for f in functions):
-        numba_path = GENERATED_DIR / f"{stem}_numba.py"
-        if _hash_of(numba_path) != expected:
-            raise AssertionError(f"{numba_path.name} is missing or stale: run `python -m derivations`")
-        if importlib.util.find_spec("numba") is not None:
+    numba_module, js_path = None, None
+    for backend in _backends.BACKENDS:
+        expected = backend_hash(backend, functions, equations)
+        if expected is None:
+            continue
+        target = backend_path(backend, stem)
+        if _hash_of(target) != expected:
+            state = "missing" if not target.exists() else "stale (hash differs)"
+            if isinstance(backend, _backends.NumbaBackend):
+                state = "missing or stale"
+            raise AssertionError(f"{target.name} is {state}: run `python -m derivations`")
+        if isinstance(backend, _backends.NumbaBackend) and importlib.util.find_spec("numba") is not None:
             # under its package name: numba's cache records the module of `_sign`, which a
             # later solve must be able to import
-            numba_module = _load(numba_path, f"mech._generated.{stem}_numba")
-    _numeric_check(_load(path, f"_fresh_{stem}"), functions, samples, rtol, numba_module)
+            numba_module = _load(target, f"mech._generated.{stem}_numba")
+        if isinstance(backend, _backends.JSBackend) and _node.node() is not None:
+            js_path = target
+    _numeric_check(_load(path, f"_fresh_{stem}"), functions, samples, rtol, numba_module, js_path)
     return path
 
 
 def write(stem, notebook, equations, functions, *, samples=25, rtol=1e-11):
-    """Write ``mech/_generated/<stem>.py`` (and ``<stem>_numba.py`` for kernels) if its
-    inputs changed, then check it.
+    """Write each backend's file (``mech/_generated/<stem>.py``, ``<stem>_numba.py`` for
+    kernels, ``book/_static/kernels/<stem>.js``) whose hash changed, then check them.
 
-    Returns the path. With ``MECH_CODEGEN=check`` in the environment, nothing is written.
+    A file is written only when its text differs from what is there, so an unchanged
+    kernel keeps its file. Returns the path of the NumPy module. With
+    ``MECH_CODEGEN=check`` in the environment, nothing is written.
     """
-    path = GENERATED_DIR / f"{stem}.py"
+    for f in functions:
+        _validate(f)
     if os.environ.get("MECH_CODEGEN") != "check":
-        expected = input_hash(functions, equations)
-        numba_path = GENERATED_DIR / f"{stem}_numba.py"
-        kernels = any(f.vector for f in functions)
-        if _hash_of(path) != expected or (kernels and _hash_of(numba_path) != expected):
-            numpy_text, numba_text = _render_all(stem, notebook, equations, functions)
-            path.write_text(numpy_text)
-            if numba_text is not None:
-                numba_path.write_text(numba_text)
+        rendering = None
+        for backend in _backends.BACKENDS:
+            expected = backend_hash(backend, functions, equations)
+            target = backend_path(backend, stem)
+            if expected is None or _hash_of(target) == expected:
+                continue
+            rendering = rendering or _backends.Rendering(functions)
+            text = backend.render(stem, notebook, equations, rendering, expected)
+            if not target.exists() or target.read_text() != text:
+                target.parent.mkdir(parents=True, exist_ok=True)
+                target.write_text(text)
     return check_fresh(stem, notebook, equations, functions, samples=samples, rtol=rtol)

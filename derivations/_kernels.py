@@ -23,8 +23,11 @@ expression tree and agree to a few units in the last place.
 from __future__ import annotations
 
 import sympy as sm
-from sympy.printing.numpy import NumPyPrinter
-from sympy.printing.pycode import PythonCodePrinter
+
+from derivations._printers import MathPrinter, hypot, numpy_operand, overflow_safe
+
+#: Bump when the kernel templates change (only modules that declare `vector` arguments).
+KERNEL_VERSION = "6"
 
 __all__ = ["numpy_kernel", "numba_kernel", "cse_of", "real_parts", "has_complex"]
 
@@ -32,6 +35,7 @@ _UFUNCS = {
     sm.sin: "sin", sm.cos: "cos", sm.tan: "tan", sm.asin: "arcsin", sm.acos: "arccos",
     sm.atan: "arctan", sm.exp: "exp", sm.log: "log", sm.Abs: "absolute", sm.sign: "sign",
     sm.sinh: "sinh", sm.cosh: "cosh", sm.tanh: "tanh", sm.atan2: "arctan2", sm.floor: "floor",
+    hypot: "hypot",
 }
 
 
@@ -90,13 +94,11 @@ def has_complex(f):
 def cse_of(f, split=False):
     """``(replacements, reduced)`` of one function's outputs, as the NumPy module uses them;
     with ``split=True`` of the kernels' real outputs (`real_parts`)."""
-    exprs = real_parts(f)[0] if split else f.exprs()
+    exprs = [overflow_safe(e) for e in (real_parts(f)[0] if split else f.exprs())]
     return sm.cse(exprs, symbols=sm.numbered_symbols("x"), order="none")
 
 
-def _scalar(expr):
-    text = NumPyPrinter({"fully_qualified_modules": True}).doprint(expr).replace("numpy.", "np.")
-    return f"({text})" if not (expr.is_Symbol or (expr.is_Number and expr >= 0)) else text
+_scalar = numpy_operand
 
 
 class _Emitter:
@@ -311,14 +313,9 @@ def _tree_sum(terms):
     return terms[0]
 
 
-class _LoopPrinter(PythonCodePrinter):
-    def _print_sign(self, expr):
-        return f"_sign({self._print(expr.args[0])})"
-
-
 def numba_kernel(f, replacements, reduced):
     """Lines of the numba fused loop ``<name>_kernel(args..., out0, out1, ...)``."""
-    printer = _LoopPrinter({"fully_qualified_modules": True, "standard": "python3"})
+    printer = MathPrinter({"fully_qualified_modules": True, "standard": "python3"})
     vector = list(f.vector)
     per_point = {s: sm.Symbol(f"{s.name}_i", **s.assumptions0) for s in vector}
     vec_syms = set(vector)

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:49c9e411df43f430f54d9d884574fc5dd87d9f48ee85cdd4ac524b8f3e377297"
+INPUT_HASH = "sha256:15907196dcf53d7120affd8b44f3f940926fd4f72f27f1d2a8ed32fe8a7e9692"
 
 __all__ = ['rigid_body_position', 'rigid_body_velocity', 'rigid_body_acceleration', 'slide_velocity', 'slide_acceleration', 'rrr_position', 'rrr_velocity', 'rrr_acceleration', 'rrp_position', 'rrp_velocity', 'rrp_acceleration', 'rpr_position', 'rpr_velocity', 'rpr_acceleration', 'prp_position', 'prp_velocity', 'prp_acceleration', 'rpp_position', 'rpp_velocity', 'rpp_acceleration', 'rrr_position_root', 'rrp_position_root', 'rpr_position_root']
 
@@ -236,17 +236,16 @@ def rrr_position(gx, gy, r1, r2, M):
     x0 = gx**2
     x1 = gy**2
     x2 = (2*x0 + 2*x1)**(-1.0)
-    x3 = x0 + x1
-    x4 = r1**2 - r2**2 + x3
-    x5 = np.sqrt(x3)
-    x6 = r1 + r2
-    x7 = (-x5 + x6)*(-r1 + r2 + x5)*(r1 - r2 + x5)
-    x8 = x5 + x6
-    x9 = M*np.sqrt(x7)*np.sqrt(x8)
+    x3 = r1**2 - r2**2 + x0 + x1
+    x4 = np.hypot(gx, gy)
+    x5 = r1 + r2
+    x6 = (-x4 + x5)*(-r1 + r2 + x4)*(r1 - r2 + x4)
+    x7 = x4 + x5
+    x8 = M*np.sqrt(x6)*np.sqrt(x7)
     return (
-        x2*(gx*x4 - gy*x9),
-        x2*(gx*x9 + gy*x4),
-        x7*x8,
+        x2*(gx*x3 - gy*x8),
+        x2*(gx*x8 + gy*x3),
+        x6*x7,
     )
 
 
@@ -573,16 +572,15 @@ def rpr_position(gx, gy, e, M):
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
-    x0 = gx**2 + gy**2
-    x1 = np.sqrt(x0)
-    x2 = (-e + x1)*(e + x1)
-    x3 = M*np.sqrt(x2)
-    x4 = x0**(-1.0)
+    x0 = np.hypot(gx, gy)
+    x1 = (-e + x0)*(e + x0)
+    x2 = M*np.sqrt(x1)
+    x3 = (gx**2 + gy**2)**(-1.0)
     return (
-        x3,
-        x4*(e*gy + gx*x3),
-        x4*(-e*gx + gy*x3),
         x2,
+        x3*(e*gy + gx*x2),
+        x3*(-e*gx + gy*x2),
+        x1,
     )
 
 

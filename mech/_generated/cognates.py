@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:ebb23c42663ecd008ffad720192c192d291dac3c6b8608f1a960f72f7e390f44"
+INPUT_HASH = "sha256:1db741d1539da77bd5be7bc4004376fb7951d409dd79cc2043e2ce91e6ce9672"
 
 __all__ = ['cognate_dimensions']
 
@@ -73,34 +73,33 @@ def cognate_dimensions(a, b, c, d, p, q):
     """
     x0 = b**(-1.0)
     x1 = d*x0
-    x2 = q**2
-    x3 = np.sqrt(p**2 + x2)
-    x4 = x0*x3
-    x5 = x3**(-1.0)
-    x6 = p*x5
-    x7 = q*x5
-    x8 = b - p
-    x9 = np.sqrt(x2 + x8**2)
-    x10 = x0*x9
-    x11 = x9**(-1.0)
-    x12 = q*x11
+    x2 = np.hypot(p, q)
+    x3 = x0*x2
+    x4 = x2**(-1.0)
+    x5 = p*x4
+    x6 = q*x4
+    x7 = b - p
+    x8 = np.hypot(q, x7)
+    x9 = x0*x8
+    x10 = x8**(-1.0)
+    x11 = q*x10
     return (
         p*x1,
         q*x1,
-        x3,
-        a*x4,
-        c*x4,
-        x1*x3,
-        a*x6,
-        -a*x7,
+        x2,
+        a*x3,
+        c*x3,
+        x1*x2,
+        a*x5,
+        -a*x6,
+        x5,
         x6,
-        x7,
-        x9,
-        c*x10,
-        a*x10,
-        x1*x9,
-        c*x11*x8,
-        c*x12,
-        -x11*x8,
-        x12,
+        x8,
+        c*x9,
+        a*x9,
+        x1*x8,
+        c*x10*x7,
+        c*x11,
+        -x10*x7,
+        x11,
     )

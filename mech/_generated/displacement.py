@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:bb9e2cfca273cd57f034b03884440078efb26be4b1039d70e7342ed6743480bf"
+INPUT_HASH = "sha256:e830f8e2dd1d3f9e16885c2f8fd4c69ef47526604bac00d1adda347cb6c2e9dd"
 
 __all__ = ['planar_displacement', 'displacement_pole', 'crank_design_row', 'crank_residual', 'centric_crank_rows', 'slider_residual', 'circumcentre']
 

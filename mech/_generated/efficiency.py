@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:2f69e3518f23ba66516d25ba9722a2a8a12a5f444ef1779f42a096762309132c"
+INPUT_HASH = "sha256:d36558c5d3225d5904fc033dc9b167694ee79c7cf65ac62b8a39e923efcec87a"
 
 __all__ = ['wedge_press', 'spreading_wedge', 'push_rod', 'screw_jack', 'screw_geometry']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:2871cbdda64d0a0b64808c3ee21314b597975df880989088bfb2c66515c95125"
+INPUT_HASH = "sha256:745b295efdd0cbd0daa17de02c69c0fbf5303509bfc22ae8f008474072f1eab6"
 
 __all__ = ['fourbar_mechanical_advantage', 'slider_crank_mechanical_advantage']
 

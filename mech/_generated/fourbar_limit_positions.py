@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:fdf356605e114e0edcebf9c19615c64201993de9dd34759264067d0567f2a636"
+INPUT_HASH = "sha256:16894e6907e8225de42cb10bb1abac272d18cc271fc7e83ebcccf89fc8c607f4"
 
 __all__ = ['fourbar_limit_positions', 'quick_return_time_ratio', 'quick_return_extreme_angle']
 

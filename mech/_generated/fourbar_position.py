@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:fe848ba3ff899b35b428eab52a089afe638505ba3a6340e5ce876b5b28c595bc"
+INPUT_HASH = "sha256:1b30f4417b0bec2ee76f918f0e03fe39acc9c1c4e50ee1ec073363cd1a582cd8"
 
 __all__ = ['fourbar_assembly_gaps', 'fourbar_position', 'fourbar_position_signed', 'fourbar_velocity', 'fourbar_acceleration', 'fourbar_position_into', 'fourbar_position_signed_into', 'fourbar_velocity_into', 'fourbar_acceleration_into']
 

@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:fe848ba3ff899b35b428eab52a089afe638505ba3a6340e5ce876b5b28c595bc"
+INPUT_HASH = "sha256:25d118c9f035f211bf5102cf8d127b4fbec6cbe1fdbb1ccee65c91b545b369c1"
 
 __all__ = ['fourbar_position_kernel', 'fourbar_position_fused_kernel', 'fourbar_position_signed_kernel', 'fourbar_position_signed_fused_kernel', 'fourbar_velocity_kernel', 'fourbar_velocity_fused_kernel', 'fourbar_acceleration_kernel', 'fourbar_acceleration_fused_kernel']
 

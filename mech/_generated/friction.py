@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:32ec61e6c0ef27b2803807b424b752247b2fcadc3ed61f66ba9c6b2a8a9c8fc8"
+INPUT_HASH = "sha256:dc7c2a9dac0fe5638e27572d7efa31f1f889d09196e0100f2667987561485e27"
 
 __all__ = ['incline_push', 'equivalent_mu', 'two_force_tilt', 'thrust_moment', 'eccentric_clamp', 'mill_max_thickness']
 
@@ -192,6 +192,5 @@ def mill_max_thickness(D, a, mu):
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
-    x0 = mu**2
-    x1 = np.sqrt(x0 + 1)
-    return D*x0/(x1*(x1 + 1)) + a
+    x0 = np.hypot(1, mu)
+    return D*mu**2/(x0*(x0 + 1)) + a

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:41c45e487f4cf27257405bb8f9842755e4d3232c1d1a3e29598c221a3590a5a9"
+INPUT_HASH = "sha256:87c8c6c8c070cea0a7e7b8f3cf3df7deea82d4f377d1a242f679abe7c3a20ab3"
 
 __all__ = ['fg_coefficients', 'fg_lengths', 'fg_row', 'fg_output_terms']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:3ed78b435b49735ff1002d452bb18be66cbfdde985a4d479bacd8614178c5d21"
+INPUT_HASH = "sha256:3fdc8415af89c928e946f25545cade78d9c196b25f231a04b1e6c143a2ddd185"
 
 __all__ = ['grashof_margins']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:3f91d620ba5c20c5c419e54bcc65600ef4583a8a1e16f5f1cd017297532a5090"
+INPUT_HASH = "sha256:0480c748249f54b9a06c4e9d29b469abf4656fa8cbbf2bd21f5da356742987a9"
 
 __all__ = ['hooke_output_angle', 'hooke_ratio_terms', 'double_hooke_ratio_extremes']
 

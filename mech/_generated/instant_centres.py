@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:dfa3e050385d8af23a7dc91eda87362c953aac10a60c9a5568fbc55e147b43b7"
+INPUT_HASH = "sha256:4f3826ef081418e9fb46de381b180a0e0a430f7efae421945c38d653a77dae5d"
 
 __all__ = ['fourbar_coupler_pole']
 

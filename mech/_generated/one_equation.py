@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:798025b25933249aa5049150728c1354cea9d220f6d1a479314ca910d16c14e4"
+INPUT_HASH = "sha256:d5b990c0e856a2f178ef30573527550bb91d7911befde101687dae774dd8ae9b"
 
 __all__ = ['abc_discriminant', 'abc_solve', 'abc_rate', 'abc_accel', 'spherical_fourbar_abc', 'planar_fourbar_abc']
 
@@ -31,7 +31,7 @@ def abc_discriminant(A, B, C):
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
-    x0 = np.sqrt(A**2 + B**2)
+    x0 = np.hypot(A, B)
     return (-C + x0)*(C + x0)
 
 

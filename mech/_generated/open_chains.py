@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:212523a2515999d83ad536dd8756a64149f886efa59b1964b2f80427019aac51"
+INPUT_HASH = "sha256:fce9070bd72c9e176c9201a65cb459b26162fd9faf592a20ee6b52cf536deb1b"
 
 __all__ = ['example_2_25_pose', 'example_2_25_reach']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:d0e95b66df066fe3fc009ce6a0a6cc2415b7ce13b42200a1d7eee5c96f4ae3a1"
+INPUT_HASH = "sha256:ac54bb32e3a22cfc897b68c650cc568395e2df29627fc742b6890e3f996fcda5"
 
 __all__ = ['path_dyad_coefficients', 'path_dyad_residual']
 

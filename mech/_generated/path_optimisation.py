@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:3f2619de49bae895e0720eaed39caee54d69189bcac44a86df38d4d2ae605282"
+INPUT_HASH = "sha256:0162d1a944f48c3f2f7c3521d69855ab5728c5f269a7feb45396d5365fac9949"
 
 __all__ = ['path_angles', 'path_coupler_point']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:0d892d2ed27ae2b5bcc47553d06f7d027e954a9a1cc2a9ff8c0e5c42eb2f4b4a"
+INPUT_HASH = "sha256:eb85b03a78cdff1b710945d4f97793f50c791b6a2b65c78e00030cb6f28b8da5"
 
 __all__ = ['acute_angle', 'slider_crank_pressure_angle', 'guide_bar_pressure_angle']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:9c3214aa7d30fe04ce4906c26fe0cc58f52031de3b906ba0e50528506f4f61fb"
+INPUT_HASH = "sha256:8b4955a51737753abae3f9066f8ad7982a59a32d05c68b77ffb741058d8776a2"
 
 __all__ = ['qr_crank_rocker', 'qr_crank_rocker_cos_gamma', 'qr_slider_crank', 'qr_alpha_from_lengths', 'qr_crank_rocker_k1', 'qr_alpha_from_offset']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:5eea644285a83eb648f6642c24009faf095e8003a8937ebe30987ceada42e6bc"
+INPUT_HASH = "sha256:d1189208b7166de34203d8fab468a2d379b46ee723f62835058a6074069b44d2"
 
 __all__ = ['rssr_abc', 'rssr_abc_rates', 'rssr_reach', 'rssr_discriminant', 'rssr_points', 'rssr_velocity', 'rssr_acceleration', 'rssr_coupler_point']
 
@@ -166,7 +166,7 @@ def rssr_reach(l1, l2, l3, s0, s3, h0, lam, phi01):
     x7 = x1 - x2 - x4 + x6
     return (
         x7,
-        np.sqrt((-h0 + l1*np.cos(phi01))**2 + (-s0*x3 + x0*x5)**2),
+        np.hypot(-h0 + l1*np.cos(phi01), -s0*x3 + x0*x5),
         (l2 + x7)*(l2 - x1 + x2 + x4 - x6),
     )
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:2022994ce9fc64d4124001ac5b9267c34e5ce8c3376d6ffc17d100eabbd7f4c4"
+INPUT_HASH = "sha256:4714d5cbc1936b9f8a5c326090c11560e907b04003c65a4c21df3ae11f290c02"
 
 __all__ = ['signature_angles']
 

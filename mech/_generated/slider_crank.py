@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:6f3a4aa412dc6b1d700253510eb5dcba6130ceeed87eb5eb236154ce2578f5b3"
+INPUT_HASH = "sha256:02af7c0508f6f91cd3087f60a7db0e139ab9a1a8e20bcfb7f076558b7d9f22da"
 
 __all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_acceleration', 'slider_crank_limits', 'slider_crank_transmission', 'slider_crank_min_transmission', 'slider_crank_series', 'guide_bar_position', 'guide_bar_velocity', 'guide_bar_acceleration', 'guide_bar_swing', 'guide_bar_crank', 'slider_crank_position_into', 'slider_crank_velocity_into', 'slider_crank_acceleration_into', 'guide_bar_position_into', 'guide_bar_velocity_into', 'guide_bar_acceleration_into']
 
@@ -13,7 +13,7 @@ __all__ = ['slider_crank_position', 'slider_crank_velocity', 'slider_crank_accel
 def slider_crank_position(a, b, e, theta, m):
     """Slider position, rod angle and pin positions (exact).
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F44.
 
     Parameters
     ----------
@@ -79,7 +79,7 @@ def slider_crank_position_into(a, b, e, theta, m, out, work):
 def slider_crank_velocity(a, b, e, theta, m, omega):
     """Rod angular velocity, slider velocity, crank-pin velocity.
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F44 (differentiated once).
 
     Parameters
     ----------
@@ -152,7 +152,7 @@ def slider_crank_velocity_into(a, b, e, theta, m, omega, out, work):
 def slider_crank_acceleration(a, b, e, theta, m, omega, alpha):
     """Rod angular acceleration, slider and crank-pin accelerations.
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F44 (differentiated twice).
 
     Parameters
     ----------
@@ -247,7 +247,7 @@ def slider_crank_acceleration_into(a, b, e, theta, m, omega, alpha, out, work):
 def slider_crank_limits(a, b, e, m):
     """Limit positions, stroke H and extreme angle (F31).
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F22, F31.
 
     Parameters
     ----------
@@ -297,7 +297,7 @@ def slider_crank_limits(a, b, e, m):
 def slider_crank_transmission(a, b, e, theta):
     """Transmission angle gamma in [0, pi/2] (F56).
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F56.
 
     Parameters
     ----------
@@ -325,7 +325,7 @@ def slider_crank_transmission(a, b, e, theta):
 def slider_crank_min_transmission(a, b, e):
     """Minimum transmission angle (F57).
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F57.
 
     Parameters
     ----------
@@ -350,7 +350,7 @@ def slider_crank_min_transmission(a, b, e):
 def slider_crank_series(a, lam, theta, omega):
     """The two-term series (2-10) of the centred slider-crank.
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations (2-10), F52.
 
     Parameters
     ----------
@@ -392,7 +392,7 @@ def slider_crank_series(a, lam, theta, omega):
 def guide_bar_position(a, d, theta):
     """Guide angle, block distance DB and crank pin (oscillating guide-bar).
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F23.
 
     Parameters
     ----------
@@ -447,7 +447,7 @@ def guide_bar_position_into(a, d, theta, out, work):
 def guide_bar_velocity(a, d, theta, omega):
     """Guide angular velocity and sliding speed of the block.
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F23 (differentiated once).
 
     Parameters
     ----------
@@ -510,7 +510,7 @@ def guide_bar_velocity_into(a, d, theta, omega, out, work):
 def guide_bar_acceleration(a, d, theta, omega, alpha):
     """Guide angular acceleration and sliding acceleration of the block.
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F23 (differentiated twice).
 
     Parameters
     ----------
@@ -601,7 +601,7 @@ def guide_bar_acceleration_into(a, d, theta, omega, alpha, out, work):
 def guide_bar_swing(a, d):
     """Swing (= extreme angle, F23) and shortest guide of the guide-bar.
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F23, F30.
 
     Parameters
     ----------
@@ -629,7 +629,7 @@ def guide_bar_swing(a, d):
 def guide_bar_crank(d, swing):
     """Crank length of the guide-bar with a given swing (F30).
 
-    Generated from ``derivations/planar/slider_crank.md``, equations (2-9), (2-10), F22, F23, F30, F31, F44, F51, F52, F56, F57.
+    Generated from ``derivations/planar/slider_crank.md``, equations F30.
 
     Parameters
     ----------

@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:6f3a4aa412dc6b1d700253510eb5dcba6130ceeed87eb5eb236154ce2578f5b3"
+INPUT_HASH = "sha256:77054d8f8e751e5f667c1f0d2599dbc2782f5e7f5d388168df26fc56e11fb3f5"
 
 __all__ = ['slider_crank_position_kernel', 'slider_crank_position_fused_kernel', 'slider_crank_velocity_kernel', 'slider_crank_velocity_fused_kernel', 'slider_crank_acceleration_kernel', 'slider_crank_acceleration_fused_kernel', 'guide_bar_position_kernel', 'guide_bar_position_fused_kernel', 'guide_bar_velocity_kernel', 'guide_bar_velocity_fused_kernel', 'guide_bar_acceleration_kernel', 'guide_bar_acceleration_fused_kernel']
 

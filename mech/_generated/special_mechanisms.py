@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:a33fcb55463059466d382db172b53ad709e0259bf32e677200f6a999ace883da"
+INPUT_HASH = "sha256:067c5298bf5440a30e4a67ca75b8540cdadb9be070f3f33cb84be721a669b953"
 
 __all__ = ['rotating_guide_bar_position', 'rotating_guide_bar_velocity', 'rotating_guide_bar_acceleration', 'equal_guide_bar_position', 'equal_guide_bar_velocity', 'equal_guide_bar_acceleration', 'trammel_position', 'trammel_velocity', 'trammel_acceleration', 'scotch_yoke_position', 'scotch_yoke_velocity', 'scotch_yoke_acceleration', 'tangent_position', 'tangent_velocity', 'tangent_acceleration', 'oldham_position', 'oldham_velocity', 'oldham_acceleration', 'oldham_inertia_force']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:6b829e64f66cf466fa5f60c566416c244211ad964aea0f9d04fca48974892273"
+INPUT_HASH = "sha256:479e4230f62573ea62842e844ebfa6c7071941e27b47b2f1f6b1eee89e2d7d08"
 
 __all__ = ['sph_to_xyz', 'sph_local_frame', 'sph_rotation', 'sph_distance_lonlat']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:28f1a5d8470afc1904e149ba182a6b13b98767ce11aa1cc334fc22c93625ab99"
+INPUT_HASH = "sha256:ea31ae68d3766a7f82f88017dae10adab442e0c9fd0b7ab3eeb55a6f5f0c960c"
 
 __all__ = ['spherical_coupler_octic', 'spherical_coupler_quartic', 'planar_coupler_sextic']
 
@@ -80,7 +80,7 @@ def spherical_coupler_octic(x, y, z, lon, lat, heading, a, b, c, d, r, gamma):
     x22 = x21*np.cos(gamma)
     x23 = x22*(x15 + x20)
     x24 = np.cos(c)
-    x25 = np.sqrt(x**2 + y**2 + z**2)
+    x25 = np.hypot(np.hypot(x, y), z)
     x26 = np.sin(r)
     x27 = x25*x26
     x28 = x24*x27

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:d63d4cd655a595aa7edc228b72dbcb95254b5b4672c0c7d8d8a4c008f7e1f72d"
+INPUT_HASH = "sha256:6ac3bb3c157073a593047c2906a076f702c8f624387cbdfe26f64239c346cd9f"
 
 __all__ = ['spherical_coupler_octic_small']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:11f1c7b589807107a2490d865b8929fb55bb8a257539159dcd03aa99f46e903f"
+INPUT_HASH = "sha256:8b436a01fd92ca6a87efa4eea828185847bb4410240ff7f24e8edc816b1fefd4"
 
 __all__ = ['spherical_fourbar_coefficients', 'spherical_fourbar_position', 'spherical_fourbar_velocity', 'spherical_fourbar_acceleration', 'spherical_fourbar_limit_theta', 'spherical_fourbar_position_into', 'spherical_fourbar_velocity_into', 'spherical_fourbar_acceleration_into']
 

@@ -10,7 +10,7 @@ import math
 
 import numba
 
-INPUT_HASH = "sha256:11f1c7b589807107a2490d865b8929fb55bb8a257539159dcd03aa99f46e903f"
+INPUT_HASH = "sha256:268b0be6e97726f3d12a9691313f5e13d6772935595c1f88678fc693e136fe96"
 
 __all__ = ['spherical_fourbar_position_kernel', 'spherical_fourbar_position_fused_kernel', 'spherical_fourbar_velocity_kernel', 'spherical_fourbar_velocity_fused_kernel', 'spherical_fourbar_acceleration_kernel', 'spherical_fourbar_acceleration_fused_kernel']
 

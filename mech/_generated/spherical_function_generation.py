@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:ae49c9270e1cc11374507522a34fb9b15f14b6a83a18c5999ad5e9dc9528e25c"
+INPUT_HASH = "sha256:d502f7b4b8022924e93bd38e42bb588c0979450c47142b7189e9193d64fbee50"
 
 __all__ = ['sfg_coefficients', 'sfg_arcs', 'sfg_row']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:6f426259ab7a4e41fb5f3ca425d02fcbc3316e2611e1a1c5f24567e38ee2b2b3"
+INPUT_HASH = "sha256:a0ba47c8199b5a5be68df8998fc0d4cd805383ee7764bb37baa01ad6012c66a1"
 
 __all__ = ['sg_displacement_minus_identity', 'sg_pole_parts', 'sg_crank_residual', 'sg_slider_residual']
 
@@ -13,7 +13,7 @@ __all__ = ['sg_displacement_minus_identity', 'sg_pole_parts', 'sg_crank_residual
 def sg_displacement_minus_identity(r1_11, r1_12, r1_13, r1_21, r1_22, r1_23, r1_31, r1_32, r1_33, rj_11, rj_12, rj_13, rj_21, rj_22, rj_23, rj_31, rj_32, rj_33):
     """Entries of K = D_j1 - I = (R_j - R_1) R_1^T, eq. (2), row by row.
 
-    Generated from ``derivations/spherical/guidance.md``, equations (2)-(5) of deriv-spherical-guidance.
+    Generated from ``derivations/spherical/guidance.md``, equations (2).
 
     Parameters
     ----------
@@ -102,7 +102,7 @@ def sg_displacement_minus_identity(r1_11, r1_12, r1_13, r1_21, r1_22, r1_23, r1_
 def sg_pole_parts(k11, k12, k13, k21, k22, k23, k31, k32, k33):
     """Skew part s = sin(phi) k and versine 1 - cos(phi) of the rotation I + K, eq. (3).
 
-    Generated from ``derivations/spherical/guidance.md``, equations (2)-(5) of deriv-spherical-guidance.
+    Generated from ``derivations/spherical/guidance.md``, equations (3).
 
     Parameters
     ----------
@@ -149,7 +149,7 @@ def sg_pole_parts(k11, k12, k13, k21, k22, k23, k31, k32, k33):
 def sg_crank_residual(u1, u2, u3, z1, z2, z3, r1_11, r1_12, r1_13, r1_21, r1_22, r1_23, r1_31, r1_32, r1_33, rj_11, rj_12, rj_13, rj_21, rj_22, rj_23, rj_31, rj_32, rj_33):
     """Crank design equation (4): u . (R_j - R_1) z.
 
-    Generated from ``derivations/spherical/guidance.md``, equations (2)-(5) of deriv-spherical-guidance.
+    Generated from ``derivations/spherical/guidance.md``, equations (4).
 
     Parameters
     ----------
@@ -215,7 +215,7 @@ def sg_crank_residual(u1, u2, u3, z1, z2, z3, r1_11, r1_12, r1_13, r1_21, r1_22,
 def sg_slider_residual(n1, n2, n3, z1, z2, z3, rj_11, rj_12, rj_13, rj_21, rj_22, rj_23, rj_31, rj_32, rj_33):
     """Slider design equation (5): n . R_j z.
 
-    Generated from ``derivations/spherical/guidance.md``, equations (2)-(5) of deriv-spherical-guidance.
+    Generated from ``derivations/spherical/guidance.md``, equations (5).
 
     Parameters
     ----------

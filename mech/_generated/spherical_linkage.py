@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:cac7552dc38ac595710adc339c9752b2041b7a6c735424f03d54b928f3fc55ce"
+INPUT_HASH = "sha256:4acbed0d42dab571273d8cf6f7c7d6f29f5e08a85ede0ade56e62ada2be15b59"
 
 __all__ = ['spherical_link_point', 'spherical_dyad_radicand', 'spherical_dyad_position', 'spherical_dyad_velocity', 'spherical_dyad_acceleration']
 
@@ -13,7 +13,7 @@ __all__ = ['spherical_link_point', 'spherical_dyad_radicand', 'spherical_dyad_po
 def spherical_link_point(Ox, Oy, Oz, Xx, Xy, Xz, r, gamma):
     """Point at arc r from O, at angle gamma counter-clockwise from the great circle O->X, eq. (1).
 
-    Generated from ``derivations/spherical/linkage.md``, equations (1)-(8).
+    Generated from ``derivations/spherical/linkage.md``, equations (1).
 
     Parameters
     ----------
@@ -49,7 +49,7 @@ def spherical_link_point(Ox, Oy, Oz, Xx, Xy, Xz, r, gamma):
     x1 = Ox*Xy - Oy*Xx
     x2 = Oy*Xz - Oz*Xy
     x3 = -Ox*Xz + Oz*Xx
-    x4 = 1/np.sqrt(x1**2 + x2**2 + x3**2)
+    x4 = np.hypot(np.hypot(x1, x2), x3)**(-1.0)
     x5 = x1*x4
     x6 = np.cos(gamma)
     x7 = np.sin(gamma)
@@ -65,7 +65,7 @@ def spherical_link_point(Ox, Oy, Oz, Xx, Xy, Xz, r, gamma):
 def spherical_dyad_radicand(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2):
     """Radicand rho = A^2 - C^2 of the spherical RRR dyad in the product form (4).
 
-    Generated from ``derivations/spherical/linkage.md``, equations (1)-(8).
+    Generated from ``derivations/spherical/linkage.md``, equations (4).
 
     Parameters
     ----------
@@ -93,7 +93,7 @@ def spherical_dyad_radicand(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2):
 
     Arguments broadcast against each other like a NumPy ufunc.
     """
-    x0 = (1/2)*np.arctan2(np.sqrt((P1x*P2y - P1y*P2x)**2 + (-P1x*P2z + P1z*P2x)**2 + (P1y*P2z - P1z*P2y)**2), P1x*P2x + P1y*P2y + P1z*P2z)
+    x0 = (1/2)*np.arctan2(np.hypot(np.hypot(P1x*P2y - P1y*P2x, P1y*P2z - P1z*P2y), -P1x*P2z + P1z*P2x), P1x*P2x + P1y*P2y + P1z*P2z)
     x1 = (1/2)*b1
     x2 = (1/2)*b2
     x3 = x1 + x2
@@ -103,7 +103,7 @@ def spherical_dyad_radicand(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2):
 def spherical_dyad_position(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2, sigma, rho):
     """Joint J of the spherical RRR dyad pinned at P1, P2 with arcs b1, b2, eq. (3).
 
-    Generated from ``derivations/spherical/linkage.md``, equations (1)-(8).
+    Generated from ``derivations/spherical/linkage.md``, equations (2), (3).
 
     Parameters
     ----------
@@ -157,7 +157,7 @@ def spherical_dyad_position(P1x, P1y, P1z, P2x, P2y, P2z, b1, b2, sigma, rho):
 def spherical_dyad_velocity(P1x, P1y, P1z, v1x, v1y, v1z, P2x, P2y, P2z, v2x, v2y, v2z, Jx, Jy, Jz):
     """Angular velocities of the dyad's two links, eqs. (5)-(6).
 
-    Generated from ``derivations/spherical/linkage.md``, equations (1)-(8).
+    Generated from ``derivations/spherical/linkage.md``, equations (5), (6).
 
     Parameters
     ----------
@@ -261,7 +261,7 @@ def spherical_dyad_velocity(P1x, P1y, P1z, v1x, v1y, v1z, P2x, P2y, P2z, v2x, v2
 def spherical_dyad_acceleration(P1x, P1y, P1z, a1x, a1y, a1z, P2x, P2y, P2z, a2x, a2y, a2z, Jx, Jy, Jz, w1x, w1y, w1z, w2x, w2y, w2z):
     """Angular accelerations of the dyad's two links, eqs. (7)-(8).
 
-    Generated from ``derivations/spherical/linkage.md``, equations (1)-(8).
+    Generated from ``derivations/spherical/linkage.md``, equations (7), (8).
 
     Parameters
     ----------

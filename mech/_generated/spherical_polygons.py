@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:3ee85495b1a9f3441c032b0c8022bd5d5a28af722c57783c7ac881a9872b61ec"
+INPUT_HASH = "sha256:35e3c1b006440f98b8f1378c7718bc8454585e58d36fef8abfa22cea92ad426c"
 
 __all__ = ['spherical_chain_1', 'spherical_chain_2', 'spherical_chain_3', 'spherical_chain_4', 'spherical_chain_5', 'spherical_chain_6', 'polygon_cut_laws', 'chain_link_rotation']
 

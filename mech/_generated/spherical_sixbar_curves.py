@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:e4e5a34a5e12aefe7220118c5d96e7a3fef1857d5af6ad72700c34f1e25c9dc6"
+INPUT_HASH = "sha256:fd9be32a43b9a2566edcb679f29e09e38462f1a510082b7d4ba0d9058094f4f0"
 
 __all__ = ['sixbar_cramer', 'sixbar_dixon']
 

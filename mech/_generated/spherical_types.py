@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:095ab64ac05d66a5b6df32a47244fe66651490b1c75eb87708eb7487cf6fe21c"
+INPUT_HASH = "sha256:18e63ede80c27b08f3c5ae48f4e75ea587ae70089da1f2f81a4936f288ce2e94"
 
 __all__ = ['spherical_type_slacks', 'isogram_ratios', 'isogram_output_angle', 'deltoid_half_input', 'spherical_slider_limits']
 

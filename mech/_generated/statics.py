@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:20ebb94c71dfda4babc84b45feaa0138b241ab0e7aea99ccb9cb80db5cc5bb54"
+INPUT_HASH = "sha256:23b1e1ba6c32d00e5304e368bc3315b7b418113e31c33af81ad0e60857c7fe7a"
 
 __all__ = ['rrr_reactions', 'rrp_reactions', 'rpr_reactions', 'prp_reactions', 'rpp_reactions', 'slider_reactions']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:2ec9ee3d49f1bb857ce298c3667da69026111913bb39603ff1a8e8b9ebaea3a1"
+INPUT_HASH = "sha256:39a452d185eb06689c51ad2ef0b2df56e35b101b8746b1e0a19c78fc2c34652a"
 
 __all__ = ['steering_coefficients', 'steering_beta', 'steering_ideal']
 

@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:edb86942e5e0907f8fbc4477e1c9a4832616a2295cd90f9d23e4a40121fcc10f"
+INPUT_HASH = "sha256:d1a81d48b0fdd28e81d32da8f92d8c7761533b7f2702e016a758507cc4d7f9fc"
 
 __all__ = ['rccc_slide', 'rccc_slide_rate', 'spherical_fourbar_vectors', 'rssr_dual_laws']
 

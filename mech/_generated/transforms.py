@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:d34b2167c7ccbc4184fbc54fcebc1d19476cb1b165cc9dd95f6ef850833c445a"
+INPUT_HASH = "sha256:4abe5b4f6bde62bd0750ac11b4738c3ea121fdf39b8f761455744800832952a0"
 
 __all__ = ['rot_z_entries', 'rot_x_entries', 'hd_entries', 'hd_inv_entries']
 

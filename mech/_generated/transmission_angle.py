@@ -5,7 +5,7 @@
 
 import numpy as np
 
-INPUT_HASH = "sha256:3ae7c8ee52fe79fd837e02cd82ac6031ac41a1567ac14b3ff92453f5fee471e4"
+INPUT_HASH = "sha256:92cb9f1b49048fef07f8b4d7015e650f03fefc195f8feba8cccc6d43fdf62270"
 
 __all__ = ['fourbar_transmission', 'fourbar_crank_angle_at_diagonal']
 

@@ -1,6 +1,7 @@
 """The planar revolute four-bar: positions, velocities and accelerations."""
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -12,7 +13,7 @@ from mech._pose import Pose, _finite_sum
 from mech._scaling import DEAD_POINT_RTOL
 from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
 
-__all__ = ["FourBar", "FourBarPose", "fourbar_lengths"]
+__all__ = ["FourBar", "FourBarPose", "fourbar_lengths", "fourbar_inputs"]
 
 
 # rows of the reused work array of a block (NumPy backend): the position kernel's, then S,
@@ -76,6 +77,60 @@ def assembly_gaps(a, b, c, d, rtol):
     total = a + b + c + d
     gaps = [float(g) for g in _gen.fourbar_assembly_gaps(a, b, c, d)]
     return tuple(0.0 if abs(g) <= rtol * total else g for g in gaps)
+
+
+class FourBarInputs(NamedTuple):
+    """The plain inputs of the generated four-bar kernels (`fourbar_inputs`)."""
+
+    lengths: tuple        # a, b, c, d divided by 2**exponent: the longest in [1/2, 1)
+    exponent: int         # multiply points and linear rates by 2**exponent (exact)
+    coupler: tuple        # (p, q) as given, checked
+    unit_coupler: tuple   # (p, q) divided by 2**exponent
+    rtol: float           # the change-point tolerance used for `gaps`
+    gaps: tuple           # g2, g3, g4 of the scaled lengths, 0.0 within rtol (a + b + c + d)
+    m23: int              # 1 if g2 or g3 is zero (the sign flip of sin(theta/2)), else 0
+    m4: int               # 1 if g4 is zero (the sign flip of cos(theta/2)), else 0
+    kite: bool            # a = d and b = c: the crank pin passes through D
+
+
+def fourbar_inputs(a, b, c, d, coupler=(0.0, 0.0), rtol=1e-12):
+    """Check a four-bar given in any unit and return the inputs its generated kernels take.
+
+    The kernels of ``mech._generated.fourbar_position`` are formulas of plain numbers (the
+    contract in ``derivations/README.md``): they take lengths of order one, the assembly
+    gaps and the change-point flags, and know nothing of units or tolerances. This helper
+    is the one place that makes those numbers: the lengths (and coupler point) divided by
+    the power of two that brings the longest link into [1/2, 1) (`fourbar_lengths`), the
+    gaps zeroed within ``rtol`` (a + b + c + d) (`assembly_gaps`), the flags ``m23`` and
+    ``m4`` of `fourbar_position_signed` and whether the linkage is a kite. Points the
+    kernels return are multiplied by ``2**exponent`` to come back to the caller's unit.
+
+    Raises ValueError naming the argument and the value: a length that is not positive and
+    finite or not shorter than the other three together, a coupler ``b`` below 2**-1022
+    times the longest link, a coupler point that is not two finite numbers, a negative
+    ``rtol``.
+
+    Examples
+    --------
+    >>> from mech.planar.kinematics._fourbar import fourbar_inputs
+    >>> k = fourbar_inputs(10, 40, 30, 35)
+    >>> k.lengths, k.exponent, k.m23, k.m4
+    ((0.15625, 0.625, 0.46875, 0.546875), 6, 0, 0)
+    >>> fourbar_inputs(20, 50, 40, 10).m23         # 10 + 50 = 20 + 40: a change point
+    1
+    """
+    lengths, exponent = fourbar_lengths(a, b, c, d)
+    if lengths[1] < 2.0**-1022:
+        # the coupler's direction is C - B divided by b: lost once b underflows
+        raise ValueError(f"Expected `b` at least 2**-1022 times the longest link, got {float(b)!r} "
+                         f"with the longest {max(float(a), float(b), float(c), float(d))!r}")
+    p, q = coupler = real_tuple("coupler", coupler, 2)
+    rtol = nonnegative_number("rtol", rtol)
+    gaps = assembly_gaps(*lengths, rtol)
+    zero = [g == 0.0 for g in gaps]
+    # one sign flip even when both are zero: then the diagonal B->D itself reverses
+    return FourBarInputs(lengths, exponent, coupler, (math.ldexp(p, -exponent), math.ldexp(q, -exponent)),
+                         rtol, gaps, int(zero[0] or zero[1]), int(zero[2]), zero[0] and zero[1])
 
 
 def dead_points_near(a, b, c, d, theta, gaps):
@@ -222,23 +277,14 @@ class FourBar:
     """
 
     def __init__(self, a, b, c, d, *, branch=1, coupler=(0.0, 0.0), rtol=1e-12):
-        (a_, b_, c_, d_), self._exponent = fourbar_lengths(a, b, c, d)
-        if b_ < 2.0**-1022:
-            # the coupler's direction is C - B divided by b: lost once b underflows
-            raise ValueError(f"Expected `b` at least 2**-1022 times the longest link, got {float(b)!r} "
-                             f"with the longest {max(float(a), float(b), float(c), float(d))!r}")
+        inputs = fourbar_inputs(a, b, c, d, coupler, rtol)
+        (a_, b_, c_, d_), self._exponent = inputs.lengths, inputs.exponent
         self._a, self._b, self._c, self._d = (float(v) for v in (a, b, c, d))
         self._branch = branch_sign(branch)
-        self._coupler = p, q = real_tuple("coupler", coupler, 2)
-        self._rtol = rtol = nonnegative_number("rtol", rtol)
-        self._unit = (a_, b_, c_, d_, math.ldexp(p, -self._exponent), math.ldexp(q, -self._exponent))
-        self._gaps = assembly_gaps(a_, b_, c_, d_, rtol)
-        zero = [g == 0.0 for g in self._gaps]
-        # one sign flip even when both are zero: then the diagonal B->D itself reverses
-        self._m23 = int(zero[0] or zero[1])
-        self._m4 = int(zero[2])
-        # the kite a = d, b = c: the crank pin passes through D
-        self._kite = zero[0] and zero[1]
+        self._coupler = inputs.coupler
+        self._rtol = inputs.rtol
+        self._unit = (*inputs.lengths, *inputs.unit_coupler)
+        self._gaps, self._m23, self._m4, self._kite = inputs.gaps, inputs.m23, inputs.m4, inputs.kite
         # |BD| sweeps [|d - a|, d + a]: a dead point (|BD| = b + c or |b - c|, gap not zero)
         # is within reach only if its gap is below the tolerance (twice, for rounding)
         tol = 2.0 * DEAD_POINT_RTOL * (a_ + b_ + c_ + d_)
