@@ -11,29 +11,30 @@ converge), or quietly return a design for fewer poses than were given.
 Every check here compares the data with the task's own size (the spread of its
 translations or points; the turn of its orientations), never with a fixed length, so a
 task scaled by any power of ten from 1e-200 to 1e200 is accepted or refused alike. A
-refusal is a ``ValueError`` naming the argument and the offending entries, counted from 1
-as the textbooks count poses: "poses 1 and 5 of `theta`/`d` are the same pose".
+refusal is a ``ValueError`` naming the arguments and the offending entries, counted from 1
+as the textbooks count poses: "Expected distinct poses in `theta`/`d`, got poses 1 and 5
+the same pose (a whole number of turns apart): ...".
+
+The module also holds what the solvers need to check their answers against the task:
+how far a planar or spherical crank misses its poses (`planar_dyad_error`,
+`spherical_dyad_error`, relative to the task's size again), and which polished roots are
+distinct real solutions (`single_roots`). A Burmester solver lists a dyad only when it
+meets the task; it does not trust the imaginary part of a root.
 
 This is an internal shared module: the synthesis functions of `mech.planar.synthesis` and
-`mech.spherical` call it; it is not part of the public interface.
+`mech.spherical` call it (`pose_set` and `orientation_set` for every pose or orientation
+set); it is not part of the public interface.
 """
 
 import numpy as np
 
-from mech._validate import _show, nonnegative_number
-
-__all__ = ["SAME", "distinct_poses", "distinct_orientations", "distinct_points", "tolerance", "single_roots",
-           "planar_dyad_error", "spherical_dyad_error"]
+__all__ = ["SAME", "distinct_poses", "distinct_orientations", "single_roots", "planar_dyad_error",
+           "spherical_dyad_error"]
 
 # Two entries of a task closer than this, relative to the task's size, are one entry. It is
 # far above rounding (a pose and the same pose plus a whole turn differ by about 1e-15 of
 # the angle) and far below any difference a designer means.
 SAME = 1e-12
-
-
-def tolerance(name, value):
-    """A tolerance argument: a finite float >= 0, refused by name otherwise."""
-    return nonnegative_number(name, value)
 
 
 def _wrapped(turn):
@@ -119,28 +120,6 @@ def distinct_orientations(R, name="R"):
                     f"orientation (relative turn {float(gaps[i, j])!r} rad, largest turn in the set {size!r} rad)")
 
 
-def distinct_points(name, points, what="points"):
-    """Refuse planar points (complex, shape (n,)) or axes (shape (n, 3)) in which two coincide.
-
-    Two entries coincide when they are at most `SAME` times the spread of the set apart;
-    a set whose entries all coincide is refused by its first two.
-    """
-    P = np.asarray(points)
-    flat = P.reshape(P.shape[0], -1) if P.ndim > 1 else P[:, None]
-    n = flat.shape[0]
-    if n < 2:
-        return
-    centre = flat.mean(axis=0) if np.all(np.isfinite(flat.mean(axis=0))) else flat[0]
-    spread = float(np.max(np.linalg.norm(flat - centre, axis=1)))
-    for i in range(n - 1):
-        gap = np.linalg.norm(flat[i + 1:] - flat[i], axis=1)
-        hit = np.flatnonzero(gap <= SAME * spread)
-        if hit.size:
-            j = i + 1 + int(hit[0])
-            raise ValueError(f"Expected distinct {what} in `{name}`, got entries {_pair_text(i, j)} equal: "
-                             f"{_show(P[i])} and {_show(P[j])}")
-
-
 def planar_dyad_error(theta, d, z, A):
     """How far a planar crank (circle point `z`, centre point `A`) misses its poses.
 
@@ -185,7 +164,8 @@ def single_roots(points, drifts, close):
     Within such a group the root that moved least is the real one when it moved at most
     half as far as any other; otherwise (a tie, as for a complex pair, whose two roots move
     equally far, or by a factor of at most 1.5 for the pair ``x``, ``1/conj(x)`` of a
-    spherical solver within 0.5 of the unit circle; or a double root) none is. ``close(p, q)`` says whether two points are one.
+    spherical solver within 0.5 of the unit circle; or a double root) none is.
+    ``close(p, q)`` says whether two points are one.
 
     Returns
     -------

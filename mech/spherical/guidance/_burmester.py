@@ -13,6 +13,8 @@ from mech._task import single_roots, spherical_dyad_error
 
 # a root may lie this far from the polished crank's root on the unit circle, and no farther
 _DRIFT = 0.5
+# a crank whose arcs agree to this (relative to its movement) needs no further polishing
+_ROUNDING = 1e-13
 from mech.spherical.guidance._orientations import _axis_angle, _parts, orientation_set
 
 __all__ = ["SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve",
@@ -478,10 +480,16 @@ def burmester(R, *, imag_tol=1e-7):
         u, w1 = _polish(K, u0, w)
         u = u if u @ w1 >= 0.0 else -u
         # the chord form is the better one near the planar limit, where the cosine form may
-        # also wander from the start: keep whichever of the three meets the task best
-        error, u, w, z = min(((_dyad_error(R, u_, w_), u_, w_, R[0].T @ w_) for u_, w_ in
-                              ((u, w1), _polish_chords(K * sizes[:, None, None], u, w1),
-                               _polish_chords(K * sizes[:, None, None], u0, w))), key=lambda t: t[0])
+        # also wander from the start: try them in turn, keep the first that meets the task
+        # to rounding, or else whichever meets it best
+        tries = [(_dyad_error(R, u, w1), u, w1)]
+        for start in ((u, w1), (u0, w)):
+            if tries[-1][0] <= _ROUNDING:
+                break
+            u_, w_ = _polish_chords(K * sizes[:, None, None], *start)
+            tries.append((_dyad_error(R, u_, w_), u_, w_))
+        error, u, w = min(tries, key=lambda t: t[0])
+        z = R[0].T @ w
         s = w - (w @ Pa) * Pa
         drift = abs(x - np.exp(2j * np.arctan2(s @ e2, s @ e1)))      # the polished crank's root
         if error <= imag_tol and arc_between(u, w) > 0.0 and drift <= _DRIFT:
