@@ -308,14 +308,14 @@ _EXAMPLE = """    Examples
     >>> from mech.spherical import {function}
     >>> from mech.spherical.path._synthesis import _sixbar
     >>> x = np.array({x})
-    >>> th = np.linspace(0.0, 3.2, 12)
+    >>> th = np.linspace({th})
     >>> Q = _sixbar("{kind}", x, (1, 1)).solve(th).points["P"]
     >>> d = {function}(Q, th, x + 0.02)
     >>> bool(d.passes), d.max_error < 1e-6
     (True, True)
 """
 
-#: a six-bar of each type that assembles on 0 <= theta <= 3.2 with both transmission
+#: a six-bar of each type that assembles on 0 <= theta <= 5.8 with both transmission
 #: angles above 30 degrees (the examples and the tests start near it)
 KNOWN = {
     "stephenson1": [0.2, 1.1, 0.3, 0.3, 0.9, 0.7, 1.0, 0.2, 0.8, 0.3, -1.0, 0.8, 0.7, 0.4, 0.5],
@@ -331,4 +331,5 @@ for _f, _name, _section, _carriers in (
     _kind = _f.__name__[5:]
     _f.__doc__ = _fill(_DOC, name=_name, kind=_kind, section=_section, carriers=_carriers,
                        examples=_fill(_EXAMPLE, function=_f.__name__, kind=_kind,
-                                      x="[" + ", ".join(str(v) for v in KNOWN[_kind]) + "]"))
+                                      x="[" + ", ".join(str(v) for v in KNOWN[_kind]) + "]",
+                                      th="0.0, 5.8, 16" if _kind == "watt2" else "0.0, 3.2, 12"))
