@@ -69,7 +69,7 @@ from mech.planar.forces._screw import (
     thread_friction_angle,
 )
 from mech.planar.forces._statics import StaticForces, as_linkage, static_forces
-from mech.planar.forces._transmission import min_transmission_angle, transmission_angle
+from mech.planar.structure._transmission import min_transmission_angle, transmission_angle
 
 __all__ = [
     "DeadPoints",

@@ -56,13 +56,8 @@ from mech.planar.synthesis._quick_return_design import (
     quick_return_guide_bar,
     quick_return_slider_crank,
 )
-from mech.planar.synthesis._quick_return_search import (
-    QuickReturnCheck,
-    QuickReturnFamily,
-    crank_rocker_family,
-    simulate_quick_return,
-    slider_crank_family,
-)
+from mech.planar.synthesis._quick_return_check import QuickReturnCheck, simulate_quick_return
+from mech.planar.synthesis._quick_return_search import QuickReturnFamily, crank_rocker_family, slider_crank_family
 from mech.planar.synthesis._slider_guidance import (
     GuidanceSliderCrank,
     SliderCircle,

@@ -12,6 +12,7 @@ import numpy as np
 
 from mech._generated.path_optimisation import path_coupler_point
 from mech._generated.steering_trapezoid import steering_beta, steering_ideal
+from mech._geometry import wrap_angle as _wrap
 from mech._validate import _show, finite_array, nonnegative_int, planar_points, positive_length, real_number
 from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.synthesis._optimisation import DesignModel
@@ -21,10 +22,6 @@ __all__ = ["SteeringTrapezoid", "steering_trapezoid_model", "CouplerPathDesign",
 
 #: Design variables of Example 2-24, in order (the text's nine plus the crank's start angle).
 PATH_VARIABLES = ("l1", "l2", "l3", "l4", "l5", "xA", "yA", "alpha", "phi4", "theta0")
-
-
-def _wrap(angle):
-    return np.arctan2(np.sin(angle), np.cos(angle))
 
 
 def _trapezoid_weights(steps):

@@ -12,7 +12,7 @@ value) are in ``_quick_return_search``.
 Every design is returned as the analysis class that moves it (`FourBar`, `SliderCrank`,
 `GuideBar`); its ``check()`` simulates one full crank turn with that class and MEASURES
 the time ratio, the swing or stroke and the minimum transmission angle, independently of
-the formulas that built it (`simulate_quick_return`, in ``_quick_return_search``).
+the formulas that built it (`simulate_quick_return`, in ``_quick_return_check``).
 """
 
 from __future__ import annotations
@@ -34,6 +34,7 @@ from mech._validate import branch_sign, positive_length, real_number
 from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.kinematics._guide_bar import GuideBar
 from mech.planar.structure._quick_return import extreme_angle as _extreme_angle
+from mech.planar.synthesis._quick_return_check import _TWO_PI, _acute, simulate_quick_return
 from mech.planar.kinematics._slider_crank import SliderCrank
 
 __all__ = [
@@ -44,15 +45,6 @@ __all__ = [
     "quick_return_slider_crank",
     "quick_return_guide_bar",
 ]
-
-
-def _optimize():
-    """SciPy's optimize module, imported on first use so that importing mech stays light."""
-    from scipy import optimize
-
-    return optimize
-
-_TWO_PI = 2.0 * math.pi
 
 
 # ----------------------------------------------------------------------------- input checks
@@ -85,11 +77,6 @@ def _one_of(**given):
     if len(named) != 1:
         raise ValueError(f"Expected exactly one of {', '.join(f'`{k}`' for k in given)}, got {len(named)}: {named}")
     return named[0], given[named[0]]
-
-
-def _acute(cos_angle):
-    """The transmission angle (acute, in [0, pi/2]) of an angle with cosine `cos_angle`."""
-    return np.pi / 2 - np.arcsin(np.clip(np.abs(cos_angle), 0.0, 1.0))
 
 
 # ----------------------------------------------------------------------------- crank-rocker
@@ -155,8 +142,6 @@ class QuickReturnCrankRocker:
         -------
         QuickReturnCheck
         """
-        from mech.planar.synthesis._quick_return_search import simulate_quick_return   # imports this module
-
         return simulate_quick_return(self.fourbar, samples=samples, xtol=xtol)
 
 
@@ -379,8 +364,6 @@ class QuickReturnSliderCrank:
 
         Same keywords as `QuickReturnCrankRocker.check`.
         """
-        from mech.planar.synthesis._quick_return_search import simulate_quick_return   # imports this module
-
         return simulate_quick_return(self.slider_crank, samples=samples, xtol=xtol)
 
 
@@ -490,8 +473,6 @@ class QuickReturnGuideBar:
 
         Same keywords as `QuickReturnCrankRocker.check`; see `simulate_quick_return`.
         """
-        from mech.planar.synthesis._quick_return_search import simulate_quick_return   # imports this module
-
         return simulate_quick_return(self.guide_bar, samples=samples, xtol=xtol)
 
 

@@ -13,6 +13,7 @@ Formulas: ``mech._generated.spherical_sixbar_curves``, derived in
 import numpy as np
 
 from mech._generated import spherical_sixbar_curves as _gen
+from mech._geometry import unit_rows
 from mech._validate import bool_flag, finite_array
 
 __all__ = ["SIXBAR_CURVE_ORDERS", "sixbar_curve"]
@@ -27,13 +28,9 @@ _BLOCK = 2048
 _F2T = np.array([[1, 1, 0], [0, 0, 2], [1, -1, 0]]) @ np.array([[0, 1, 0], [1, 0, 1], [-1j, 0, 1j]])
 
 
-def _unit(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
-
-
 def _toward(o, x, r, g=0.0):
     """The point at arc r from o, at the angle g from the great circle o -> x (eq. (1) of the solver)."""
-    T = _unit(x - (o @ x) * o)
+    T = unit_rows(x - (o @ x) * o)
     return np.cos(r) * o + np.sin(r) * (np.cos(g) * T + np.sin(g) * np.cross(o, T))
 
 
@@ -218,7 +215,7 @@ def _ring_limit(geo, P):
     """Q at the pivot directions P = +-D (Watt-1, where the division is 0/0): the mean over
     rings of arcs h and 2h about P, extrapolated (Richardson) to h = 0; error O(h**4)."""
     h = 0.01
-    e1 = _unit(np.cross(P, np.where(np.abs(P[..., :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])))
+    e1 = unit_rows(np.cross(P, np.where(np.abs(P[..., :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])))
     e2 = np.cross(P, e1)
     means = []
     for arc in (h, 2 * h):

@@ -8,7 +8,7 @@ from mech._generated.transmission_angle import (
 )
 from mech._errors import AssemblyError
 from mech._validate import bool_flag, finite_array
-from mech.planar.kinematics._fourbar import (
+from mech.planar.structure._lengths import (
     assembly_gaps, dead_points_near, fourbar_lengths, fourbar_lengths_resolved,
 )
 from mech.planar.structure._grashof import grashof
@@ -86,7 +86,7 @@ def transmission_angle(a, b, c, d, theta, *, strict=False):
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar.forces._transmission import transmission_angle
+    >>> from mech.planar.structure._transmission import transmission_angle
     >>> round(float(np.degrees(transmission_angle(30, 70, 60, 80, 0.0))), 4)
     44.4153
     >>> np.degrees(transmission_angle(30, 70, 60, 80, [np.pi / 2, np.pi])).round(4)
@@ -143,7 +143,7 @@ def min_transmission_angle(a, b, c, d):
     The textbook's check case (F55): delta_min = 44.4153 deg at theta = 0.
 
     >>> import numpy as np
-    >>> from mech.planar.forces._transmission import min_transmission_angle
+    >>> from mech.planar.structure._transmission import min_transmission_angle
     >>> gamma_min, theta_at = min_transmission_angle(30, 70, 60, 80)
     >>> round(float(np.degrees(gamma_min)), 4), theta_at
     (44.4153, 0.0)
