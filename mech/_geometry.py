@@ -27,9 +27,9 @@ __all__ = ["acute_angle", "acute_angle_from_cosine", "cross3", "cross_components
 def wrap_angle(angle):
     """The angle in (-pi, pi] with the same direction as `angle` (radians).
 
-    Computed as ``atan2(sin(angle), cos(angle))``: exact for angles already in range, and
-    an odd multiple of pi gives +pi, never -pi (``sin`` of the float nearest pi is
-    positive).
+    Computed as ``atan2(sin(angle), cos(angle))``, exact for angles already in range. The
+    float nearest pi lies just below pi, so ``np.pi`` stays ``np.pi`` and ``-np.pi`` (just
+    above -pi, inside the range) stays ``-np.pi``.
 
     Examples
     --------
@@ -91,7 +91,10 @@ def cross_components(u, v):
 def unit_rows(v):
     """Space vectors `v` (shape (..., 3)) divided by their lengths along the last axis.
 
-    A zero row gives NaN, silently: the callers mark such rows as degenerate themselves.
+    Each row is first scaled by a power of two that brings its largest component near 1
+    (exact, so a row of normal size gives the same quotient as without it), so rows of
+    size 1e-300 or 1e300 do not underflow or overflow in the squares. A zero row gives NaN,
+    silently: the callers mark such rows as degenerate themselves. Complex rows are allowed.
 
     Examples
     --------
@@ -100,9 +103,15 @@ def unit_rows(v):
     [[0.6, 0.0, 0.8], [nan, nan, nan]]
     """
     v = np.asarray(v)
-    n = np.linalg.norm(v, axis=-1, keepdims=True)
+    big = np.max(np.abs(v), axis=-1, keepdims=True)
+    _, exponent = np.frexp(np.where(big > 0.0, big, 1.0))
+    half = exponent // 2
+    # two steps, so that neither power of two overflows for the smallest or largest rows
+    with np.errstate(invalid="ignore", under="ignore"):
+        scaled = v * np.ldexp(1.0, -half) * np.ldexp(1.0, half - exponent)
+        n = np.linalg.norm(scaled, axis=-1, keepdims=True)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return v / n
+        return scaled / n
 
 
 def acute_angle(u, v):
