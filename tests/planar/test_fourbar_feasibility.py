@@ -8,7 +8,7 @@ from mech.planar import FourBar
 from mech.planar.forces._force_gain import fourbar_dead_points
 from mech.planar.structure._limit_positions import limit_positions
 from mech.planar.forces._pressure_angle import fourbar_pressure_angle, transmission_extremes
-from mech.planar.structure._transmission import min_transmission_angle, transmission_angle
+from mech.planar.forces._transmission import min_transmission_angle, transmission_angle
 
 TOO_LONG = [((1.0, 4.0, 3.0, 9.0), "d", "8.0", "9.0"),
             ((12.0, 4.0, 3.0, 5.0), "a", "12.0", "12.0"),

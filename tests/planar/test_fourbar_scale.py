@@ -26,7 +26,7 @@ from mech.planar.coupler._cognates import cognates
 from mech.planar.forces._force_gain import fourbar_dead_points, fourbar_mechanical_advantage
 from mech.planar.structure._limit_positions import limit_positions
 from mech.planar.forces._pressure_angle import fourbar_pressure_angle, transmission_extremes
-from mech.planar.structure._transmission import min_transmission_angle, transmission_angle
+from mech.planar.forces._transmission import min_transmission_angle, transmission_angle
 
 SCALES = [1e-300, 1e-200, 1e-160, 1e-150, 1e-110, 1e-50, 1.0, 1e50, 1e110, 1e160, 1e200, 1e300]
 POWERS = [2.0**k for k in (-990, -520, -1, 3, 520, 990)]

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from mech.planar import grashof
-from mech.planar.structure._transmission import min_transmission_angle, transmission_angle
+from mech.planar.forces._transmission import min_transmission_angle, transmission_angle
 
 
 def _gamma_acos(a, b, c, d, theta):

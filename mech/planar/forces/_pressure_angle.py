@@ -2,7 +2,7 @@
 
 The formulas come from ``derivations/planar/pressure_angle.md`` (F49 to F59) through
 ``mech._generated.pressure_angle``; the four-bar's angle BCD of eq. (2-30) comes from
-``mech.planar.structure._transmission``.
+``mech.planar.forces._transmission``.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from mech._validate import (
     bool_flag, finite_array, instance, known_name, planar_points, positive_length, real_number,
 )
 from mech.planar.structure._grashof import grashof
-from mech.planar.structure._transmission import at_dead_points, check_assembled
+from mech.planar.forces._transmission import at_dead_points, check_assembled
 from mech.planar.structure._lengths import fourbar_lengths, fourbar_lengths_resolved
 from mech.planar.kinematics._linkage import LinkageSolution
 

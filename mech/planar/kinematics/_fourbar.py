@@ -13,7 +13,6 @@ from mech._scaling import DEAD_POINT_RTOL
 from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
 from mech.planar.structure._lengths import assembly_gaps, dead_points_near, fourbar_lengths
 from mech.planar.structure._limit_positions import limit_positions
-from mech.planar.structure._transmission import min_transmission_angle, transmission_angle
 
 __all__ = ["FourBar", "FourBarPose"]
 
@@ -30,6 +29,16 @@ _FIELDS = ("B", "C", "P", "omega_coupler", "omega_output", "vB", "vC", "vP",
            "alpha_coupler", "alpha_output", "aB", "aC", "aP")
 _FIELD_COUNT = {0: 3, 1: 8, 2: 13}
 _COMPLEX = {"B", "C", "P", "vB", "vC", "vP", "aB", "aC", "aP"}
+
+#: The transmission-angle functions of `mech.planar.forces`, which builds on this module and
+#: registers them (`register_transmission`): importing any part of `mech.planar` runs the
+#: package's ``__init__``, which imports the forces subpackage, so they are here before use.
+_TRANSMISSION = {}
+
+
+def register_transmission(**functions):
+    """Set the functions behind `FourBar.transmission_angle` and `FourBar.min_transmission_angle`."""
+    _TRANSMISSION.update(functions)
 
 
 def _unscale(z, exponent, copy=True):
@@ -482,7 +491,7 @@ class FourBar:
         >>> round(float(np.degrees(FourBar(30, 70, 60, 80).transmission_angle(0.0))), 4)
         44.4153
         """
-        return transmission_angle(self._a, self._b, self._c, self._d, theta)
+        return _TRANSMISSION["transmission_angle"](self._a, self._b, self._c, self._d, theta)
 
     def min_transmission_angle(self):
         """The smallest transmission angle and the crank angle where it occurs, ``(gamma_min, theta_at)``.
@@ -494,4 +503,4 @@ class FourBar:
         >>> round(float(np.degrees(gamma_min)), 4)
         44.4153
         """
-        return min_transmission_angle(self._a, self._b, self._c, self._d)
+        return _TRANSMISSION["min_transmission_angle"](self._a, self._b, self._c, self._d)

@@ -2,9 +2,9 @@
 
 The formulas come from ``derivations/planar/assur_groups.md`` through
 ``mech._generated.assur_groups``; this module builds the linkage, orders the steps and
-reports failures. The records it is built from are in ``_linkage_records``, the state
-carried from one group to the next and the solver of each step in ``_linkage_groups``, the
-solution in ``_linkage_solution``.
+reports failures. The records it is built from and solved into are in ``_linkage_records``,
+the state carried from one group to the next and the solver of each step in
+``_linkage_groups``.
 """
 
 from __future__ import annotations
@@ -17,9 +17,9 @@ from mech._errors import AssemblyError, InputTypeError
 from mech.planar.kinematics import _linkage_blocks, _linkage_modes
 from mech.planar.kinematics._linkage_groups import STEPS, _State
 from mech.planar.kinematics._linkage_records import (
-    GROUND, AssemblyInterval, Guide, Slide, _LENGTH_KEYS, _Step, _for, _in_unit, _looks_numeric, _magnitudes, _two,
+    GROUND, AssemblyInterval, Guide, LinkageSolution, Slide, _LENGTH_KEYS, _Step, _for, _in_unit, _looks_numeric,
+    _magnitudes, _two,
 )
-from mech.planar.kinematics._linkage_solution import LinkageSolution
 from mech._validate import (
     bool_flag, branch_sign, finite_array, integer, MAX_COUNT, nonnegative_int, planar_point, positive_length, real_number, common_shape)
 

@@ -19,7 +19,7 @@ import numpy as np
 from mech.planar.kinematics._linkage_groups import guide_state
 from mech.planar.kinematics._linkage_records import Slide
 
-__all__ = ["Schedule", "find_schedule", "modes"]
+__all__ = []        # internal to the subpackage: nothing here is re-exported
 
 # samples per crank turn when looking for the extremes of a group's distance; a change
 # point is found whenever the extremes are further apart than two samples

@@ -35,7 +35,6 @@ __all__ = [
     "Stroke",
     "ram_stroke",
     "step_ratio",
-    "sketch",
 ]
 
 #: Theo Jansen's published link lengths ("holy numbers") of one Strandbeest leg.

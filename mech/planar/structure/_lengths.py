@@ -14,7 +14,7 @@ from mech._generated import fourbar_position as _gen
 from mech._scaling import DEAD_POINT_RTOL
 from mech._validate import positive_length
 
-__all__ = ["assembly_gaps", "dead_points_near", "fourbar_lengths", "fourbar_lengths_resolved"]
+__all__ = []        # internal to the subpackage: nothing here is re-exported
 
 
 def fourbar_lengths(a, b, c, d):

@@ -1,6 +1,6 @@
 """Searching quick-return designs, and the textbook's tables 2-3, 2-4 and 2-5.
 
-Every design is measured by `simulate_quick_return` (``_quick_return_check``). The
+Every design is measured by `simulate_quick_return` (``_quick_return_design``). The
 families search the free angle alpha of the crank-rocker and the slider-crank (Ex. 2-17,
 2-18) for the largest smallest transmission angle, or for every design that keeps it above
 a permitted value; the tables are regenerated from those searches.
@@ -21,12 +21,12 @@ import numpy as np
 
 from mech._validate import branch_sign, finite_array, nonnegative_int, positive_length, real_number
 from mech.planar.structure._quick_return import extreme_angle
-from mech.planar.synthesis._quick_return_check import _optimize
 from mech.planar.synthesis._quick_return_design import (
     _angle_in,
     _build_crank_rocker,
     _build_slider,
     _crank_rocker_unit,
+    _optimize,
     _slider_theta,
     _slider_unit,
     _theta,

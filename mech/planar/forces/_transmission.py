@@ -8,6 +8,7 @@ from mech._generated.transmission_angle import (
 )
 from mech._errors import AssemblyError
 from mech._validate import bool_flag, finite_array
+from mech.planar.kinematics._fourbar import register_transmission
 from mech.planar.structure._lengths import (
     assembly_gaps, dead_points_near, fourbar_lengths, fourbar_lengths_resolved,
 )
@@ -86,7 +87,7 @@ def transmission_angle(a, b, c, d, theta, *, strict=False):
     Examples
     --------
     >>> import numpy as np
-    >>> from mech.planar.structure._transmission import transmission_angle
+    >>> from mech.planar.forces._transmission import transmission_angle
     >>> round(float(np.degrees(transmission_angle(30, 70, 60, 80, 0.0))), 4)
     44.4153
     >>> np.degrees(transmission_angle(30, 70, 60, 80, [np.pi / 2, np.pi])).round(4)
@@ -143,7 +144,7 @@ def min_transmission_angle(a, b, c, d):
     The textbook's check case (F55): delta_min = 44.4153 deg at theta = 0.
 
     >>> import numpy as np
-    >>> from mech.planar.structure._transmission import min_transmission_angle
+    >>> from mech.planar.forces._transmission import min_transmission_angle
     >>> gamma_min, theta_at = min_transmission_angle(30, 70, 60, 80)
     >>> round(float(np.degrees(gamma_min)), 4), theta_at
     (44.4153, 0.0)
@@ -161,3 +162,6 @@ def min_transmission_angle(a, b, c, d):
     with np.errstate(invalid="ignore"):
         theta_locks = fourbar_crank_angle_at_diagonal(a, d, np.array([b + c, abs(b - c)]))
     return 0.0, float(np.nanmin(theta_locks))
+
+
+register_transmission(transmission_angle=transmission_angle, min_transmission_angle=min_transmission_angle)
