@@ -1,11 +1,14 @@
-"""The immutable result record shared by every `solve` of the package."""
+"""The immutable result records shared by the solvers: `Pose` (every `solve`) and `AssemblyRange`."""
 
 import functools
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Pose", "mask_singular_rates", "quiet_overflow"]
+from mech._validate import finite_array
+
+__all__ = ["AssemblyRange", "Pose", "mask_singular_rates", "quiet_overflow"]
 
 
 class Pose:
@@ -168,3 +171,32 @@ def mask_singular_rates(fields, names):
     fields["assembled"] = valid[()]
     fields["valid"] = ok[()]
     return fields
+
+
+@dataclass(frozen=True)
+class AssemblyRange:
+    """Input angles where a linkage assembles (`RSSR.assembly_range`, `SphericalFourBar.assembly_range`).
+
+    Attributes
+    ----------
+    intervals : ndarray, shape (k, 2)
+        Closed intervals ``[start, end]`` of crank angle, counter-clockwise from start to
+        end, with ``start`` in [-pi, pi) and ``end > start`` (``end`` may exceed pi). At
+        each end A**2 + B**2 = C**2: a limit position, where the two branches meet.
+        Empty when the crank turns fully or never assembles.
+    full_turn : bool
+        True when the linkage assembles at every crank angle.
+    """
+
+    intervals: np.ndarray
+    full_turn: bool
+
+    def contains(self, phi01):
+        """True where the crank angle `phi01` lies in the range."""
+        phi01 = finite_array("phi01", phi01)
+        if self.full_turn:
+            return np.ones(phi01.shape, dtype=bool)
+        inside = np.zeros(phi01.shape, dtype=bool)
+        for start, end in self.intervals:
+            inside |= np.mod(phi01 - start, 2 * np.pi) <= end - start
+        return inside

@@ -39,6 +39,8 @@ __all__ = [
     "nonnegative_int",
     "motion_inputs",
     "vector3",
+    "unit_vector",
+    "proper_rotation",
     "bool_flag",
     "instance",
     "integer",
@@ -305,6 +307,36 @@ def vector3(name, value):
     if arr.ndim == 0 or arr.shape[-1] != 3:
         raise ValueError(f"Expected `{name}` of shape (..., 3), got shape {arr.shape}")
     return arr
+
+
+def unit_vector(name, value, tol=1e-9):
+    """Return ``value``, a 3-vector of length 1 within `tol`, divided by its length.
+
+    The division removes the rounding of a vector typed in to a few digits; a length
+    further than `tol` from 1 raises ValueError naming the argument and its length.
+    """
+    v = np.asarray(real_tuple(name, value, 3), dtype=float)
+    n = float(np.linalg.norm(v))
+    if not abs(n - 1.0) <= tol:
+        raise ValueError(f"Expected `{name}` to be a unit vector, got {value!r} (norm {n!r})")
+    return v / n
+
+
+def proper_rotation(name, value, tol=1e-9):
+    """Return ``value`` as a 3x3 float array after checking it is a proper rotation.
+
+    ``R.T @ R = I`` and ``det R = +1`` within `tol`, entry by entry; a reflection, a scaled
+    or a sheared matrix raises ValueError naming the argument and showing the matrix.
+    """
+    R = finite_array(name, value)
+    if R.shape != (3, 3):
+        raise ValueError(f"Expected `{name}` to be a 3x3 rotation matrix, got shape {R.shape}")
+    # entries of a rotation are at most 1 in size: test that first, so that R.T @ R
+    # cannot overflow
+    if np.max(np.abs(R)) > 1.0 + tol or np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
+        raise ValueError(f"Expected `{name}` to be a proper rotation (R.T @ R = I, det R = +1), "
+                         f"got {np.array2string(R, precision=6)}")
+    return R
 
 
 def branch_sign(value, name="branch"):

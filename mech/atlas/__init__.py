@@ -39,7 +39,8 @@ from mech.atlas._sphere_signature import sphere_signature
 from mech.atlas._sphere_sampling import SphereSamples, sample_sphere_fourbars
 from mech.atlas._sphere_store import SPHERE_ATLAS_VERSION, SphereAtlas
 from mech.atlas._sphere_build import build_sphere_atlas
-from mech.atlas._sphere_search import SphereMatch, find_sphere_linkages, query_sphere, refine_sphere
+from mech.atlas._sphere_fit import SphereMatch
+from mech.atlas._sphere_search import find_sphere_linkages, query_sphere, refine_sphere
 
 __all__ = [
     "ATLAS_VERSION",

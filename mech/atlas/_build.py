@@ -18,7 +18,8 @@ from contextlib import closing
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
-from mech.atlas._sampling import _MAX_SEED, COUPLER, LENGTHS, coupler_curves, sample_fourbars
+from mech.atlas._records import _MAX_SEED, _box
+from mech.atlas._sampling import COUPLER, LENGTHS, coupler_curves, sample_fourbars
 from mech.atlas._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
 from mech.atlas._slider import OFFSETS, RODS, check_mechanism, sample_slider_cranks
 from mech.atlas._store import (
@@ -183,8 +184,6 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
     if lengths is None:
         lengths = RODS if slider else LENGTHS
     if slider:
-        from mech.atlas._sampling import _box
-
         if not _box("lengths", lengths, 2)[0] > 0.0:
             raise ValueError(f"Expected `lengths` > 0, got {_show(lengths)}")
         sample_slider_cranks(0, rods=lengths, offsets=offsets, coupler=coupler,

@@ -9,15 +9,16 @@ the input, where coupler and rocker lie in line. The closed coupler curve of a r
 input runs over the range on one assembly branch and back on the other.
 """
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
 from mech._generated.fourbar_position import fourbar_assembly_gaps, fourbar_position
 from mech._generated.grashof import grashof_margins
 from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal, fourbar_transmission
-from mech._errors import InputTypeError
-from mech._validate import _show, branch_sign, integer, nonnegative_number, real_tuple
+from mech._validate import _show, branch_sign, integer, nonnegative_number
+from mech.atlas._records import _MAX_RATIO, _MAX_SEED, _box, _check_sizes, _Samples  # noqa: F401
+from mech.atlas._slider import slider_points
 from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["FourBarSamples", "sample_fourbars"]
@@ -27,38 +28,6 @@ KINDS = ("crank-rocker", "rocker-crank", "double-crank", "double-rocker", "tripl
 #: Default ranges of the normalised design space (ratios to the ground d = 1, and (u, v)).
 LENGTHS = (0.2, 5.0)
 COUPLER = (-1.0, 2.0, -1.5, 1.5)
-#: The largest ratio of a link to the ground `sample_fourbars` draws.
-_MAX_RATIO = 1e150
-#: The largest seed: an atlas keeps each row's seed in a 64-bit signed integer column.
-_MAX_SEED = 2**63 - 1
-
-
-def _check_sizes(*ranges):
-    """Raise ValueError naming the first of ``(name, given, size)`` whose drawn lengths (as
-    ratios to the ground) may exceed `_MAX_RATIO`: the type, input range and transmission
-    angle use their squares and sums of squares, which must stay finite."""
-    for name, given, size in ranges:
-        if not size <= _MAX_RATIO:
-            raise ValueError(f"Expected `{name}` that keeps every drawn length within {_MAX_RATIO:g} times the "
-                             f"ground (their squares must stay finite), got {_show(given)}")
-
-
-class _Samples:
-    """The methods shared by the sample records (FourBarSamples, SliderCrankSamples, SphereSamples)."""
-
-    def __len__(self):
-        return int(self.a.shape[0])
-
-    def take(self, index):
-        """The samples at `index` (integers, or a boolean mask of length n), as a new record."""
-        pick = rows("index", index, len(self))
-        return type(self)(**{f.name: getattr(self, f.name)[pick] for f in fields(self)})
-
-    def columns(self):
-        """The fields as a dict of arrays, in declaration order."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
-
-
 @dataclass(frozen=True)
 class FourBarSamples(_Samples):
     """Four-bars of the normalised design space, one entry per sample (arrays of shape (n,)).
@@ -128,24 +97,6 @@ class FourBarSamples(_Samples):
         return coupler_curves(self.columns(), samples)
 
 
-def rows(name, index, n):
-    """Check row numbers (an integer, integers, or a boolean mask of length n) of a table of n rows."""
-    if isinstance(index, (int, np.integer)) and not isinstance(index, (bool, np.bool_)):
-        index = [index]
-    if isinstance(index, (bool, np.bool_)) or index is None or isinstance(index, (str, bytes, dict)):
-        raise InputTypeError(f"Expected `{name}` to be row numbers or a boolean mask, got {_show(index)}")
-    try:
-        arr = np.asarray(index)
-    except Exception:
-        raise InputTypeError(f"Expected `{name}` to be row numbers or a boolean mask, got {_show(index)}") from None
-    if arr.dtype.kind == "b" and arr.shape == (n,):
-        return arr
-    if arr.dtype.kind not in "iu" or arr.ndim != 1:
-        raise InputTypeError(f"Expected `{name}` to be row numbers or a boolean mask of length {n}, "
-                             f"got {_show(index)}")
-    if np.any((arr < -n) | (arr >= n)):
-        raise ValueError(f"Expected `{name}` in [-{n}, {n}), got {_show(index)}")
-    return arr
 
 
 def _input_ranges(a, b, c, d, branch):
@@ -191,8 +142,6 @@ def coupler_points(cols, u):
     Columns with an offset ``e`` are slider-cranks (`mech.atlas._slider.slider_points`).
     """
     if "e" in cols:
-        from mech.atlas._slider import slider_points
-
         return slider_points(cols, u)
     a, b, c, d, p, q = (np.asarray(cols[k], dtype=float)[:, None] for k in "abcdpq")
     branch = np.asarray(cols["branch"])[:, None]
@@ -216,14 +165,6 @@ def describe(a, b, c, d, p, q, branch):
         _, g1 = fourbar_transmission(a, b, c, d, np.pi)
     gamma = np.where(full, np.fmin(g0, g1), 0.0)
     return FourBarSamples(a, b, c, d, p, q, branch, _kinds(a, b, c, d), full, lo, hi, gamma, movable, movable)
-
-
-def _box(name, value, size):
-    box = real_tuple(name, value, size)
-    for low, high in zip(box[::2], box[1::2]):
-        if not low < high:
-            raise ValueError(f"Expected `{name}` as increasing (low, high) pairs, got {_show(value)}")
-    return box
 
 
 def sample_fourbars(n, *, seed=0, lengths=LENGTHS, coupler=COUPLER, branch=None, min_transmission=0.0):

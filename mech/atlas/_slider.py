@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import _show, branch_sign, integer, nonnegative_number
-from mech.atlas._sampling import _MAX_SEED, _check_sizes, _Samples
+from mech.atlas._records import _MAX_SEED, _box, _check_sizes, _Samples
 from mech.planar.kinematics._slider_crank import SliderCrank
 
 __all__ = ["SliderCrankSamples", "sample_slider_cranks"]
@@ -196,8 +196,6 @@ def sample_slider_cranks(n, *, seed=0, rods=RODS, offsets=OFFSETS, coupler=SLIDE
     >>> bool((s.full_turn == (s.b >= 1 + abs(s.e))).all())
     True
     """
-    from mech.atlas._sampling import _box
-
     n = integer("n", n, minimum=0, maximum=10**7)
     seed = integer("seed", seed, minimum=0, maximum=_MAX_SEED)
     low, high = _box("rods", rods, 2)

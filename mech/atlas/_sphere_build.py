@@ -14,7 +14,7 @@ import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
 from mech.atlas._build import _blocks, _take_blocks, block_seed
-from mech.atlas._sampling import _MAX_SEED
+from mech.atlas._records import _MAX_SEED
 from mech.atlas._signature import HARMONICS, SAMPLES
 from mech.atlas._sphere_sampling import ARCS, COUPLER_ARC, SphereSamples, sample_sphere_fourbars, sphere_curves
 from mech.atlas._sphere_signature import _resample_closed, _signature_rows

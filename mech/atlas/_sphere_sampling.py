@@ -18,7 +18,8 @@ import numpy as np
 from mech._generated.spherical_fourbar import spherical_fourbar_limit_theta, spherical_fourbar_position
 from mech._generated.spherical_types import spherical_type_slacks
 from mech._validate import _show, branch_sign, integer, nonnegative_number, real_tuple
-from mech.atlas._sampling import _MAX_SEED, KINDS, _Samples
+from mech.atlas._records import _MAX_SEED, _Samples
+from mech.atlas._sampling import KINDS
 
 __all__ = ["SphereSamples", "sample_sphere_fourbars"]
 

@@ -21,6 +21,7 @@ from types import MappingProxyType
 from mech.exercises import (chapter2, chapter2_analysis, chapter2_instant_centres, chapter2_reactions,
                             chapter2_relative_motion)
 from mech.exercises._core import Exercise, Interval, Parameter, Part, Result, Solution
+from mech.exercises._core import register as _register
 
 __all__ = [
     "EXERCISES",
@@ -40,6 +41,7 @@ __all__ = [
 
 #: Every exercise with a generated solution, keyed by the textbook's number.
 EXERCISES = MappingProxyType({ex.number: ex for ex in chapter2.EXERCISES})
+_register(EXERCISES.values())
 
 
 def get(number):

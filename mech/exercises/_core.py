@@ -376,6 +376,17 @@ def check_links_close(*, resolved=False, **links):
                              f"{rest!r}), got {shown}")
 
 
+#: Every exercise by its number, filled by `register` when `mech.exercises` is imported (the
+#: package imports the chapters, which build on this module, so the table is full before a
+#: solver runs).
+_BY_NUMBER = {}
+
+
+def register(exercises):
+    """Record `exercises` by number, for the messages of `names_givens`."""
+    _BY_NUMBER.update((ex.number, ex) for ex in exercises)
+
+
 def names_givens(number):
     """Decorate a solver or layout function of exercise ``number`` (its first argument the
     givens, complete or partial) so that an error raised deeper down, which names the
@@ -393,8 +404,7 @@ def names_givens(number):
             except (ValueError, ZeroDivisionError, OverflowError, FloatingPointError) as exc:
                 if getattr(exc, "_names_givens", False):
                     raise
-                from mech.exercises import get
-                given = get(number).params(params)
+                given = _BY_NUMBER[number].params(params)
                 msg = str(exc)
                 if isinstance(exc, ValueError) and any(f"`{k}`" in msg for k in given):
                     raise

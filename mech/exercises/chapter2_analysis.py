@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 
+from mech._geometry import acute_angle as _acute
 from mech._validate import branch_sign, positive_length, real_number
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 from mech.planar import (FourBar, Guide, GuideBar, Linkage, grashof, higher_pair, instant_centres, omega_ratio,
@@ -113,12 +114,6 @@ def _extremum(f, *, largest=True, samples=2048, rounds=7, zoom=41):
         at, value = grid[best], y[best]
         step = 2.0 * step / (zoom - 1)
     return float(sign * value), float(at % _TURN)
-
-
-def _acute(direction, guide):
-    """Acute angle between unit directions (complex) ``direction`` and ``guide``."""
-    u = direction * np.conj(guide)
-    return np.arctan2(np.abs(np.imag(u)), np.abs(np.real(u)))
 
 
 def _brentq(f, lo, hi):

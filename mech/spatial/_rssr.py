@@ -1,7 +1,5 @@
 """The spatial RSSR four-bar of (2-69) to (2-71): positions, rates, assembly range."""
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from mech._errors import AssemblyError
@@ -11,7 +9,7 @@ from mech._validate import (
     bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_number, positive_length, real_number,
     real_tuple,
 )
-from mech._pose import _keep_promise, mask_singular_rates, Pose
+from mech._pose import _keep_promise, AssemblyRange, mask_singular_rates, Pose
 from mech._scaling import DEAD_POINT_RTOL, length_scale
 from mech.spatial._rssr_change import change_points
 
@@ -56,35 +54,6 @@ class RSSRPose(Pose):
 
     _ORDER_OF = {"omega_output": 1, "vB": 1, "vC": 1,
                  "alpha_output": 2, "aB": 2, "aC": 2}
-
-
-@dataclass(frozen=True)
-class AssemblyRange:
-    """Crank angles where an RSSR assembles (returned by `RSSR.assembly_range`).
-
-    Attributes
-    ----------
-    intervals : ndarray, shape (k, 2)
-        Closed intervals ``[start, end]`` of crank angle, counter-clockwise from start to
-        end, with ``start`` in [-pi, pi) and ``end > start`` (``end`` may exceed pi). At
-        each end A**2 + B**2 = C**2: a limit position, where the two branches meet.
-        Empty when the crank turns fully or never assembles.
-    full_turn : bool
-        True when the linkage assembles at every crank angle.
-    """
-
-    intervals: np.ndarray
-    full_turn: bool
-
-    def contains(self, phi01):
-        """True where the crank angle `phi01` lies in the range."""
-        phi01 = finite_array("phi01", phi01)
-        if self.full_turn:
-            return np.ones(phi01.shape, dtype=bool)
-        inside = np.zeros(phi01.shape, dtype=bool)
-        for start, end in self.intervals:
-            inside |= np.mod(phi01 - start, 2 * np.pi) <= end - start
-        return inside
 
 
 class RSSR:

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._validate import finite_array, vector3
-from mech.spherical._coordinates import _cross_accurate, _vectors, distance, local_frame
+from mech.spherical._coordinates import _cross_accurate, distance, local_frame, unit_vectors
 from mech.spherical._coordinates import _norm as _robust_norm
 from mech.spherical._rigid_body import _great_circle_normal
 
@@ -101,7 +101,7 @@ def great_circle_through(a, b):
     >>> great_circle_through([1, 0, 0], [0, 1, 0]).pole
     array([0., 0., 1.])
     """
-    _, _, c = _great_circle_normal(_vectors("a", a), _vectors("b", b))
+    _, _, c = _great_circle_normal(unit_vectors("a", a), unit_vectors("b", b))
     pole = c / _norm(c)[..., None]
     return Circle(pole, np.full(pole.shape[:-1], np.pi / 2))
 
@@ -139,7 +139,7 @@ def great_circle_at(a, inclination):
     >>> great_circle_at([0, 0, 1], np.pi / 2).pole.round(12) + 0.0
     array([-1.,  0.,  0.])
     """
-    a = _vectors("a", a)
+    a = unit_vectors("a", a)
     inc = finite_array("inclination", inclination)[..., None]
     ex, ey = local_frame(a)
     pole = np.cross(a, ex * np.cos(inc) + ey * np.sin(inc))
@@ -177,7 +177,7 @@ def distance_to_great_circle(p, pole):
     >>> distance_to_great_circle([[0, 0.6, 0.8], [0, 0, -1]], [0, 0, 1])
     array([ 0.92729522, -1.57079633])
     """
-    p, n = np.broadcast_arrays(_vectors("p", p), _vectors("pole", pole))
+    p, n = np.broadcast_arrays(unit_vectors("p", p), unit_vectors("pole", pole))
     c = _cross_accurate(p, n)
     return np.arctan2(_dot(p, n), _norm(c))
 
@@ -215,8 +215,8 @@ def collinearity(a, b, c):
     >>> float(r.det), round(float(r.distance), 12)
     (0.8, 0.927295218002)
     """
-    a, b, n = _great_circle_normal(_vectors("a", a), _vectors("b", b))
-    c = _vectors("c", c)
+    a, b, n = _great_circle_normal(unit_vectors("a", a), unit_vectors("b", b))
+    c = unit_vectors("c", c)
     a, b, c, n = np.broadcast_arrays(a, b, c, n)
     det = _dot(np.cross(b - a, c - a), a)
     pole = n / _norm(n)[..., None]
@@ -254,7 +254,7 @@ def angle_between(pole1, pole2):
     >>> float(angle_between([0, 0, 1], [0, 1, 0]))
     1.5707963267948966
     """
-    return distance(_vectors("pole1", pole1), _vectors("pole2", pole2))
+    return distance(unit_vectors("pole1", pole1), unit_vectors("pole2", pole2))
 
 
 def intersect(pole1, pole2):
@@ -290,7 +290,7 @@ def intersect(pole1, pole2):
     >>> x.point, x.antipode, float(x.angle)
     (array([0., 1., 0.]), array([ 0., -1.,  0.]), 1.5707963267948966)
     """
-    n1, n2, c = _great_circle_normal(_vectors("pole1", pole1), _vectors("pole2", pole2),
+    n1, n2, c = _great_circle_normal(unit_vectors("pole1", pole1), unit_vectors("pole2", pole2),
                                      "pole1", "pole2")
     x = c / _norm(c)[..., None]
     return Intersection(_frozen(x + 0.0), _frozen(0.0 - x), _frozen(distance(n1, n2)))
@@ -326,7 +326,7 @@ def bisector(a, b):
     >>> bisector([1, 0, 0], [0, 1, 0]).pole.round(12)
     array([ 0.70710678, -0.70710678,  0.        ])
     """
-    a, b = np.broadcast_arrays(_vectors("a", a), _vectors("b", b))
+    a, b = np.broadcast_arrays(unit_vectors("a", a), unit_vectors("b", b))
     d = a - b
     n = _norm(d)
     if np.any(n == 0.0):
@@ -371,7 +371,7 @@ def circle_through(a, b, c):
     >>> float(circle_through([1, 0, 0], [0, 1, 0], [-1, 0, 0]).radius)
     1.5707963267948966
     """
-    a, b, c = np.broadcast_arrays(_vectors("a", a), _vectors("b", b), _vectors("c", c))
+    a, b, c = np.broadcast_arrays(unit_vectors("a", a), unit_vectors("b", b), unit_vectors("c", c))
     n = np.cross(b - a, c - a)
     size = _norm(n)
     if np.any(size == 0.0):

@@ -29,7 +29,7 @@ def _norm(v):
     return big * np.sqrt(np.sum(w * w, axis=-1))
 
 
-def _vectors(name, value):
+def unit_vectors(name, value):
     """Return ``value`` as a float array of shape (..., 3) with finite, non-zero rows.
 
     Rows whose norm is 1 to within a few rounding errors are used as given (dividing by a
@@ -143,7 +143,7 @@ def from_xyz(v):
     >>> from_xyz([[0.0, 0.0, 2.0], [0.0, -1.0, 0.0]])
     (array([ 0.        , -1.57079633]), array([1.57079633, 0.        ]))
     """
-    v = _vectors("v", v)
+    v = unit_vectors("v", v)
     x, y, z = v[..., 0], v[..., 1], v[..., 2]
     rho = np.hypot(x, y)
     lon = np.where(rho > 0.0, np.arctan2(y, x), 0.0)
@@ -188,7 +188,7 @@ def local_frame(p):
     >>> ex, ey
     (array([[ 0.,  0., -1.]]), array([[0., 1., 0.]]))
     """
-    p = _vectors("p", p)
+    p = unit_vectors("p", p)
     x, y, z = p[..., 0], p[..., 1], p[..., 2]
     rho = np.hypot(x, y)
     positive = rho > 0.0
@@ -243,8 +243,8 @@ def distance(p, q):
     >>> float(distance(p, q)), float(np.arccos(p @ q / np.linalg.norm(q)))
     (1e-09, 0.0)
     """
-    p = _vectors("p", p)
-    q = _vectors("q", q)
+    p = unit_vectors("p", p)
+    q = unit_vectors("q", q)
     p, q = np.broadcast_arrays(p, q)
     c = _cross_accurate(p, q)
     return np.arctan2(_norm(c), np.sum(p * q, axis=-1))

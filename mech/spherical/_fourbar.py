@@ -8,15 +8,27 @@ from mech._errors import AssemblyError
 from mech._generated import spherical_fourbar as _gen
 from mech.spherical._fourbar_branch import change_gaps, solve_change_point
 from mech._pose import Pose
+from mech._pose import AssemblyRange
 from mech._validate import (
-    arc as _arc, bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_int, real_number, real_tuple,
+    arc as _arc, bool_flag, branch_sign, motion_inputs, nonnegative_int, proper_rotation, real_number, real_tuple,
 )
-from mech.spatial import AssemblyRange
 
 __all__ = ["SphericalFourBar", "SphericalFourBarPose", "ground_frame"]
 
 # rows of the reused work array (NumPy backend): the coupler's relative spin, then the
 # largest kernel's temporaries
+#: The class of `coupler_curve_polynomial` (``[CouplerOctic]``), set by `mech.spherical.path`,
+#: which builds on this module: importing any part of `mech.spherical` runs its
+#: ``__init__``, which imports the path subpackage, so the entry is there before use.
+_COUPLER_POLYNOMIAL = []
+
+
+def register_coupler_polynomial(cls):
+    """Set the class whose ``cls(linkage)`` `SphericalFourBar.coupler_curve_polynomial` returns."""
+    _COUPLER_POLYNOMIAL[:] = [cls]
+    return cls
+
+
 _WORK_ROWS = 1 + max(_gen.WORK_ROWS.values())
 _VECTORS = {0: ("B", "C", "P"),
             1: ("B", "C", "P", "w_input", "w_coupler", "w_output", "vB", "vC", "vP"),
@@ -25,19 +37,6 @@ _VECTORS = {0: ("B", "C", "P"),
 _SCALARS = {0: ("psi",), 1: ("psi", "omega_output"), 2: ("psi", "omega_output", "alpha_output")}
 _RATE_ORDER = {**{k: 1 for k in ("omega_output", "w_input", "w_coupler", "w_output", "vB", "vC", "vP")},
                **{k: 2 for k in ("alpha_output", "dw_input", "dw_coupler", "dw_output", "aB", "aC", "aP")}}
-
-
-def _rotation(frame, tol=1e-9):
-    """Return `frame` as a 3x3 float array after checking it is a proper rotation."""
-    R = finite_array("frame", frame)
-    if R.shape != (3, 3):
-        raise ValueError(f"Expected `frame` to be a 3x3 rotation matrix, got shape {R.shape}")
-    # entries of a rotation are at most 1 in size: test that first, so that R.T @ R
-    # cannot overflow
-    if np.max(np.abs(R)) > 1.0 + tol or np.max(np.abs(R.T @ R - np.eye(3))) > tol or np.linalg.det(R) <= 0.0:
-        raise ValueError("Expected `frame` to be a proper rotation (R.T @ R = I, det R = +1), "
-                         f"got {np.array2string(R, precision=6)}")
-    return R
 
 
 def ground_frame(lon, lat, heading):
@@ -163,7 +162,7 @@ class SphericalFourBar:
         self._gaps = change_gaps(self._a, self._b, self._c, self._d, rtol)
         self._branch = branch_sign(branch)
         self._coupler = real_tuple("coupler", coupler, 2)
-        self._frame = None if frame is None else _rotation(frame)
+        self._frame = None if frame is None else proper_rotation("frame", frame)
 
     a = property(lambda self: self._a, doc="Input arc AB.")
     b = property(lambda self: self._b, doc="Coupler arc BC.")
@@ -477,9 +476,7 @@ class SphericalFourBar:
         >>> bool(np.all(np.abs(F) < 1e-12 * np.linalg.norm(grad, axis=-1)))
         True
         """
-        from mech.spherical.path import CouplerOctic
-
-        return CouplerOctic(self)
+        return _COUPLER_POLYNOMIAL[0](self)
 
     def coupler_curve(self, n=721):
         """The coupler point over the assembly range on this branch, for figures.

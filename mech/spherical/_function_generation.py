@@ -12,9 +12,10 @@ import numpy as np
 
 from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_fourbar_abc
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
+from mech._geometry import wrap_angle
+from mech._spacing import chebyshev_spacing
 from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, finite_result, function_pairs,
-                            integer, naming,
-                            MAX_COUNT, option, real_number)
+                            naming, option, real_number)
 
 __all__ = [
     "FunctionGenerator",
@@ -26,11 +27,6 @@ __all__ = [
 ]
 
 _DENSE = 721          # samples of the input range for the limit-position check
-
-
-def _wrap(angle):
-    """Angle wrapped to (-pi, pi]."""
-    return np.arctan2(np.sin(angle), np.cos(angle))
 
 
 def _simulate(arcs, theta, branch):
@@ -138,48 +134,6 @@ def arcs_from_coefficients(k1, k2, k3, k4):
     return np.array([a, b, c, d], dtype=float)
 
 
-def chebyshev_spacing(x0, x1, n):
-    """Chebyshev spacing of `n` precision points over the input range [x0, x1].
-
-    x_i = (x0 + x1)/2 - (x1 - x0)/2 cos((2i - 1) pi / (2n)), i = 1..n (the textbook's F92).
-
-    Parameters
-    ----------
-    x0, x1 : float
-        Ends of the range, x0 < x1.
-    n : int
-        Number of points, >= 1.
-
-    Returns
-    -------
-    x : ndarray, shape (n,)
-        Increasing.
-
-    Raises
-    ------
-    ValueError
-        If ``x1 <= x0`` or `n` is not a positive integer.
-
-    Notes
-    -----
-    Page ``deriv-spherical-function-generation``. This is the corrected formula: the planar
-    textbook's Ex. 2-16 centred its nodes on the half-width instead of the middle of the
-    interval (row 53 of the errata page, ``book/errata.md``).
-
-    Examples
-    --------
-    >>> from mech.spherical._function_generation import chebyshev_spacing
-    >>> chebyshev_spacing(1.0, 10.0, 3).round(5)
-    array([1.60289, 5.5    , 9.39711])
-    """
-    x0, x1 = real_number("x0", x0), real_number("x1", x1)
-    if not x1 > x0:
-        raise ValueError(f"Expected `x1` > `x0`, got x0 = {x0!r}, x1 = {x1!r}")
-    n = integer("n", n, minimum=1, maximum=MAX_COUNT)
-    i = np.arange(1, n + 1)
-    return 0.5 * (x0 + x1) - 0.5 * (x1 - x0) * np.cos((2 * i - 1) * np.pi / (2 * n))
-
-
 class FunctionGenerator:
     """A spherical four-bar designed to generate y = f(x): psi - psi0 = f(theta - theta0).
 
@@ -224,14 +178,14 @@ class FunctionGenerator:
         """Generated output rotation psi(theta0 + x) - psi0, wrapped to (-pi, pi]; NaN
         where the linkage does not assemble."""
         psi, _ = _simulate(self.arcs, self.theta0 + finite_array("x", x), self.branch)
-        return _wrap(psi - self.psi0)
+        return wrap_angle(psi - self.psi0)
 
     def structural_error(self, x, y):
         """Structural error psi_sim(theta0 + x) - (psi0 + y), wrapped to (-pi, pi], eq. (7)."""
         x, y = finite_array("x", x), finite_array("y", y)
         common_shape(x=x, y=y)
         psi, _ = _simulate(self.arcs, self.theta0 + x, self.branch)
-        return _wrap(psi - self.psi0 - y)
+        return wrap_angle(psi - self.psi0 - y)
 
     def points(self, x):
         """Joint points A, B, C, D (unit vectors, shape (..., 3) each) at input rotations `x`,
@@ -425,9 +379,9 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=None, keep_defective=Fals
             p0, k = p0 + np.pi, k * np.array([1, 1, -1, -1])
         if theta0 is None and k[1] < 0:       # the twin with B at its antipode
             t0, k = t0 + np.pi, k * np.array([1, -1, 1, -1])
-        t0 = t0 if theta0 is not None else float(_wrap(t0))
-        p0 = p0 if psi0 is not None else float(_wrap(p0))
-        if any(abs(_wrap(t0 - s)) < 1e-7 and abs(_wrap(p0 - q)) < 1e-7 for s, q in seen):
+        t0 = t0 if theta0 is not None else float(wrap_angle(t0))
+        p0 = p0 if psi0 is not None else float(wrap_angle(p0))
+        if any(abs(wrap_angle(t0 - s)) < 1e-7 and abs(wrap_angle(p0 - q)) < 1e-7 for s, q in seen):
             continue
         seen.append((t0, p0))
         try:
@@ -524,7 +478,7 @@ def least_squares(x, y, theta0, psi0, *, kind="structural", fit_start=False, sta
             stalled = np.sqrt(np.maximum(-disc, 0.0))
             A, B, C = spherical_fourbar_abc(*arcs, t0 + x)
             at_limit = abc_solve(A, B, C, 0.0, -branch)
-            return np.r_[_wrap(np.where(np.isnan(psi), at_limit, psi) - p0 - y), stalled]
+            return np.r_[wrap_angle(np.where(np.isnan(psi), at_limit, psi) - p0 - y), stalled]
 
         p = np.r_[start.arcs, (start.theta0, start.psi0) if fit_start else ()]
         low = np.r_[np.full(4, 1e-6), (-np.inf, -np.inf) if fit_start else ()]

@@ -13,7 +13,8 @@ repeats until the largest error equals the levelled one.
 import numpy as np
 
 from mech._validate import function_pairs, integer, naming, nonnegative_number, real_number
-from mech.spherical._function_generation import FunctionGenerator, _diagnose, _simulate, _wrap, least_squares
+from mech._geometry import wrap_angle
+from mech.spherical._function_generation import FunctionGenerator, _diagnose, _simulate, least_squares
 
 __all__ = ["minimax"]
 
@@ -115,7 +116,7 @@ def minimax(x, y, theta0, psi0, *, start=None, tol=1e-10, max_iter=40):
 
     def error(arcs, where=slice(None)):
         psi, disc = _simulate(arcs, theta0 + x[where], branch)
-        return _wrap(np.where(np.isnan(psi), np.pi, psi) - psi0 - y[where])
+        return wrap_angle(np.where(np.isnan(psi), np.pi, psi) - psi0 - y[where])
 
     def reference(e):
         ref = _exchange(e, m)

@@ -11,7 +11,7 @@ import numpy as np
 
 from mech._generated.spherical_calculus import sph_rotation
 from mech._validate import common_shape, finite_array
-from mech.spherical._coordinates import _cross_accurate, _norm, _vectors, local_frame
+from mech.spherical._coordinates import _cross_accurate, _norm, local_frame, unit_vectors
 
 __all__ = ["tangent", "inclination", "point_at", "rotation_matrix", "rotate_about", "turn",
            "angle_at", "triangle_point", "velocity"]
@@ -69,7 +69,7 @@ def tangent(a, b):
     >>> tangent([0, 0, 1], [0, 1, 1]).round(12) + 0.0
     array([0., 1., 0.])
     """
-    a, b, c = _great_circle_normal(_vectors("a", a), _vectors("b", b))
+    a, b, c = _great_circle_normal(unit_vectors("a", a), unit_vectors("b", b))
     t = np.cross(c, a)
     return t / _norm(t)[..., None]
 
@@ -109,7 +109,7 @@ def inclination(a, b):
     >>> inclination([0, 0, 1], [[1, 0, 1], [-1, 0, 1]])
     array([0.        , 3.14159265])
     """
-    a, b, _ = _great_circle_normal(_vectors("a", a), _vectors("b", b))
+    a, b, _ = _great_circle_normal(unit_vectors("a", a), unit_vectors("b", b))
     ex, ey = local_frame(a)
     d = np.where((_dot(a, b) >= 0.0)[..., None], b - a, b + a)
     return np.arctan2(_dot(d, ey), _dot(d, ex))
@@ -152,7 +152,7 @@ def point_at(a, arc, inclination):
     array([[ 0.995004,  0.      , -0.099833],
            [ 0.980067,  0.      , -0.198669]])
     """
-    a = _vectors("a", a)
+    a = unit_vectors("a", a)
     arc = finite_array("arc", arc)[..., None]
     inc = finite_array("inclination", inclination)[..., None]
     common_shape(**{"a": a, "arc": arc, "inclination": inc})
@@ -196,7 +196,7 @@ def rotation_matrix(axis, angle):
            [ 1.,  0.,  0.],
            [ 0.,  0.,  1.]])
     """
-    k = _vectors("axis", axis)
+    k = unit_vectors("axis", axis)
     angle = finite_array("angle", angle)
     common_shape(axis=k[..., 0], angle=angle)
     entries = np.broadcast_arrays(*sph_rotation(k[..., 0], k[..., 1], k[..., 2], angle))
@@ -243,8 +243,8 @@ def rotate_about(p, axis, angle):
     array([[ 1.,  0.,  0.],
            [ 0., -1.,  0.]])
     """
-    p = _vectors("p", p)
-    k, angle = _vectors("axis", axis), finite_array("angle", angle)
+    p = unit_vectors("p", p)
+    k, angle = unit_vectors("axis", axis), finite_array("angle", angle)
     common_shape(p=p[..., 0], axis=k[..., 0], angle=angle)
     return np.einsum("...ij,...j->...i", rotation_matrix(k, angle), p)
 
@@ -282,7 +282,7 @@ def turn(a, b, gamma):
     >>> turn([0, 0, 1], [1, 0, 1], np.pi / 2).round(12) + 0.0
     array([0.        , 0.70710678, 0.70710678])
     """
-    a, b, gamma = _vectors("a", a), _vectors("b", b), finite_array("gamma", gamma)
+    a, b, gamma = unit_vectors("a", a), unit_vectors("b", b), finite_array("gamma", gamma)
     return rotate_about(b, a, gamma)
 
 
@@ -320,9 +320,9 @@ def angle_at(a, b, c):
     >>> angle_at([0, 0, 1], [1, 0, 0], [[0, -1, 0], [-1, 0, 0]])
     array([-1.57079633,  3.14159265])
     """
-    a = _vectors("a", a)
-    _, _, u = _great_circle_normal(a, _vectors("b", b), "a", "b")
-    _, _, w = _great_circle_normal(a, _vectors("c", c), "a", "c")
+    a = unit_vectors("a", a)
+    _, _, u = _great_circle_normal(a, unit_vectors("b", b), "a", "b")
+    _, _, w = _great_circle_normal(a, unit_vectors("c", c), "a", "c")
     u, w, a = np.broadcast_arrays(u, w, a)
     return np.arctan2(_dot(a, np.cross(u, w)), _dot(u, w))
 
@@ -403,4 +403,4 @@ def velocity(omega, p):
     omega = finite_array("omega", omega)
     if omega.ndim == 0 or omega.shape[-1] != 3:
         raise ValueError(f"Expected `omega` of shape (..., 3), got shape {omega.shape}")
-    return np.cross(omega, _vectors("p", p))
+    return np.cross(omega, unit_vectors("p", p))

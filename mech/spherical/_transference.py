@@ -10,6 +10,7 @@ import numpy as np
 
 from mech._generated import one_equation as _abc
 from mech._generated import transference as _gen
+from mech._geometry import cross_components
 from mech._scaling import length_scale
 from mech._validate import (
     branch_sign, finite_array, finite_result, nonnegative_number, positive_length, real_number,
@@ -107,10 +108,6 @@ def _unit_scale(u):
     return tuple(x * k1 * k2 for x in u)                                   # steps for subnormals
 
 
-def _cross(u, v):
-    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-
-
 def _dot(u, v):
     return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
 
@@ -159,9 +156,9 @@ def dual_fourbar_joints(a_hat, c_hat, d_hat, theta_hat, psi_hat, *, rtol=2.0**-2
     # each normal scaled by the size of its real part (a positive real factor leaves both
     # parts of the angles unchanged), so tiny arcs neither underflow nor divide by zero
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):   # checked below
-        x2, x3, x4 = (_unit_scale(x) for x in (_cross(A, B), _cross(B, C), _cross(C, D)))
-        phi23 = np.arctan2(_dot(_cross(x2, x3), B), _dot(x2, x3))
-        phi34 = np.arctan2(_dot(_cross(x3, x4), C), _dot(x3, x4))
+        x2, x3, x4 = (_unit_scale(x) for x in (cross_components(A, B), cross_components(B, C), cross_components(C, D)))
+        phi23 = np.arctan2(_dot(cross_components(x2, x3), B), _dot(x2, x3))
+        phi34 = np.arctan2(_dot(cross_components(x3, x4), C), _dot(x3, x4))
     for value, what in ((phi23, "the dual angle phi23"), (phi34, "the dual angle phi34")):
         finite_result(np.stack(np.broadcast_arrays(value.real_part, value.dual_part)), what,
                       a_hat=_shown(a_hat), c_hat=_shown(c_hat), d_hat=_shown(d_hat))

@@ -5,21 +5,7 @@ and moving centrodes of the coupler (example 2-4), and the three Roberts-Chebysh
 cognates that trace one coupler curve, and the implicit coupler sextic.
 """
 
-from mech.planar.coupler._atlas import CouplerDashes, coupler_dashes
-from mech.planar.coupler._centrodes import CentrodeSegment, CouplerCentrodes, coupler_centrodes
-from mech.planar.coupler._cognates import Cognate, CognatePose, Cognates, TenBarPose, cognates
-from mech.planar.coupler._sextic import coupler_sextic
+from mech._exports import reexport
+from mech.planar.coupler import _atlas, _centrodes, _cognates, _sextic
 
-__all__ = [
-    "CentrodeSegment",
-    "Cognate",
-    "CognatePose",
-    "Cognates",
-    "CouplerCentrodes",
-    "CouplerDashes",
-    "TenBarPose",
-    "cognates",
-    "coupler_centrodes",
-    "coupler_dashes",
-    "coupler_sextic",
-]
+__all__ = reexport(globals(), _atlas, _centrodes, _cognates, _sextic)

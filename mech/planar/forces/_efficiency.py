@@ -15,6 +15,7 @@ import numpy as np
 from mech._generated.efficiency import push_rod as _push_rod
 from mech._generated.efficiency import spreading_wedge, wedge_press as _wedge_press
 from mech._generated.friction import eccentric_clamp
+from mech._geometry import plane_cross
 from mech._validate import bool_flag, common_shape, finite_array, finite_result
 from mech.planar.forces._friction import _nonnegative, _out, _positive, total_reaction
 
@@ -334,10 +335,6 @@ class WedgePressForces:
     R13: object
 
 
-def _cross(u, w):
-    return np.imag(np.conj(u) * w)
-
-
 def wedge_press_forces(Q, lam, phi, *, release=False):
     """Forces on the wedges of the wedge press (example 2-11, Fig. 2-68) under a load Q.
 
@@ -411,8 +408,8 @@ def wedge_press_forces(Q, lam, phi, *, release=False):
     u23 = total_reaction(n23, v3 - v2, mu)                   # wedge 2 on wedge 3
     u13 = total_reaction(-1 + 0 * lam, v3, mu)               # guide on wedge 3
     # per unit load: wedge 3, a u23 + b u13 = 1j; wedge 2, p + c u12 = a u23 (R32 = -a u23)
-    a = _cross(1j, u13) / _cross(u23, u13)
-    b = _cross(u23, 1j) / _cross(u23, u13)
+    a = plane_cross(1j, u13) / plane_cross(u23, u13)
+    b = plane_cross(u23, 1j) / plane_cross(u23, u13)
     R23, R13 = a * u23, b * u13
     R12 = np.imag(R23) / np.imag(u12) * u12
     P = np.real(R23 - R12) + 0j

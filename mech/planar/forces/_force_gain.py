@@ -287,7 +287,7 @@ def fourbar_dead_points(a, b, c, d, *, branch=1):
     >>> [round(float(np.degrees(p)), 4) for p in dp.inputs], dp.collinear
     ([79.7134, 125.6853], ('extended', 'folded'))
     """
-    from mech.planar.kinematics._fourbar import fourbar_lengths
+    from mech.planar.structure._lengths import fourbar_lengths
 
     # angles only: lengths scaled by a power of two, so no product of two overflows
     a, b, c, d = fourbar_lengths(a, b, c, d)[0]

@@ -13,13 +13,14 @@ import numpy as np
 
 from mech._generated import pressure_angle as _g
 from mech._generated.transmission_angle import fourbar_transmission
+from mech._geometry import acute_angle
 from mech._scaling import length_scale
 from mech._validate import (
     bool_flag, finite_array, instance, known_name, planar_points, positive_length, real_number,
 )
 from mech.planar.structure._grashof import grashof
-from mech.planar.forces._transmission import _lengths as _fourbar_lengths, at_dead_points, check_assembled
-from mech.planar.kinematics._fourbar import fourbar_lengths_resolved
+from mech.planar.forces._transmission import at_dead_points, check_assembled
+from mech.planar.structure._lengths import fourbar_lengths, fourbar_lengths_resolved
 from mech.planar.kinematics._linkage import LinkageSolution
 
 __all__ = [
@@ -38,11 +39,6 @@ __all__ = [
 
 def _float(x):
     return float(x) if np.ndim(x) == 0 else x
-
-
-def _acute(u, v):
-    u, v = np.asarray(u, complex), np.asarray(v, complex)
-    return _g.acute_angle(u.real, u.imag, v.real, v.imag)
 
 
 def _is_key(value, mapping):
@@ -134,7 +130,7 @@ def pressure_angle(solution, joint, force, *, follower=None):
         if not _is_key(follower, solution.omegas):
             raise ValueError(f"Expected `follower` to be a moving link, got {follower!r}")
         v = _follower_velocity(solution, joint, follower)
-    return _float(_acute(u, v))
+    return _float(acute_angle(u, v))
 
 
 def joint_transmission_angle(solution, joint, force, *, follower=None, pivot=None):
@@ -179,7 +175,7 @@ def joint_transmission_angle(solution, joint, force, *, follower=None, pivot=Non
     known_name("joint", joint, tuple(solution.points))
     known_name("pivot", pivot, tuple(solution.points))
     u = _force_direction(solution, joint, force)
-    return _float(_acute(u, solution.points[joint] - solution.points[pivot]))
+    return _float(acute_angle(u, solution.points[joint] - solution.points[pivot]))
 
 
 def fourbar_pressure_angle(a, b, c, d, theta, *, strict=False):
@@ -220,7 +216,7 @@ def fourbar_pressure_angle(a, b, c, d, theta, *, strict=False):
     45.5847
     """
     lengths = (a, b, c, d)
-    a, b, c, d = _fourbar_lengths(a, b, c, d)
+    a, b, c, d = fourbar_lengths(a, b, c, d)[0]     # angles only: any power-of-two scale
     theta = finite_array("theta", theta)
     with np.errstate(invalid="ignore"):
         _, gamma = fourbar_transmission(a, b, c, d, theta)

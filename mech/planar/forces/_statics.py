@@ -17,17 +17,13 @@ import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
 from mech._generated import statics as _g
+from mech._geometry import plane_cross
 from mech._validate import common_shape, finite_array, instance, integer, nonnegative_number, planar_points
 from mech.planar.kinematics._linkage import LinkageSolution
 
 __all__ = ["StaticForces", "static_forces", "as_linkage"]
 
 GROUND = "ground"
-
-
-def _cross(a, b):
-    """a x b for complex numbers taken as plane vectors."""
-    return np.imag(np.conj(a) * b)
 
 
 def _re_im(z):
@@ -137,7 +133,7 @@ class _Loads:
         if link == GROUND:
             return
         self.F[link] = self.F.get(link, 0.0) + f
-        self.M[link] = self.M.get(link, 0.0) + _cross(at, f)
+        self.M[link] = self.M.get(link, 0.0) + plane_cross(at, f)
 
     def couple(self, link, m):
         if link != GROUND:
@@ -146,7 +142,7 @@ class _Loads:
     def get(self, link, about):
         """Resultant force and its moment about the point ``about``."""
         F = self.F.get(link, 0.0) + np.zeros(self.shape)
-        return F, self.M.get(link, 0.0) - _cross(about, F)
+        return F, self.M.get(link, 0.0) - plane_cross(about, F)
 
 
 def _linear(sol, loads):

@@ -8,7 +8,8 @@ from mech._generated.transmission_angle import (
 )
 from mech._errors import AssemblyError
 from mech._validate import bool_flag, finite_array
-from mech.planar.kinematics._fourbar import (
+from mech.planar.kinematics._fourbar import register_transmission
+from mech.planar.structure._lengths import (
     assembly_gaps, dead_points_near, fourbar_lengths, fourbar_lengths_resolved,
 )
 from mech.planar.structure._grashof import grashof
@@ -161,3 +162,6 @@ def min_transmission_angle(a, b, c, d):
     with np.errstate(invalid="ignore"):
         theta_locks = fourbar_crank_angle_at_diagonal(a, d, np.array([b + c, abs(b - c)]))
     return 0.0, float(np.nanmin(theta_locks))
+
+
+register_transmission(transmission_angle=transmission_angle, min_transmission_angle=min_transmission_angle)

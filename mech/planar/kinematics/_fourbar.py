@@ -8,12 +8,14 @@ import numpy as np
 from mech import _backend
 from mech._errors import AssemblyError
 from mech._generated import fourbar_position as _gen
-from mech._validate import bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_number, positive_length, real_tuple
+from mech._validate import bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_number, real_tuple
 from mech._pose import Pose, _finite_sum
 from mech._scaling import DEAD_POINT_RTOL
 from mech.planar.kinematics._fourbar_change import change_point_rates, kite_pose
+from mech.planar.structure._lengths import assembly_gaps, dead_points_near, fourbar_lengths
+from mech.planar.structure._limit_positions import limit_positions
 
-__all__ = ["FourBar", "FourBarPose", "fourbar_lengths", "fourbar_inputs"]
+__all__ = ["FourBar", "FourBarPose", "fourbar_inputs"]
 
 
 # rows of the reused work array of a block (NumPy backend): the position kernel's, then S,
@@ -29,54 +31,15 @@ _FIELDS = ("B", "C", "P", "omega_coupler", "omega_output", "vB", "vC", "vP",
 _FIELD_COUNT = {0: 3, 1: 8, 2: 13}
 _COMPLEX = {"B", "C", "P", "vB", "vC", "vP", "aB", "aC", "aP"}
 
-
-def fourbar_lengths(a, b, c, d):
-    """Check four link lengths and scale them so that the longest lies in [1/2, 1).
-
-    Returns ``(lengths, exponent)``: the lengths divided by ``2**exponent``, a power of two,
-    so the scaling is exact, no product of lengths overflows or underflows, and angles do
-    not depend on the unit of length. Raises ValueError naming a length that is not
-    positive and finite, or one that is not shorter than the other three together.
-    """
-    raw = [positive_length(name, value) for name, value in zip("abcd", (a, b, c, d))]
-    exponent = math.frexp(max(raw))[1]
-    scaled = [math.ldexp(x, -exponent) for x in raw]
-    total = math.fsum(scaled)
-    for k, (name, value, x) in enumerate(zip("abcd", raw, scaled)):
-        if x >= total - x:
-            # from the unscaled lengths: scaled, a length 2**-1075 times the longest is 0.0
-            rest = math.fsum(raw[:k] + raw[k + 1:])
-            raise ValueError(
-                f"Expected `{name}` shorter than the other three links together "
-                f"({rest!r}), got {value!r}"
-            )
-    return tuple(scaled), exponent
+#: The transmission-angle functions of `mech.planar.forces`, which builds on this module and
+#: registers them (`register_transmission`): importing any part of `mech.planar` runs the
+#: package's ``__init__``, which imports the forces subpackage, so they are here before use.
+_TRANSMISSION = {}
 
 
-def fourbar_lengths_resolved(a, b, c, d):
-    """`fourbar_lengths`, and every scaled length above 0.0 (for Grashof's rule and limits).
-
-    A length below about 2**-1074 times the longest is valid for `FourBar` (a crank of
-    length 0.0 after scaling), but the helpers that classify the linkage need every scaled
-    length > 0: raise ValueError naming that length with the value given.
-    """
-    scaled, exponent = fourbar_lengths(a, b, c, d)
-    raw = (a, b, c, d)
-    for name, value, x in zip("abcd", raw, scaled):
-        if x == 0.0:
-            longest = max(float(v) for v in raw)
-            raise ValueError(
-                f"Expected `{name}` at least 2**-1074 times the longest link ({longest!r}) "
-                f"so that the linkage can be solved, got {value!r}"
-            )
-    return scaled, exponent
-
-
-def assembly_gaps(a, b, c, d, rtol):
-    """The gaps g2, g3, g4 of unit lengths, each set to 0.0 within ``rtol (a + b + c + d)``."""
-    total = a + b + c + d
-    gaps = [float(g) for g in _gen.fourbar_assembly_gaps(a, b, c, d)]
-    return tuple(0.0 if abs(g) <= rtol * total else g for g in gaps)
+def register_transmission(**functions):
+    """Set the functions behind `FourBar.transmission_angle` and `FourBar.min_transmission_angle`."""
+    _TRANSMISSION.update(functions)
 
 
 class FourBarInputs(NamedTuple):
@@ -131,26 +94,6 @@ def fourbar_inputs(a, b, c, d, coupler=(0.0, 0.0), rtol=1e-12):
     # one sign flip even when both are zero: then the diagonal B->D itself reverses
     return FourBarInputs(lengths, exponent, coupler, (math.ldexp(p, -exponent), math.ldexp(q, -exponent)),
                          rtol, gaps, int(zero[0] or zero[1]), int(zero[2]), zero[0] and zero[1])
-
-
-def dead_points_near(a, b, c, d, theta, gaps):
-    """Masks of the inputs within `DEAD_POINT_RTOL` (a + b + c + d) of a dead point, and |BD|.
-
-    A dead point is where |BD| = b + c (``near_far``) or |b - c| (``near_close``) and the
-    gap of that factor (`assembly_gaps`) is not zero; where it is zero, the branches meet
-    there (a change point) and the linkage passes. Whether a float input on a dead point
-    assembles is decided by a rounding, which the same linkage in another unit of length
-    (its lengths not exactly proportional) may decide the other way: within the tolerance
-    the input counts as the dead point, which assembles. Unit lengths (`fourbar_lengths`).
-    """
-    gap2, gap3, gap4 = gaps
-    tol = DEAD_POINT_RTOL * (a + b + c + d)
-    s = np.sin(0.5 * np.asarray(theta, dtype=float))
-    k = np.sqrt((d - a) ** 2 + 4.0 * a * d * s * s)          # |BD|
-    never = np.zeros(k.shape, dtype=bool)
-    near_far = np.abs(k - (b + c)) <= tol if gap4 != 0.0 else never
-    near_close = np.abs(abs(b - c) - k) <= tol if (gap2 if c > b else gap3) != 0.0 else never
-    return near_far, near_close, k
 
 
 def _unscale(z, exponent, copy=True):
@@ -583,8 +526,6 @@ class FourBar:
         >>> round(float(np.degrees(lp.swing)), 4), round(float(lp.time_ratio), 5)
         (45.9719, 1.22404)
         """
-        from mech.planar.structure._limit_positions import limit_positions
-
         return limit_positions(self._a, self._b, self._c, self._d, branch=self._branch)
 
     def transmission_angle(self, theta):
@@ -596,9 +537,7 @@ class FourBar:
         >>> round(float(np.degrees(FourBar(30, 70, 60, 80).transmission_angle(0.0))), 4)
         44.4153
         """
-        from mech.planar.forces._transmission import transmission_angle
-
-        return transmission_angle(self._a, self._b, self._c, self._d, theta)
+        return _TRANSMISSION["transmission_angle"](self._a, self._b, self._c, self._d, theta)
 
     def min_transmission_angle(self):
         """The smallest transmission angle and the crank angle where it occurs, ``(gamma_min, theta_at)``.
@@ -610,6 +549,4 @@ class FourBar:
         >>> round(float(np.degrees(gamma_min)), 4)
         44.4153
         """
-        from mech.planar.forces._transmission import min_transmission_angle
-
-        return min_transmission_angle(self._a, self._b, self._c, self._d)
+        return _TRANSMISSION["min_transmission_angle"](self._a, self._b, self._c, self._d)

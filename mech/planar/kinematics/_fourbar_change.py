@@ -22,7 +22,7 @@ All lengths here are normalised (the longest link between 1/2 and 1, see `_fourb
 
 import numpy as np
 
-__all__ = ["change_point_rates", "kite_pose"]
+__all__ = []        # internal to the subpackage: nothing here is re-exported
 
 
 def _ratio_slopes(a, b, c, d, s, ch, T, dT, sigma):

@@ -18,7 +18,6 @@ from mech._validate import finite_array, instance, integer, known_name, planar_p
 
 __all__ = [
     "Centre",
-    "ConstructionStep",
     "InstantCentres",
     "LinkVelocities",
     "centre_count",

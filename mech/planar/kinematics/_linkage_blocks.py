@@ -19,7 +19,7 @@ import numpy as np
 
 from mech.planar.kinematics import _linkage_modes
 
-__all__ = ["BLOCK", "solve_blocks"]
+__all__ = []        # internal to the subpackage: nothing here is re-exported
 
 #: Poses per block: the temporaries of a six-bar's solve (a few dozen arrays of this
 #: length) stay within the L2 and L3 caches, and the per-step cost of Python is spread over

@@ -16,7 +16,10 @@ import math
 
 import numpy as np
 
-__all__ = ["Schedule", "find_schedule", "modes"]
+from mech.planar.kinematics._linkage_groups import guide_state
+from mech.planar.kinematics._linkage_records import Slide
+
+__all__ = []        # internal to the subpackage: nothing here is re-exported
 
 # samples per crank turn when looking for the extremes of a group's distance; a change
 # point is found whenever the extremes are further apart than two samples
@@ -126,7 +129,7 @@ def find_schedule(linkage, steps, driver, rtol):
             st = linkage._run(before, 1, theta.shape, {driver: theta}, {driver: np.ones_like(theta)},
                               {driver: np.zeros_like(theta)}, modes(schedules, before, theta))[0]
             with np.errstate(invalid="ignore", divide="ignore"):
-                return _distance(step, st, linkage._guide_state)
+                return _distance(step, st, guide_state)
 
         t = np.arange(n) * h
         x, _, lower, upper = measure(t)
@@ -326,8 +329,6 @@ def _fields(st):
 
 
 def _store_fields(st, values):
-    from mech.planar.kinematics._linkage import Slide
-
     for (kind, k), v in values.items():
         if kind in ("P", "V", "A", "W", "AL"):
             getattr(st, kind)[k] = v

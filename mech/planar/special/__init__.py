@@ -7,54 +7,7 @@ library of named linkages: Stephenson and Watt six-bars, shapers, quick-return l
 and Jansen's leg.
 """
 
-from mech.planar.special._double_slider import (
-    EllipticTrammel,
-    OldhamCoupling,
-    OldhamPose,
-    ScotchYoke,
-    ScotchYokePose,
-    TangentMechanism,
-    TangentPose,
-    TrammelPose,
-)
-from mech.planar.special._library import (
-    JANSEN_HOLY_NUMBERS,
-    Stroke,
-    jansen_linkage,
-    quick_return_crank_rocker,
-    quick_return_guide_bar,
-    quick_return_slider_crank,
-    ram_stroke,
-    shaper_stephenson,
-    shaper_watt,
-    step_ratio,
-    stephenson_six_bar,
-    watt_six_bar,
-)
-from mech.planar.special._special import RotatingGuideBar, RotatingGuideBarPose, SwingingBlock
+from mech._exports import reexport
+from mech.planar.special import _double_slider, _library, _special
 
-__all__ = [
-    "EllipticTrammel",
-    "JANSEN_HOLY_NUMBERS",
-    "OldhamCoupling",
-    "OldhamPose",
-    "RotatingGuideBar",
-    "RotatingGuideBarPose",
-    "ScotchYoke",
-    "ScotchYokePose",
-    "Stroke",
-    "SwingingBlock",
-    "TangentMechanism",
-    "TangentPose",
-    "TrammelPose",
-    "jansen_linkage",
-    "quick_return_crank_rocker",
-    "quick_return_guide_bar",
-    "quick_return_slider_crank",
-    "ram_stroke",
-    "shaper_stephenson",
-    "shaper_watt",
-    "step_ratio",
-    "stephenson_six_bar",
-    "watt_six_bar",
-]
+__all__ = reexport(globals(), _double_slider, _library, _special)

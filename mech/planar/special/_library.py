@@ -35,7 +35,6 @@ __all__ = [
     "Stroke",
     "ram_stroke",
     "step_ratio",
-    "sketch",
 ]
 
 #: Theo Jansen's published link lengths ("holy numbers") of one Strandbeest leg.
@@ -61,7 +60,7 @@ def _lengths(**kw):
     return {k: positive_length(k, v) for k, v in kw.items()}
 
 
-def _unit(name, angle):
+def _unit_at_angle(name, angle):
     """The unit vector at the checked angle ``angle``."""
     angle = real_number(name, angle)
     return complex(math.cos(angle), math.sin(angle))
@@ -117,7 +116,7 @@ def watt_six_bar(*, crank=20.0, coupler=50.0, rocker=45.0, frame=50.0, lever=44.
             .crank("crank", pivot="A", tip="B", length=L["crank"])
             .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C",
                  lengths=(L["coupler"], L["rocker"]), branch=1)
-            .point("E", link="rocker", at=L["lever"] * _unit("lever_angle", lever_angle))
+            .point("E", link="rocker", at=L["lever"] * _unit_at_angle("lever_angle", lever_angle))
             .rrr(("link5", "output"), pins=("E", "F"), joint="G", lengths=(L["link5"], L["output"]), branch=-1))
 
 
@@ -407,7 +406,7 @@ def quick_return_crank_rocker(*, crank=60.0, coupler=120.0, rocker=180.0, frame=
           .crank("crank", pivot="A", tip="B", length=L["crank"])
           .rrr(("coupler", "rocker"), pins=("B", "D"), joint="C",
                lengths=(L["coupler"], L["rocker"]), branch=1)
-          .point("E", link="rocker", at=L["lever"] * _unit("lever_angle", lever_angle)))
+          .point("E", link="rocker", at=L["lever"] * _unit_at_angle("lever_angle", lever_angle)))
     return _ram(lk, pin="E", height=h, rod=L["rod"])
 
 

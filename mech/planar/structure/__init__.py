@@ -6,17 +6,7 @@ crank-rocker, and the time ratio K of quick return (eq. 2-9). The book covers th
 part "Structure and types of four-bars" and the first pages of "Kinematics".
 """
 
-from mech.planar.structure._grashof import GrashofResult, KindInterval, grashof, kind_intervals
-from mech.planar.structure._limit_positions import LimitPositions, limit_positions
-from mech.planar.structure._quick_return import extreme_angle, time_ratio
+from mech._exports import reexport
+from mech.planar.structure import _grashof, _limit_positions, _quick_return
 
-__all__ = [
-    "GrashofResult",
-    "KindInterval",
-    "LimitPositions",
-    "extreme_angle",
-    "grashof",
-    "kind_intervals",
-    "limit_positions",
-    "time_ratio",
-]
+__all__ = reexport(globals(), _grashof, _limit_positions, _quick_return)

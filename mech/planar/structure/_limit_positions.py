@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 from mech._generated.fourbar_limit_positions import fourbar_limit_positions
 from mech._validate import branch_sign
-from mech.planar.kinematics._fourbar import fourbar_lengths_resolved
+from mech.planar.structure._lengths import fourbar_lengths_resolved
 from mech.planar.structure._grashof import grashof
 from mech.planar.structure._quick_return import time_ratio
 

@@ -49,20 +49,16 @@ from mech.planar.synthesis._path import (
     path_untimed,
 )
 from mech.planar.synthesis._quick_return_design import (
+    QuickReturnCheck,
     QuickReturnCrankRocker,
     QuickReturnGuideBar,
     QuickReturnSliderCrank,
     quick_return_crank_rocker,
     quick_return_guide_bar,
     quick_return_slider_crank,
-)
-from mech.planar.synthesis._quick_return_search import (
-    QuickReturnCheck,
-    QuickReturnFamily,
-    crank_rocker_family,
     simulate_quick_return,
-    slider_crank_family,
 )
+from mech.planar.synthesis._quick_return_search import QuickReturnFamily, crank_rocker_family, slider_crank_family
 from mech.planar.synthesis._slider_guidance import (
     GuidanceSliderCrank,
     SliderCircle,

@@ -14,16 +14,16 @@ meets its pairs, on which branch, and whether one branch covers the range.
 import numpy as np
 
 from mech._generated.function_generation import fg_output_terms, fg_row
+from mech._geometry import wrap_angle as _wrap
+from mech._spacing import chebyshev_spacing
 from mech._validate import angle, bool_flag, function_pairs, naming, positive_length, real_number
 from mech.planar.synthesis._function_generator import (
     FunctionGenerator,
     FunctionMap,
     _common,
-    _wrap,
     freudenstein_coefficients,
     lengths_from_coefficients,
 )
-from mech.spherical._function_generation import chebyshev_spacing
 
 __all__ = [
     "FunctionGenerator",

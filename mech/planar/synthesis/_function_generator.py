@@ -9,6 +9,7 @@ covers the input range. The synthesis itself is in ``_function_generation``.
 import numpy as np
 
 from mech._generated.function_generation import fg_coefficients, fg_lengths
+from mech._geometry import wrap_angle as _wrap
 from mech._validate import (MAX_COUNT, angle, branch_sign, finite_array, function_pairs, integer, positive_length,
                             real_array, real_number, common_shape)
 from mech.planar.kinematics._fourbar import FourBar
@@ -40,11 +41,6 @@ def _call(f, name, x, arg="x"):
         at = x if v is None or np.ndim(x) == 0 else np.asarray(x)[~np.isfinite(np.real(v))].ravel()[:1]
         at = float(np.ravel(at)[0]) if np.size(at) else at
         raise type(exc)(f"{exc}, at `{arg}` = {at!r}") from exc      # InputTypeError stays one
-
-
-def _wrap(angle):
-    """Angle wrapped to (-pi, pi]."""
-    return np.arctan2(np.sin(angle), np.cos(angle))
 
 
 def freudenstein_coefficients(a, b, c, d):

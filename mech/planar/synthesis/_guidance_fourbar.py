@@ -10,7 +10,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._generated import displacement as _gen
-from mech._validate import InputTypeError, _show, finite_array, nonnegative_number, planar_points
+from mech._driving import input_travel as _motion
+from mech._geometry import wrap_angle as _wrap
+from mech._validate import InputTypeError, _show, finite_array, nonnegative_number, planar_points, real_number
 from mech.planar.kinematics._fourbar import FourBar
 from mech.planar.kinematics._slider_crank import SliderCrank
 from mech.planar.structure._grashof import grashof
@@ -105,32 +107,6 @@ class GuidanceSynthesis:
     dyads: tuple
     candidates: tuple
     passing: tuple
-
-
-def _wrap(angle):
-    return np.angle(np.exp(1j * angle))
-
-
-def _motion(linkage, theta_in):
-    """Direction (+1, -1 or 0) in which the input meets the poses in order, and its path ends.
-
-    The linkage can be assembled on an input interval exactly when it can at the interval's
-    ends and at the angles 0 and pi inside it (the diagonal BD is extreme there), so those
-    angles decide, by the analysis class itself. The spherical four-bar synthesis uses it
-    too: its arc BD is extreme at the same angles.
-    """
-    for direction in (1, -1):
-        steps = np.remainder(direction * np.diff(theta_in), _TWO_PI)
-        travel = float(np.sum(steps))
-        if travel >= _TWO_PI:
-            continue
-        start = float(theta_in[0])
-        lo, hi = (start, start + travel) if direction > 0 else (start - travel, start)
-        inside = np.arange(np.ceil(lo / np.pi), np.floor(hi / np.pi) + 1) * np.pi
-        critical = np.concatenate([[lo, hi], inside])
-        if np.all(linkage.solve(critical).valid):
-            return direction, critical
-    return 0, None
 
 
 def _candidate(theta, d, crank, rocker, rtol):

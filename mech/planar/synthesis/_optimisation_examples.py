@@ -12,8 +12,10 @@ import numpy as np
 
 from mech._generated.path_optimisation import path_coupler_point
 from mech._generated.steering_trapezoid import steering_beta, steering_ideal
+from mech._geometry import wrap_angle as _wrap
 from mech._validate import _show, finite_array, nonnegative_int, planar_points, positive_length, real_number
 from mech.planar.kinematics._fourbar import FourBar
+from mech.planar.structure._grashof import grashof
 from mech.planar.synthesis._optimisation import DesignModel
 
 __all__ = ["SteeringTrapezoid", "steering_trapezoid_model", "CouplerPathDesign", "path_synthesis_model",
@@ -21,10 +23,6 @@ __all__ = ["SteeringTrapezoid", "steering_trapezoid_model", "CouplerPathDesign",
 
 #: Design variables of Example 2-24, in order (the text's nine plus the crank's start angle).
 PATH_VARIABLES = ("l1", "l2", "l3", "l4", "l5", "xA", "yA", "alpha", "phi4", "theta0")
-
-
-def _wrap(angle):
-    return np.arctan2(np.sin(angle), np.cos(angle))
 
 
 def _trapezoid_weights(steps):
@@ -177,8 +175,6 @@ class SteeringTrapezoid:
         try:
             # C is to the left of B->D in the drawn trapezoid: branch +1 (see the derivation page)
             self.fourbar = FourBar(self.l1, self.l2, self.l1, self.a, branch=1)
-            # solved in units of the track: FourBar's solve overflows near 1e300 on this branch
-            self._unit = FourBar(self.l1 / self.a, self.l2 / self.a, self.l1 / self.a, 1.0, branch=1)
         except ValueError as exc:     # its message names the four-bar's `b` or `d`, derived here
             raise ValueError(
                 f"Expected `l1`, `phi0` and `a` whose trapezoid (arms l1, tie rod a - 2 l1 cos(phi0) = "
@@ -205,12 +201,12 @@ class SteeringTrapezoid:
         if steps < 1 or not 0.0 < theta_max < np.pi / 2:
             raise ValueError(f"Expected `steps` >= 1 and `theta_max` in (0, pi/2), got {steps}, {theta_max}")
         theta = np.linspace(0.0, theta_max, steps + 1)
-        sol = self._unit.solve(self.phi0 + theta)
+        sol = self.fourbar.solve(self.phi0 + theta)
         beta = _wrap(sol.psi - np.pi + self.phi0)
         ideal = self.beta_ideal(theta)
         weight = _trapezoid_weights(steps) * (theta_max / steps)
         with np.errstate(invalid="ignore"):
-            gamma = self._unit.transmission_angle(self.phi0 + theta)
+            gamma = self.fourbar.transmission_angle(self.phi0 + theta)
         return SteeringProof(theta, beta, ideal, float(np.max(np.abs(beta - self.beta(theta)))),
                              float(np.sum(weight * (ideal - beta) ** 2)), float(np.max(np.abs(ideal - beta))),
                              float(np.min(gamma)), bool(np.all(sol.valid)))
@@ -362,11 +358,6 @@ class CouplerPathDesign:
         self.points = _points(points)
         l1, l2, l3, l4, l5, xa, ya, alpha, phi4, theta0 = (float(v) for v in x)
         self.fourbar = FourBar(l1, l2, l3, l4, branch=1, coupler=(l5 * np.cos(alpha), l5 * np.sin(alpha)))
-        # The same linkage in units of its longest length, solved by `prove`: FourBar's solve
-        # overflows for lengths near 1e300 on this branch (issue 11 fixes it on main).
-        self._scale = max(l1, l2, l3, l4, l5)
-        u = np.array([l1, l2, l3, l4, l5]) / self._scale
-        self._unit = FourBar(*u[:4], branch=1, coupler=(u[4] * np.cos(alpha), u[4] * np.sin(alpha)))
         self.origin, self.rotation = complex(xa, ya), phi4
         self.theta = theta0 + 2.0 * np.pi * np.arange(self.points.size) / self.points.size
 
@@ -382,14 +373,12 @@ class CouplerPathDesign:
         samples = nonnegative_int("samples", samples, 10**8)
         if samples < 3:
             raise ValueError(f"Expected `samples` >= 3, got {samples}")
-        sol = self._unit.solve(self.theta)
-        P = self.place(self._scale * sol.P)
+        sol = self.fourbar.solve(self.theta)
+        P = self.place(sol.P)
         d = np.abs(P - self.points)
-        turn = self._unit.solve(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
-        curve = self.place(self._scale * turn.P[turn.valid])
+        turn = self.fourbar.solve(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
+        curve = self.place(turn.P[turn.valid])
         nearest = np.min(np.abs(curve[:, None] - self.points[None, :]), axis=0) if curve.size else \
             np.full(self.points.size, np.inf)
-        from mech.planar import grashof
-
-        return PathProof(P, d, float(np.sum(d)), nearest, float(self._unit.min_transmission_angle()[0]),
+        return PathProof(P, d, float(np.sum(d)), nearest, float(self.fourbar.min_transmission_angle()[0]),
                          grashof(*self.x[:4]).kind, bool(np.all(sol.valid)))

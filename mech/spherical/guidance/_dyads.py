@@ -10,8 +10,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._geometry import unit_rows as _unit
 from mech._validate import nonnegative_number, real_number
-from mech.spherical._coordinates import _vectors
+from mech.spherical._coordinates import unit_vectors as _vectors
 from mech.spherical.guidance._orientations import orientation_set
 
 __all__ = ["SphericalDyad", "dyad_for_circle_point", "dyad_for_centre_point", "slider_dyad_for_point"]
@@ -37,12 +38,6 @@ class SphericalDyad:
     moving_pivot: np.ndarray
     centre_point: np.ndarray
     arc: object
-
-
-def _unit(v):
-    n = np.linalg.norm(v, axis=-1, keepdims=True)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return v / n
 
 
 def arc_between(p, q):

@@ -8,7 +8,8 @@ import numpy as np
 
 from mech._validate import InputTypeError, _show, finite_array, nonnegative_number
 # _motion: the arc BD of a spherical four-bar, like the planar diagonal, is extreme at input 0 and pi
-from mech.planar.synthesis._guidance_fourbar import GuidanceSynthesis, _motion
+from mech._driving import input_travel as _motion
+from mech.planar.synthesis._guidance_fourbar import GuidanceSynthesis
 from mech.spherical._fourbar import SphericalFourBar
 from mech.spherical._rigid_body import angle_at
 from mech.spherical._types import classify

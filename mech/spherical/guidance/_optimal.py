@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._geometry import unit_rows as _unit
 from mech._validate import InputTypeError, _show, finite_array, nonnegative_number, option
 from mech.spherical._fourbar import SphericalFourBar
 from mech.spherical._types import classify
@@ -76,10 +77,6 @@ class SphericalOptimalGuidance:
     errors: np.ndarray
     rms_error: float
     nfev: int
-
-
-def _unit(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
 def _tangents(p):

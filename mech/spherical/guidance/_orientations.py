@@ -13,7 +13,7 @@ import numpy as np
 from mech._generated import spherical_guidance as _gen
 from mech._task import distinct_orientations
 from mech._validate import _show, finite_array
-from mech.spherical._coordinates import _vectors
+from mech.spherical._coordinates import unit_vectors as _vectors
 
 __all__ = ["relative_rotation", "rotation_pole", "pole_triangle", "crank_residual", "slider_residual",
            "planar_orientations"]

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._geometry import cross3 as _cross
 from mech._validate import InputTypeError, _show, finite_array, integer, nonnegative_number
 from mech.spherical._rigid_body import angle_at
 from mech.spherical.guidance._fourbar import _rotation_gap
@@ -97,13 +98,6 @@ def _rotvec(w):
     k = w / t
     K = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
     return np.eye(3) + np.sin(t) * K + (1.0 - np.cos(t)) * (K @ K)
-
-
-def _cross(a, b):
-    """Cross products along the last axis (np.cross costs more than the arithmetic here)."""
-    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
-    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack((a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0), axis=-1)
 
 
 def _joint(P1, P2, c1, c2, sign):

@@ -13,7 +13,7 @@ from mech._errors import AssemblyError, InputTypeError
 from mech._generated import spherical_linkage as _g
 from mech._pose import Pose
 from mech._scaling import DEAD_POINT_RTOL
-from mech._validate import arc as _arc, bool_flag, branch_sign, motion_inputs, real_number, real_tuple
+from mech._validate import arc as _arc, bool_flag, branch_sign, motion_inputs, real_number, real_tuple, unit_vector
 
 __all__ = ["SphericalLinkage", "SphericalLinkagePose", "GROUND"]
 
@@ -29,14 +29,6 @@ def _xyz(v):
 
 def _stack(*c):
     return np.stack(np.broadcast_arrays(*c), axis=-1)
-
-
-def _unit_vector(name, value):
-    v = np.asarray(real_tuple(name, value, 3), dtype=float)
-    n = float(np.linalg.norm(v))
-    if not abs(n - 1.0) <= 1e-9:
-        raise ValueError(f"Expected `{name}` to be a unit vector, got {value!r} (norm {n!r})")
-    return v / n
 
 
 def _pair(name, value):
@@ -133,7 +125,7 @@ class SphericalLinkage:
             raise InputTypeError(f"Expected `ground` to be a mapping of point names to unit vectors, got {ground!r}")
         for name, v in dict(ground or {}).items():
             self._add_point(name, GROUND, "ground")
-            self._steps += (("ground", name, _unit_vector(f"ground[{name!r}]", v)),)
+            self._steps += (("ground", name, unit_vector(f"ground[{name!r}]", v)),)
 
     # ------------------------------------------------------------------ building
     def _copy(self):
@@ -202,7 +194,7 @@ class SphericalLinkage:
         """Add a fixed point `name` at the unit vector `at`."""
         new = self._copy()
         new._add_point(name, GROUND, "name")
-        new._steps += (("ground", name, _unit_vector("at", at)),)
+        new._steps += (("ground", name, unit_vector("at", at)),)
         return new
 
     def point(self, name, *, link, at):

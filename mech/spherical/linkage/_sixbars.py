@@ -17,8 +17,7 @@ Watt-2     the rocker (D, C, E)  the ground (A, D, F)  rocker and ground, adjace
 
 import numpy as np
 
-from mech._validate import arc as _arc, branch_sign, real_tuple
-from mech.spherical._fourbar import _rotation
+from mech._validate import arc as _arc, branch_sign, proper_rotation, real_tuple
 from mech.spherical.linkage._linkage import SphericalLinkage
 
 __all__ = ["stephenson1", "stephenson2", "stephenson3", "watt1", "watt2"]
@@ -39,7 +38,7 @@ def _build(kind, a, b, c, d, E, F, arcs, coupler, branches, frame):
     if not isinstance(branches, (tuple, list)) or len(branches) != 2:
         raise ValueError(f"Expected `branches` to be two signs (+1 or -1), got {branches!r}")
     branches = tuple(branch_sign(v, "branches") for v in branches)
-    R = np.eye(3) if frame is None else _rotation(frame)
+    R = np.eye(3) if frame is None else proper_rotation("frame", frame)
     A = R[:, 2].copy()
     D = R @ np.array([np.sin(d), 0.0, np.cos(d)])
     lk = (SphericalLinkage({"A": A, "D": D})
@@ -187,7 +186,7 @@ def stephenson3(a, b, c, d, *, E, arcs, H, coupler, mu, branch=1, frame=None):
     e, k = (_arc("arcs", v) for v in arcs)
     mu = real_number("mu", mu)
     branch = branch_sign(branch)
-    R = np.eye(3) if frame is None else _rotation(frame)
+    R = np.eye(3) if frame is None else proper_rotation("frame", frame)
     A = R[:, 2].copy()
     D = R @ np.array([np.sin(d), 0.0, np.cos(d)])
     B = R @ np.array([np.sin(a), 0.0, np.cos(a)])

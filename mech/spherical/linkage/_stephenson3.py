@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
-from mech._validate import _show, bool_flag, finite_array, real_tuple
+from mech._validate import _show, bool_flag, finite_array, unit_vector
 from mech.spherical.linkage._linkage import SphericalLinkagePose
 
 __all__ = ["SphericalStephenson3"]
@@ -39,14 +39,6 @@ _STEP = 0.05
 _CLOSE = 1e-15
 #: crank turns searched for the period of a branch that does not stop at a dead point
 _TURNS = 4
-
-
-def _unit(name, value):
-    v = np.asarray(real_tuple(name, value, 3), dtype=float)
-    n = float(np.linalg.norm(v))
-    if not abs(n - 1.0) <= 1e-9:
-        raise ValueError(f"Expected `{name}` to be a unit vector, got {value!r} (norm {n!r})")
-    return v / n
 
 
 def _cx(a, b):
@@ -122,9 +114,9 @@ class SphericalStephenson3:
         if missing:
             raise ValueError(f"Expected `points` with the joints A, D, B, E, C, G, H, got {sorted(points)!r} "
                              f"(missing {', '.join(missing)})")
-        p = {k: _unit(f"points[{k!r}]", points[k]) for k in _NAMES}
+        p = {k: unit_vector(f"points[{k!r}]", points[k]) for k in _NAMES}
         if coupler is not None:
-            p["P"] = _unit("coupler", coupler)
+            p["P"] = unit_vector("coupler", coupler)
         for a, b in (("A", "B"), ("A", "D"), ("B", "C"), ("E", "G"), ("D", "H"), ("C", "G"), ("A", "E"),
                      ("B", "E")):
             if np.linalg.norm(np.cross(p[a], p[b])) < 1e-9:

@@ -10,6 +10,7 @@ import numpy as np
 
 from mech._generated import spherical_coupler_curve as _gen
 from mech._validate import finite_array, instance, option, real_number
+from mech.spherical._fourbar import SphericalFourBar, register_coupler_polynomial
 from mech.spherical.path import _octic_small
 
 __all__ = ["CouplerOctic", "coupler_octic", "coupler_quartic", "nine_parameters"]
@@ -45,8 +46,6 @@ def nine_parameters(linkage):
     >>> nine_parameters(m).round(6).tolist()
     [0.3, 0.2, 1.0, 0.5, 1.1, 0.9, 1.2, 0.6, 0.8]
     """
-    from mech.spherical._fourbar import SphericalFourBar
-
     instance("linkage", linkage, SphericalFourBar)
     R = np.eye(3) if linkage.frame is None else linkage.frame
     A = R[:, 2]
@@ -66,8 +65,6 @@ def _frame_of(linkage):
 
 def _parameters(linkage):
     """Validated parameters, shape (..., 9), from an array or a SphericalFourBar."""
-    from mech.spherical._fourbar import SphericalFourBar
-
     if isinstance(linkage, SphericalFourBar):
         return nine_parameters(linkage)
     p = finite_array("linkage", linkage)
@@ -233,8 +230,6 @@ def coupler_octic(linkage, points, *, form="auto", small=0.1):
     if small < 0.0:
         raise ValueError(f"Expected `small` >= 0, got {small!r}")
     frame = None
-    from mech.spherical._fourbar import SphericalFourBar
-
     if isinstance(linkage, SphericalFourBar):
         frame = _frame_of(linkage)
     return _evaluate(_gen.spherical_coupler_octic, 8, linkage, points, form=form, frame=frame, small=small)
@@ -287,6 +282,7 @@ def coupler_quartic(linkage, points):
     return _evaluate(_gen.spherical_coupler_quartic, None, linkage, points)
 
 
+@register_coupler_polynomial
 class CouplerOctic:
     """The implicit coupler curve of one `SphericalFourBar` (from
     `SphericalFourBar.coupler_curve_polynomial`).

@@ -13,6 +13,7 @@ Formulas: ``mech._generated.spherical_sixbar_curves``, derived in
 import numpy as np
 
 from mech._generated import spherical_sixbar_curves as _gen
+from mech._geometry import unit_rows
 from mech._validate import bool_flag, finite_array
 
 __all__ = ["SIXBAR_CURVE_ORDERS", "sixbar_curve"]
@@ -27,13 +28,9 @@ _BLOCK = 2048
 _F2T = np.array([[1, 1, 0], [0, 0, 2], [1, -1, 0]]) @ np.array([[0, 1, 0], [1, 0, 1], [-1j, 0, 1j]])
 
 
-def _unit(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
-
-
 def _toward(o, x, r, g=0.0):
     """The point at arc r from o, at the angle g from the great circle o -> x (eq. (1) of the solver)."""
-    T = _unit(x - (o @ x) * o)
+    T = unit_rows(x - (o @ x) * o)
     return np.cos(r) * o + np.sin(r) * (np.cos(g) * T + np.sin(g) * np.cross(o, T))
 
 
@@ -58,11 +55,13 @@ def _mul(a, b):
     return out
 
 
-def _dot(a, b):
+def _poly_dot(a, b):
+    """Dot product of 3-vectors whose components are polynomials multiplied by `_mul`."""
     return sum(_mul(a[k], b[k]) for k in range(3))
 
 
-def _cross(a, b):
+def _poly_cross(a, b):
+    """Cross product of 3-vectors whose components are polynomials multiplied by `_mul`."""
     return np.stack([_mul(a[1], b[2]) - _mul(a[2], b[1]), _mul(a[2], b[0]) - _mul(a[0], b[2]),
                      _mul(a[0], b[1]) - _mul(a[1], b[0])])
 
@@ -119,7 +118,7 @@ def _geometry(linkage):
         B0 = _toward(A, D, a)
         B = _rotate(A, 0, _const(B0))
         C = _rotate(D, 1, _const(C0))
-        L = _dot(B, C) - np.cos(b) * _const(1.0)
+        L = _poly_dot(B, C) - np.cos(b) * _const(1.0)
         if kind == "stephenson1":
             E = _rotate(A, 0, _const(_toward(A, B0, rE, gE)))
         elif kind == "watt2":
@@ -127,17 +126,17 @@ def _geometry(linkage):
         else:                            # E on the coupler: a fixed combination of B, C, B x C
             k = np.array([np.cos(rE) - np.sin(rE) * np.cos(gE) * np.cos(b) / np.sin(b),
                           np.sin(rE) * np.cos(gE) / np.sin(b), np.sin(rE) * np.sin(gE) / np.sin(b)])
-            E = k[0] * B + k[1] * C + k[2] * _cross(B, C)
+            E = k[0] * B + k[1] * C + k[2] * _poly_cross(B, C)
         if kind == "stephenson1":
             F = _rotate(D, 1, _const(_toward(D, C0, *points["F"][3:5])))
         else:
             F = _const(grounds["F"]).reshape(3, 5, 5)
-        EF = _dot(E, F)
+        EF = _poly_dot(E, F)
     # eq. (1): G = k1 P + k2 E + k3 P x E, so G . F = k1 P . F + k2 E . F + k3 P . (E x F)
     k1 = np.sin(e) * np.cos(g) / np.sin(r)
     k2 = (np.sin(r) * np.cos(e) - np.sin(e) * np.cos(g) * np.cos(r)) / np.sin(r)
     k3 = np.sin(e) * np.sin(g) / np.sin(r)
-    ExF = _cross(E, F)
+    ExF = _poly_cross(E, F)
     for name, part in (("L", L), ("E", E), ("EF", EF), ("ExF", ExF), ("F", F)):
         # bilinear: no harmonic beyond the first survives (E x F for Watt-1 to rounding)
         part[..., [0, 4], :] = 0.0
@@ -218,7 +217,7 @@ def _ring_limit(geo, P):
     """Q at the pivot directions P = +-D (Watt-1, where the division is 0/0): the mean over
     rings of arcs h and 2h about P, extrapolated (Richardson) to h = 0; error O(h**4)."""
     h = 0.01
-    e1 = _unit(np.cross(P, np.where(np.abs(P[..., :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])))
+    e1 = unit_rows(np.cross(P, np.where(np.abs(P[..., :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])))
     e2 = np.cross(P, e1)
     means = []
     for arc in (h, 2 * h):

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._geometry import unit_rows
 from mech._validate import branch_sign, finite_array, option, real_array, real_number
 from mech.spherical._fourbar import SphericalFourBar, ground_frame
 
@@ -317,13 +318,9 @@ def path_fourbar(points, theta, start, *, formulation="distance", metric="arc", 
     return _design(linkage, "fourbar", formulation, x, _NINE, Q, th, tol, seconds, nfev)
 
 
-def _unit(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
-
-
 def _crank_points(A, D, a, th):
     """B_i at input angles th: eq. (2-1)-type crank point in the frame x toward D, y = A x x."""
-    xd = _unit(D - (A @ D) * A)
+    xd = unit_rows(D - (A @ D) * A)
     yd = np.cross(A, xd)
     return np.cos(a) * A + np.sin(a) * (np.cos(th)[:, None] * xd + np.sin(th)[:, None] * yd)
 
@@ -379,7 +376,7 @@ def _constant_arc(Q, th, x0, branch, least_squares):
 
     sol = least_squares(fun, z0, jac=jac, xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=1500)
     A, D, a, C, _ = split(sol.x)
-    A, D, C = _unit(A), _unit(D), _unit(C)
+    A, D, C = unit_rows(A), unit_rows(D), unit_rows(C)
     B = _crank_points(A, D, a, th)
     linkage, x = _from_joints(A, D, B[0], C[0], Q[0], th[0])
     return x, sol.nfev, linkage
@@ -388,15 +385,15 @@ def _constant_arc(Q, th, x0, branch, least_squares):
 def _from_joints(A, D, B, C, P, theta1):
     """The nine parameters (and the linkage) of a four-bar drawn at one pose."""
     arc = lambda u, v: float(np.arctan2(np.linalg.norm(np.cross(u, v)), u @ v))
-    xd = _unit(D - (A @ D) * A)
+    xd = unit_rows(D - (A @ D) * A)
     R = np.column_stack([xd, np.cross(A, xd), A])
     lat = float(np.arcsin(np.clip(A[2], -1.0, 1.0)))
     lon = float(np.arctan2(A[1], A[0]))
     xl = np.array([np.sin(lat) * np.cos(lon), np.sin(lat) * np.sin(lon), -np.cos(lat)])
     yl = np.array([-np.sin(lon), np.cos(lon), 0.0])
     heading = float(np.arctan2(xd @ yl, xd @ xl))
-    tb = _unit(C - (B @ C) * B)                      # direction of B->C at B
-    tp = _unit(P - (B @ P) * B)
+    tb = unit_rows(C - (B @ C) * B)                      # direction of B->C at B
+    tp = unit_rows(P - (B @ P) * B)
     gamma = float(np.arctan2(np.cross(tb, tp) @ B, tb @ tp))
     branch = 1 if np.linalg.det(np.array([B, D, C])) > 0 else -1
     x = np.array([lon, lat, heading, arc(A, B), arc(B, C), arc(C, D), arc(A, D), arc(B, P), gamma])
