@@ -85,7 +85,7 @@ ANSWER_KEYS = {
     "2-4": (("K", _r("time ratio K"), "time ratio K of the mechanism"),
             ("H", _r("stroke H of F"), "stroke H of the slider F"),
             ("gamma_min", _r("mechanism γ_min"), "minimum transmission angle of the mechanism"),
-            ("h", _r("best guide height h*"), "height of the guide that makes the pressure angle smallest")),
+            ("h_guide", _r("best guide height h*"), "height h of the guide that makes the pressure angle smallest")),
     "2-5": (("K", _r("time ratio K"), "time ratio K"),
             ("H", _r("stroke H of member 5"), "stroke H of member 5"),
             ("gamma_min", _r("γ_min (slider stage)"), "minimum transmission angle γ_min"),
