@@ -149,6 +149,7 @@ ANSWER_KEYS = {
              ("gamma_min_1", _r("(1) gamma_min simulated, D on the side of A"), "(1) minimum transmission angle"),
              ("l_AB_2", _r("(2) l_AB, D on the side of A"), "(2) crank AB (D on the side of A)"),
              ("l_AD_2", _r("(2) l_AD, D on the side of A"), "(2) frame AD (D on the side of A)")),
+    # a variant whose other limit position gives no crank-rocker has design 1 only
     "2-31": (("l_AB_1", _r("design 1: l_AB"), "crank AB of design 1"),
              ("l_BC_1", _r("design 1: l_BC"), "coupler BC of design 1"),
              ("l_AB_2", _r("design 2: l_AB"), "crank AB of design 2"),

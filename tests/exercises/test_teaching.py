@@ -399,6 +399,8 @@ def _valid(number, seed):
         assert len(got) >= len(keys) - 8
     elif number == "2-2":                                  # an empty range has no end
         assert got
+    elif number == "2-31":                                 # 5 of 1,000 variants have one design only
+        assert {"l_AB_1", "l_BC_1"} <= set(got) and set(got) <= set(keys), (number, seed)
     else:
         assert set(got) == set(keys), (number, seed, set(keys) - set(got))
     assert all(math.isfinite(v) for v in got.values())
