@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: setup browser-deps node-deps book generate check-generated test test-fast bench clean
+.PHONY: setup browser-deps node-deps book generate check-generated test test-fast test-exhaustive bench clean
 
 $(STAMP): requirements.txt pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -67,7 +67,12 @@ test: $(STAMP) browser-deps node-deps
 	$(BIN)/python -m pytest
 
 test-fast: $(STAMP) node-deps
-	$(BIN)/python -m pytest -m "not slow"
+	$(BIN)/python -m pytest -m "not slow and not exhaustive"
+
+## The acceptance sweeps left out of `make test` (a whole class of 30 for every exercise,
+## 1,000 seeds of every exercise): tens of minutes.
+test-exhaustive: $(STAMP) browser-deps node-deps
+	$(BIN)/python -m pytest -m exhaustive
 
 ## Benchmarks need pylinkage and numba (not in requirements.txt); results go to benchmarks/results.
 bench: $(STAMP)

@@ -168,7 +168,7 @@ def _sheet(args):
 
 
 def _check_class(args, entries):
-    from mech.exercises._grade import grade_class, write_gradebook
+    from mech.exercises._gradebook import grade_class, write_gradebook
 
     rtol, atol = tolerances(args.rtol, args.atol)
     graded = grade_class(entries, rtol=rtol, atol=atol)

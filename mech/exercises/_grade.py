@@ -4,7 +4,8 @@ An answer is a number with an optional unit (``32.07deg``, ``0.56 rad``, ``1.2 m
 ``15 N*m``); it is converted to the unit of the quantity it answers, so a student may
 answer in radians or metres. A class is graded in one call: :func:`read_answers` reads a
 CSV with a row per student (or text files, one per student), :func:`grade_class` checks
-every entry against the student's own variant, and :func:`write_gradebook` writes a CSV
+every entry against the student's own variant (``_gradebook``, which needs the solved
+variants of ``_sheet``), and :func:`write_gradebook` writes a CSV
 with a row per student and quantity: what was given, the expected value, the tolerance,
 the verdict and why. A malformed entry (not a number, a unit of the wrong kind, an unknown
 answer name, a bad seed) is graded "malformed" with the student, the quantity and the text
@@ -20,8 +21,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["UNITS", "Entry", "Verdict", "convert", "grade_class", "parse_answer", "read_answers",
-           "write_gradebook"]
+__all__ = ["UNITS", "Entry", "Verdict", "convert", "parse_answer", "read_answers"]
 
 _DEG = math.pi / 180.0
 #: Unit spellings a student may use -> (kind, factor to the kind's base unit). Bases: deg,
@@ -249,82 +249,3 @@ def read_answers(path, *, exercise=None):
             entries.append(Entry(who, seed, number, key, value))
     # the seed may come after the answers in the file: it holds for the whole file
     return [Entry(who, seed, e.exercise, e.key, e.text) for e in entries]
-
-
-def grade_class(entries, *, rtol=0.01, atol=0.01):
-    """Grade every `Entry` against its student's variant; return a list of (Entry, Verdict).
-
-    Each student's variant is solved once per exercise. An entry whose seed, exercise or
-    answer name is bad is graded "malformed", with the reason.
-    """
-    from mech.exercises import get
-    from mech.exercises._sheet import _lookup, _spelt_keys, answer_quantities, solved_variant
-
-    solved = {}
-    out = []
-    for e in entries:
-        def bad(why):
-            out.append((e, Verdict(None, None, False, e.text if e.key == "" else f"{e.key} = {e.text!r}",
-                                   "malformed", why)))
-        if e.key == "":
-            bad(f"expected a line KEY = VALUE, got {e.text!r}")
-            continue
-        try:
-            seed = int(str(e.seed).strip())
-            if seed < 0:
-                raise ValueError
-        except (TypeError, ValueError):
-            bad(f"expected the student's seed, a whole number >= 0, got {e.seed!r}")
-            continue
-        if e.exercise is None:
-            bad(f"expected the answer name as NUMBER:KEY (e.g. 2-3:K), got {e.key!r}")
-            continue
-        try:
-            ex = get(e.exercise)
-        except ValueError as err:
-            bad(str(err))
-            continue
-        if (ex.number, seed) not in solved:
-            _, solution = solved_variant(ex, seed)
-            solved[ex.number, seed] = (answer_quantities(solution), _spelt_keys(solution))
-        quantities, extra = solved[ex.number, seed]
-        try:
-            q = _lookup(quantities, e.key, ex.number, extra)
-        except ValueError as err:
-            bad(str(err))
-            continue
-        out.append((e, judge(q, e.text, rtol, atol)))
-    return out
-
-
-GRADEBOOK_COLUMNS = ("student", "seed", "exercise", "key", "quantity", "given", "given_in_unit", "expected",
-                     "unit", "tolerance", "verdict", "why")
-
-
-def gradebook_rows(graded):
-    """The gradebook as a list of dicts with the keys of ``GRADEBOOK_COLUMNS``."""
-    rows = []
-    for e, v in graded:
-        q = v.quantity
-        rows.append({
-            "student": e.student, "seed": e.seed, "exercise": e.exercise or "", "key": e.key,
-            "quantity": q.name if q is not None else "", "given": e.text,
-            "given_in_unit": "" if v.given is None else f"{v.given:.6g}",
-            "expected": "" if q is None else f"{q.value:.6g}", "unit": "" if q is None else q.unit,
-            "tolerance": "" if q is None else f"{v.tolerance:.4g}", "verdict": v.status, "why": v.why,
-        })
-    return rows
-
-
-def write_gradebook(path, graded):
-    """Write the gradebook CSV of `grade_class`'s result to ``path``; return its rows."""
-    rows = gradebook_rows(graded)
-    path = Path(path)
-    try:
-        with path.open("w", newline="", encoding="utf-8") as f:
-            w = csv.DictWriter(f, GRADEBOOK_COLUMNS)
-            w.writeheader()
-            w.writerows(rows)
-    except OSError as err:
-        raise ValueError(f"Expected a writable gradebook path, got {str(path)!r} ({err.strerror})") from None
-    return rows

@@ -21,7 +21,8 @@ Matplotlib, Typst and the XML writer are imported only when a file is written.
 from mech.exercises._answers import ANSWER_KEYS, key_table
 from mech.exercises._export import (build_class, write_class_list, write_markdown, write_moodle, write_pdf,
                                     write_qti)
-from mech.exercises._grade import UNITS, grade_class, parse_answer, read_answers, write_gradebook
+from mech.exercises._grade import UNITS, parse_answer, read_answers
+from mech.exercises._gradebook import grade_class, write_gradebook
 from mech.exercises._sheet import answer_quantities, check_answers, student_seeds
 
 __all__ = ["ANSWER_KEYS", "UNITS", "answer_quantities", "build_class", "check_answers", "grade_class", "key_table",

@@ -14,6 +14,7 @@ imported when a design runs.
 
 import numpy as np
 
+from mech._geometry import cross3 as _cross
 from mech._validate import InputTypeError, _show, finite_array, integer, nonnegative_number
 from mech.spherical._rigid_body import angle_at
 from mech.spherical.guidance._fourbar import _rotation_gap
@@ -22,8 +23,7 @@ from mech.spherical.guidance._orientations import orientation_set
 from mech.spherical.guidance._sixbar import _frame
 from mech.spherical.guidance._sixbar_exact import SphericalExactSixBar, _linkage_of
 from mech.spherical.guidance._sixbar_optimal import (_FD_STEP, _GUARD, _HEIGHT, _MAX_NFEV, _TOL,
-                                                      SphericalOptimalSixBar, _cross, _heights, _joint, _rotvec,
-                                                      _turn)
+                                                      SphericalOptimalSixBar, _heights, _joint, _rotvec, _turn)
 
 __all__ = ["optimal_guidance_sixbar"]
 

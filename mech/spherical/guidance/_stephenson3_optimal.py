@@ -18,11 +18,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech._geometry import cross3 as _cross
 from mech._validate import InputTypeError, _show, finite_array, integer, nonnegative_number
 from mech.spherical.guidance._fourbar import _rotation_gap
 from mech.spherical.guidance._optimal import _point, _tangents
 from mech.spherical.guidance._orientations import orientation_set
-from mech.spherical.guidance._sixbar_optimal import _FD_STEP, _MAX_NFEV, _TOL, _cross, _rotvec, _turn
+from mech.spherical.guidance._sixbar_optimal import _FD_STEP, _MAX_NFEV, _TOL, _rotvec, _turn
 from mech.spherical.guidance._stephenson3 import SphericalGuidanceStephenson3
 from mech.spherical.linkage._stephenson3 import SphericalStephenson3
 
