@@ -12,7 +12,9 @@ page is written, with `latex2mathml` (pure Python) and a few repairs around it:
 - ``\\operatorname{...}`` and ``\\mathrm{...}`` become upright identifiers;
 - ``mathvariant`` bold and bold-italic (``\\mathbf``, ``\\boldsymbol``), which MathML Core
   does not draw, become the Unicode mathematical bold letters;
-- ``\\pm`` and ``\\mp`` become operators.
+- ``\\pm`` and ``\\mp`` become operators;
+- a display formula wider than the column is first broken into aligned rows
+  (``math_breaks.py``).
 
 A formula that cannot be converted (an unknown command, a stray ``&``, malformed output)
 raises :class:`MathMLError`, which stops the build: nothing falls back to raw TeX.
@@ -26,6 +28,8 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 from docutils import nodes
+
+from math_breaks import break_long
 
 MATHML_NS = "http://www.w3.org/1998/Math/MathML"
 PLACEHOLDER = "MECHPH{}Z"
@@ -534,6 +538,8 @@ def tex_to_mathml(tex, display=False):
         tex = m.group(2).strip()
     if not tex:
         raise MathMLError("an empty formula")
+    if display:  # a formula wider than the column: aligned rows (math_breaks.py, issue 26)
+        tex = break_long(tex)
     parts = [p for p in re.split(r"\n\s*\n", tex) if p.strip()] if display else [tex]
     if display and (len(parts) > 1 or len(split_top(tex, "\\\\")) > 1 or len(split_top(tex, "&")) > 1):
         # rows without an environment (Sphinx wraps them in split): an aligned table

@@ -166,6 +166,41 @@ async () => {
 }
 """
 
+# What does not fit (issue 26), measured at the viewport's width: display formulas wider
+# than their column (a div.math that scrolls), whether the page itself is wider than the
+# viewport (it pans sideways), and outputs of code cells that scroll sideways. Each item is
+# named by its first characters, so a report says which formula or output it is.
+FIT_CHECKS = r"""
+() => {
+  const name = (el) => (el.textContent || '').replace(/\s+/g, ' ').trim().slice(0, 60);
+  const wide = (el) => el.scrollWidth > el.clientWidth + 2;
+  const displays = [...document.querySelectorAll('div.math')].filter((d) => d.querySelector('math'));
+  const wideDisplays = displays.filter(wide).map((d) => ({text: name(d), width: d.scrollWidth, column: d.clientWidth}));
+  const outputs = [...document.querySelectorAll(
+    'div.cell_output pre, div.cell_output div.output > table, div.cell_output table, div.cell_output .output_html')];
+  const wideOutputs = outputs.filter(wide).map((o) => ({text: name(o), width: o.scrollWidth, column: o.clientWidth}));
+  const doc = document.documentElement;
+  const pageWidth = Math.max(doc.scrollWidth, document.body.scrollWidth);
+  // what makes the page wider than the viewport: the widest elements that reach past it
+  const culprits = [];
+  if (pageWidth > window.innerWidth + 1) {
+    for (const el of document.querySelectorAll('body *')) {
+      const r = el.getBoundingClientRect();
+      if (r.right > window.innerWidth + 1 && r.width > 0 && !el.closest('.bd-sidebar-primary, .bd-sidebar-secondary, dialog')) {
+        const parent = el.parentElement && el.parentElement.getBoundingClientRect();
+        if (!parent || parent.right <= window.innerWidth + 1) culprits.push(`<${el.localName} class="${el.className}">${name(el)}`);
+      }
+      if (culprits.length >= 5) break;
+    }
+  }
+  return {viewport: window.innerWidth, displays: displays.length, wideDisplays, outputs: outputs.length,
+          wideOutputs, pageWidth, pans: pageWidth > window.innerWidth + 1, culprits};
+}
+"""
+WIDE_DISPLAY_LIMIT = 5   # display formulas wider than the column at 1280 px, the whole book
+FIT_WIDTHS = (1280, 400)
+
+
 # Installed in every page before its scripts run: the tofu test on a canvas (and a resource
 # timing buffer that keeps every entry: the default holds 250, too few for the page weight).
 INIT_SCRIPT = r"""
@@ -382,6 +417,19 @@ async def _check_one(browser, base, rel, screenshot_dir, page_budget):
             problems.append(f"page weight {info['bytesTransfer'] / 1e3:.0f} kB received, over the budget of "
                             f"{page_budget / 1e3:.0f} kB; largest: "
                             + ", ".join(f"{name} {sizes[0] / 1e3:.0f} kB" for name, sizes in heavy))
+        info["fit"] = {}
+        for width in FIT_WIDTHS:
+            if width != 1280:
+                await page.set_viewport_size({"width": width, "height": 900})
+                await page.wait_for_timeout(300)
+            info["fit"][width] = await page.evaluate(FIT_CHECKS)
+        if FIT_WIDTHS[-1] != 1280:
+            await page.set_viewport_size({"width": 1280, "height": 900})
+            await page.wait_for_timeout(300)
+        narrow = info["fit"][min(FIT_WIDTHS)]
+        if narrow["pans"]:
+            problems.append(f"page {narrow['pageWidth']} px wide at {narrow['viewport']} px, it pans sideways: "
+                            + "; ".join(narrow["culprits"]))
         info["animations"] = await _check_animations(page, problems)
         info["views3d"] = await _check_views(page, problems)
         if screenshot_dir is not None:
@@ -597,3 +645,88 @@ async def _styles(root, page_path, checks, executable):
 def style_problems(root, page, checks=STYLE_CHECKS, executable=None):
     """The :data:`STYLE_CHECKS` that fail on ``page`` of the build at ``root`` (empty: all hold)."""
     return asyncio.run(_styles(Path(root), page, checks, executable or chromium_path()))
+
+
+def fit_summary(results):
+    """Counts of what does not fit, from :func:`check_pages` or :func:`fit_pages` results.
+
+    ``{width: {"wide_displays": n, "wide_display_pages": n, "panning_pages": [...],
+    "wide_outputs": n, "wide_output_pages": n, "worst": [(page, width px, text), ...]}}``.
+    """
+    summary = {}
+    for width in FIT_WIDTHS:
+        fits = {page: info["fit"][width] for page, (_, info) in results.items()
+                if "fit" in info and width in info["fit"]}
+        displays = [(page, d["width"], d["text"]) for page, f in fits.items() for d in f["wideDisplays"]]
+        outputs = [(page, o["width"], o["text"]) for page, f in fits.items() for o in f["wideOutputs"]]
+        summary[width] = {
+            "pages": len(fits),
+            "wide_displays": len(displays),
+            "wide_display_pages": len({p for p, _, _ in displays}),
+            "panning_pages": sorted(page for page, f in fits.items() if f["pans"]),
+            "wide_outputs": len(outputs),
+            "wide_output_pages": len({p for p, _, _ in outputs}),
+            "worst_displays": sorted(displays, key=lambda d: -d[1])[:10],
+            "worst_outputs": sorted(outputs, key=lambda d: -d[1])[:10],
+        }
+    return summary
+
+
+async def _fit_all(root, pages, executable, tabs):
+    from playwright.async_api import async_playwright
+
+    results = {}
+    with serve(root) as base:
+        async with async_playwright() as pw:
+            browser = await pw.chromium.launch(
+                executable_path=executable, headless=True,
+                proxy={"server": "http://127.0.0.1:9", "bypass": "127.0.0.1"})
+            gate = asyncio.Semaphore(tabs)
+
+            async def one(rel):
+                async with gate:
+                    if _redirect_target(root, rel) is not None:
+                        return
+                    fit = {}
+                    for width in FIT_WIDTHS:
+                        context = await browser.new_context(viewport={"width": width, "height": 900})
+                        page = await context.new_page()
+                        try:
+                            await page.goto(base + rel, wait_until="load", timeout=60000)
+                            await page.evaluate("document.fonts.ready")
+                            fit[width] = await page.evaluate(FIT_CHECKS)
+                        finally:
+                            await context.close()
+                    results[rel] = ([], {"fit": fit})
+
+            await asyncio.gather(*(one(rel) for rel in pages))
+            await browser.close()
+    return results
+
+
+def fit_pages(root, pages=None, executable=None, tabs=3):
+    """Only the fit measures (``FIT_CHECKS``) of ``pages`` at each of ``FIT_WIDTHS``: a quick
+    way to measure a build (``python tests/browser/_crawl.py fit [pages...]``)."""
+    root = Path(root)
+    pages = built_pages(root) if pages is None else list(pages)
+    return asyncio.run(_fit_all(root, pages, executable or chromium_path(), tabs))
+
+
+if __name__ == "__main__":
+    import json
+    import sys
+
+    html = Path(__file__).resolve().parents[2] / "book" / "_build" / "html"
+    chosen = [p if p.endswith(".html") else p + ".html" for p in sys.argv[2:]] or None
+    res = fit_pages(html, chosen)
+    out = fit_summary(res)
+    if "-v" in sys.argv or chosen:
+        for page, (_, info) in sorted(res.items()):
+            for width, f in info["fit"].items():
+                for d in f["wideDisplays"]:
+                    print(f"{width} display {page} {d['width']}/{d['column']}: {d['text']}")
+                for d in f["wideOutputs"]:
+                    print(f"{width} output {page} {d['width']}/{d['column']}: {d['text']}")
+                if f["pans"]:
+                    print(f"{width} PANS {page} {f['pageWidth']}: {f['culprits']}")
+    print(json.dumps({w: {k: v for k, v in s.items() if not k.startswith("worst")} for w, s in out.items()}, indent=1))

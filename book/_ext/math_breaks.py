@@ -1,0 +1,308 @@
+"""Break a long display formula into aligned rows before it becomes MathML (issue 26).
+
+Browsers do not break MathML lines, so a long SymPy result or a long hand-written equation
+is one line that scrolls sideways in its column. :func:`break_long` estimates the width of
+a display formula from its LaTeX (in em of the math font) and, when it is wider than the
+column, rewrites it as an ``aligned`` environment:
+
+- a relation chain ``a = b + c + ... = d`` is cut at its top-level relations (one row each),
+  and a row still too wide at its top-level ``+`` and ``-`` (the continuation rows are
+  indented under the right-hand side);
+- a matrix whose cells are too wide together has each long cell broken the same way inside
+  the cell, so the matrix keeps its shape and narrows by column.
+
+Only what sits at the top level of the formula (outside braces, ``\\left ... \\right``
+pairs and environments) is cut, so no parenthesis, fraction or root is ever split. A
+formula that is already aligned (``&`` or ``\\\\`` at its top level) is left alone.
+The estimate is deliberately rough (letters 0.55 em, a binary operator with its spaces
+1.3 em, a fraction the wider of its parts, scripts at 70 %); the browser test measures what
+really fits.
+"""
+
+import re
+
+# The column at 1280 px is 676 px; the math font is 1.25 x 16 px = 20 px per em, so about
+# 34 em. Rows are packed to LIMIT, a little under it, because the estimate is rough.
+LIMIT = 29.0
+MIN_CELL = 9.0  # em: a matrix cell is never broken narrower than this
+
+_RELATIONS = ("=", "<", ">", "\\le", "\\ge", "\\leq", "\\geq", "\\ne", "\\neq", "\\approx", "\\equiv",
+              "\\to", "\\Rightarrow", "\\iff")
+_WIDE_CMDS = {"quad": 1.0, "qquad": 2.0, ",": 0.17, ":": 0.22, ";": 0.28, "!": -0.17, " ": 0.33,
+              "cdot": 0.8, "times": 0.9, "pm": 1.3, "mp": 1.3, "left": 0.0, "right": 0.0,
+              "displaystyle": 0.0, "textstyle": 0.0, "limits": 0.0, "nolimits": 0.0,
+              "sum": 1.4, "prod": 1.4, "int": 0.8, "infty": 1.0, "cdots": 1.5, "ldots": 1.5, "dots": 1.5}
+_FUNC_CMDS = {"sin", "cos", "tan", "cot", "sec", "csc", "arcsin", "arccos", "arctan", "atan", "sinh", "cosh",
+              "tanh", "log", "ln", "exp", "det", "min", "max", "lim", "sqrt", "operatorname", "mathrm", "text",
+              "mathbf", "boldsymbol", "mathit", "mathcal", "frac", "dfrac", "tfrac", "overline", "hat", "bar",
+              "vec", "dot", "ddot", "tilde", "operatorname*", "begin", "end", "big", "Big", "bigg", "Bigg",
+              "bigl", "bigr", "Bigl", "Bigr", "biggl", "biggr", "Biggl", "Biggr"}
+
+
+def _group(tex, i):
+    """(content, index after) of the argument at ``i``: a ``{...}`` group, a command or a character."""
+    while i < len(tex) and tex[i].isspace():
+        i += 1
+    if i >= len(tex):
+        return "", i
+    if tex[i] == "{":
+        depth, j = 0, i
+        while j < len(tex):
+            c = tex[j]
+            if c == "\\":
+                j += 2
+                continue
+            depth += {"{": 1, "}": -1}.get(c, 0)
+            if depth == 0:
+                return tex[i + 1:j], j + 1
+            j += 1
+        return tex[i + 1:], len(tex)
+    if tex[i] == "\\":
+        m = re.match(r"\\([A-Za-z]+|.)", tex[i:])
+        return m.group(0), i + m.end()
+    return tex[i], i + 1
+
+
+def width(tex):
+    """Estimated width of ``tex`` in em (of the math font)."""
+    total, i = 0.0, 0
+    while i < len(tex):
+        c = tex[i]
+        if c.isspace() or c in "{}&":
+            i += 1
+            continue
+        if c in "^_":
+            arg, i = _group(tex, i + 1)
+            total += 0.7 * width(arg)
+            continue
+        if c == "\\":
+            m = re.match(r"\\([A-Za-z]+\*?|.)", tex[i:])
+            name = m.group(1)
+            i += m.end()
+            if name in ("frac", "dfrac", "tfrac", "binom"):
+                a, i = _group(tex, i)
+                b, i = _group(tex, i)
+                total += max(width(a), width(b)) + 0.4
+            elif name == "sqrt":
+                if tex[i:i + 1] == "[":
+                    i = tex.index("]", i) + 1
+                a, i = _group(tex, i)
+                total += width(a) + 1.0
+            elif name in ("text", "mathrm", "operatorname", "operatorname*", "textrm", "mbox"):
+                a, i = _group(tex, i)
+                total += 0.5 * len(re.sub(r"\\[A-Za-z]+|[{}]", "", a)) + (0.3 if name.startswith("op") else 0)
+            elif name in ("mathbf", "boldsymbol", "mathit", "mathcal", "hat", "bar", "vec", "dot", "ddot",
+                          "tilde", "overline", "widehat", "mathbb"):
+                a, i = _group(tex, i)
+                total += width(a)
+            elif name in ("begin", "end"):
+                env, i = _group(tex, i)
+                if name == "begin" and env in ("matrix", "bmatrix", "pmatrix", "aligned", "array", "cases"):
+                    from_, to = i, _env_close(tex, env, i)
+                    total += _matrix_width(tex[from_:to]) + 0.8
+                    i = to + len(f"\\end{{{env}}}")
+            elif name in _WIDE_CMDS:
+                total += _WIDE_CMDS[name]
+            elif name in _FUNC_CMDS:
+                total += 0.5 * len(name) + 0.2
+            elif name in ("left", "right"):
+                continue
+            elif name in [r[1:] for r in _RELATIONS if r.startswith("\\")]:
+                total += 1.6
+            elif len(name) == 1:  # \{ \| \, ...
+                total += 0.4
+            else:  # a Greek letter or a symbol
+                total += 0.6
+            continue
+        if c in "+-":
+            total += 1.3
+        elif c in "=<>":
+            total += 1.6
+        elif c in "()[]|":
+            total += 0.4
+        elif c in ",;":
+            total += 0.45
+        elif c.isdigit() or c == ".":
+            total += 0.5
+        else:
+            total += 0.55
+        i += 1
+    return total
+
+
+def _matrix_width(body):
+    """Width of a matrix (or aligned) body: the sum of its widest cell in each column."""
+    rows = [r for r in split_rows(body) if r.strip()]
+    cells = [[piece for _, piece in _split_top(r, r"&")] for r in rows]
+    if not cells:
+        return 0.0
+    ncols = max(len(r) for r in cells)
+    return sum(max(width(r[k]) if k < len(r) else 0.0 for r in cells) + 1.0 for k in range(ncols))
+
+
+def split_rows(body):
+    """The rows of an environment body, split at its top-level ``\\\\``."""
+    return [piece for _, piece in _split_top(body, r"\\\\")]
+
+
+def _env_close(tex, env, start):
+    """Index of the ``\\end{env}`` that closes the environment whose body starts at ``start``."""
+    depth = 1
+    for m in re.finditer(r"\\(begin|end)\{" + re.escape(env) + r"\}", tex[start:]):
+        depth += 1 if m.group(1) == "begin" else -1
+        if depth == 0:
+            return start + m.start()
+    return len(tex)
+
+
+def _split_top(tex, seps):
+    """Split ``tex`` at top-level occurrences of ``seps`` (regex). Returns [(sep, piece), ...]
+    where the first sep is ''. Top level: outside braces, \\left..\\right and environments."""
+    parts, depth, last, last_sep, i = [], 0, 0, "", 0
+    pattern = re.compile(seps)
+    while i < len(tex):
+        c = tex[i]
+        if c == "\\":
+            m = re.match(r"\\(left|right|begin|end)(?![A-Za-z])", tex[i:])
+            if m:
+                depth += 1 if m.group(1) in ("left", "begin") else -1
+                i += m.end()
+                if m.group(1) in ("begin", "end"):
+                    _, i = _group(tex, i)
+                elif i < len(tex):  # the delimiter after \left or \right
+                    i += 2 if tex[i] == "\\" else 1
+                continue
+        if c in "{":
+            depth += 1
+        elif c == "}":
+            depth -= 1
+        if depth == 0:
+            m = pattern.match(tex, i)
+            if m and m.group(0):
+                parts.append((last_sep, tex[last:i]))
+                last_sep, last = m.group(0), m.end()
+                i = m.end()
+                continue
+        if c == "\\":
+            m = re.match(r"\\([A-Za-z]+|.)", tex[i:])
+            i += m.end()
+            continue
+        i += 1
+    parts.append((last_sep, tex[last:]))
+    return parts
+
+
+_REL_RE = r"(?:=|<|>|\\(?:leq?|geq?|neq?|approx|equiv|to|Rightarrow|iff)(?![A-Za-z]))"
+
+
+def _terms(tex):
+    """Top-level terms of a sum: [(sign, term)], binary + and - only (a sign after nothing
+    or after another operator belongs to its term)."""
+    raw = _split_top(tex, r"[+-]")
+    terms = []
+    for sep, piece in raw:
+        if terms and not piece.strip() and sep:
+            # "a + -b": the minus is unary, glue it to the next piece
+            terms[-1] = (terms[-1][0], terms[-1][1] + sep)
+            continue
+        if terms and (not terms[-1][1].strip() or re.search(r"(\\cdot|\\times|[*/(,^_])\s*$", terms[-1][1])):
+            terms[-1] = (terms[-1][0], terms[-1][1] + sep + piece)
+            continue
+        terms.append((sep, piece))
+    if terms and not terms[0][1].strip() and len(terms) > 1:  # a leading sign
+        sign = terms[1][0]
+        terms = [(sign, terms[1][1])] + terms[2:]
+    return terms
+
+
+def _pack(terms, limit):
+    """Rows of terms, each at most ``limit`` em wide (a term wider than that is a row alone)."""
+    rows, row, w = [], "", 0.0
+    for sign, term in terms:
+        piece = (f" {sign} " if sign else "") + term.strip()
+        pw = width(piece)
+        if row and w + pw > limit:
+            rows.append(row)
+            row, w = piece, pw
+        else:
+            row, w = row + piece, w + pw
+    if row:
+        rows.append(row)
+    return rows
+
+
+def _break_expression(tex, limit):
+    """Rows (LaTeX, for the right column of ``aligned``) of an expression too wide."""
+    terms = _terms(tex)
+    if len(terms) <= 1:
+        return [tex]
+    rows = _pack(terms, limit)
+    return rows
+
+
+def _break_matrix(tex, limit):
+    """A matrix environment whose long cells are broken into rows inside the cells."""
+    m = re.search(r"\\begin\{([pbvBV]?matrix)\}", tex)
+    if not m:
+        return tex
+    env = m.group(1)
+    start = m.end()
+    end = _env_close(tex, env, start)
+    body = tex[start:end]
+    if "\\begin{matrix}" in body or "\\begin{aligned}" in body:
+        return tex
+    rows = [r for r in split_rows(body) if r.strip()]
+    cells = [[piece for _, piece in _split_top(r, r"&")] for r in rows]
+    ncols = max(len(r) for r in cells)
+    col_w = [max(width(r[k]) if k < len(r) else 0 for r in cells) for k in range(ncols)]
+    if sum(col_w) + 1.2 * ncols <= limit:
+        return tex
+    cell_limit = max(MIN_CELL, limit / ncols - 1.2)
+    new_rows = []
+    for row in cells:
+        new_cells = []
+        for cell in row:
+            if width(cell) > cell_limit:
+                parts = _break_expression(cell.strip(), cell_limit)
+                if len(parts) > 1:
+                    cell = ("\\begin{aligned}{}&" + " \\\\ {}&\\quad ".join(parts) + "\\end{aligned}")
+            new_cells.append(cell)
+        new_rows.append(" & ".join(new_cells))
+    return tex[:start] + " \\\\ ".join(new_rows) + tex[end:]
+
+
+def break_long(tex, limit=LIMIT):
+    """``tex`` itself when it fits in ``limit`` em, else the same formula in aligned rows."""
+    body = tex.strip()
+    if width(body) <= limit:
+        return tex
+    if len(_split_top(body, r"&|\\\\")) > 1 or "\\tag" in body:
+        return tex
+    if re.search(r"\\begin\{(aligned|align\*?|split|gather\*?|cases|array)\}", body):
+        return tex
+    display = ""
+    if body.startswith("\\displaystyle"):
+        display, body = "\\displaystyle ", body[len("\\displaystyle"):].strip()
+    sides = _split_top(body, _REL_RE)
+    if re.search(r"\\begin\{[pbvBV]?matrix\}", body):
+        # break the matrices' cells; each side keeps its place
+        out = "".join((f" {sep} " if sep else "") + _break_matrix(side, limit) for sep, side in sides)
+        if width(out) <= width(body):
+            return display + out
+        return tex
+    lhs = sides[0][1].strip() if len(sides) > 1 else ""
+    rows = []
+    for sep, side in sides[1:] if len(sides) > 1 else [("", body)]:
+        side_rows = _break_expression(side.strip(), limit - (min(width(lhs), 8.0) if lhs else 0.0) - 2.0)
+        for k, row in enumerate(side_rows):
+            if k == 0:
+                rows.append((sep, row))
+            else:
+                rows.append(("", "\\quad " + row))
+    if len(rows) <= 1:
+        return tex
+    lines = []
+    for k, (sep, row) in enumerate(rows):
+        left = lhs if (k == 0 and len(sides) > 1) else "{}"
+        lines.append(f"{left} &{(' ' + sep + ' ') if sep else ' '}{row}")
+    return display + "\\begin{aligned}" + " \\\\ ".join(lines) + "\\end{aligned}"
