@@ -24,6 +24,8 @@ setup: $(STAMP)
 book: $(STAMP)
 	set -o pipefail; PYTHONPATH=$(CURDIR) $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
 	$(BIN)/python book/_check_offline.py book/_build/html
+	# the whole book as one PDF, printed offline by Chromium (book/_pdf.py), linked from the landing page
+	$(BIN)/python book/_pdf.py book/_build/html
 
 ## Regenerate mech/_generated from the derivation notebooks.
 generate: $(STAMP)
@@ -33,12 +35,13 @@ check-generated: $(STAMP)
 	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check
 
 ## System packages of the browser test (tests/browser): Debian's chromium, a CJK font and
-## an OpenType math font for the MathML (Latin Modern Math), installed with apt-get only
+## an OpenType math font for the MathML (Latin Modern Math), and poppler-utils (pdftoppm, to look
+## at the book's PDF as pictures), installed with apt-get only
 ## when missing (as root, or with password-less sudo).
-CHROME_DEBS := chromium fonts-noto-cjk fonts-lmodern
+CHROME_DEBS := chromium fonts-noto-cjk fonts-lmodern poppler-utils
 browser-deps:
 	@if command -v chromium >/dev/null && fc-list :lang=zh 2>/dev/null | grep -q . \
-	    && fc-list 2>/dev/null | grep -q "Latin Modern Math"; then :; \
+	    && fc-list 2>/dev/null | grep -q "Latin Modern Math" && command -v pdftoppm >/dev/null; then :; \
 	elif [ "$$(id -u)" = 0 ]; then \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $(CHROME_DEBS); \
 	elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then \
