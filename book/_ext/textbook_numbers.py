@@ -13,6 +13,10 @@ and this post-transform, run after sphinx-exercise has resolved the titles (prio
 turns the label into the box's title: ``ex-2-19`` becomes "Exercise 2-19". A box without a
 label of that form keeps the extension's title.
 
+The build-status table of MyST-NB marks each page with an emoji (U+2705, U+274C) that a
+machine without an emoji font draws as a box; :class:`StatusWords` writes "passed" and
+"failed" instead.
+
 The book's own figures carry no number (``numfig: false`` in ``_config.yml``): only the
 textbook's figures are numbered ("Fig. 2-37"), so a number a reader sees is always the
 textbook's.
@@ -47,6 +51,20 @@ class ExerciseTextbookNumbers(SphinxPostTransform):
             node["title"] = title
 
 
+STATUS_WORDS = {"\u2705": "passed", "\u274c": "failed"}
+
+
+class StatusWords(SphinxPostTransform):
+    default_priority = 9  # after MyST-NB writes its execution table (8)
+
+    def run(self):
+        for text in list(self.document.findall(nodes.Text)):
+            word = STATUS_WORDS.get(str(text).strip())
+            if word is not None:
+                text.parent.replace(text, nodes.Text(word))
+
+
 def setup(app):
     app.add_post_transform(ExerciseTextbookNumbers)
+    app.add_post_transform(StatusWords)
     return {"parallel_read_safe": True, "parallel_write_safe": True, "version": "1"}

@@ -135,7 +135,8 @@ async () => {
   // Han characters: draw each in its element's font and compare with a missing glyph.
   const byFont = new Map();
   for (const [t, el] of texts) {
-    const han = t.match(/\p{Script=Han}/gu);
+    // Han characters, and pictographs (emoji) too: a machine without an emoji font draws them as boxes
+    const han = t.match(/\p{Script=Han}|\p{Extended_Pictographic}/gu);
     if (!han) continue;
     const cs = getComputedStyle(el);
     const font = `${cs.fontStyle} ${cs.fontWeight} 40px ${cs.fontFamily}`;
@@ -146,7 +147,7 @@ async () => {
   for (const [font, chars] of byFont) {
     const bad = window.__mechTofu([...chars], font);
     hanChecked += chars.size;
-    if (bad.length) problems.push(`Chinese characters drawn as missing glyphs in ${font}: ${bad.join('')}`);
+    if (bad.length) problems.push(`characters drawn as missing glyphs in ${font}: ${bad.join('')}`);
   }
   // Page weight of this cold visit (an empty cache), over the page and every file it loaded
   // (lazy images included: they were loaded above): bytesTransfer is what Chromium received
