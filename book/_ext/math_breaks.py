@@ -58,7 +58,9 @@ def _group(tex, i):
             j += 1
         return tex[i + 1:], len(tex)
     if tex[i] == "\\":
-        m = re.match(r"\\([A-Za-z]+|.)", tex[i:])
+        m = re.match(r"\\([A-Za-z]+|[\s\S])", tex[i:])
+        if m is None:
+            return "", len(tex)
         return m.group(0), i + m.end()
     return tex[i], i + 1
 
@@ -76,7 +78,9 @@ def width(tex):
             total += 0.7 * width(arg)
             continue
         if c == "\\":
-            m = re.match(r"\\([A-Za-z]+\*?|.)", tex[i:])
+            m = re.match(r"\\([A-Za-z]+\*?|[\s\S])", tex[i:])
+            if m is None:  # a lone backslash at the end
+                break
             name = m.group(1)
             i += m.end()
             if name in ("frac", "dfrac", "tfrac", "binom"):
@@ -184,8 +188,8 @@ def _split_top(tex, seps):
                 i = m.end()
                 continue
         if c == "\\":
-            m = re.match(r"\\([A-Za-z]+|.)", tex[i:])
-            i += m.end()
+            m = re.match(r"\\([A-Za-z]+|[\s\S])", tex[i:])
+            i += m.end() if m else 1
             continue
         i += 1
     parts.append((last_sep, tex[last:]))
@@ -283,6 +287,22 @@ def break_long(tex, limit=LIMIT):
     display = ""
     if body.startswith("\\displaystyle"):
         display, body = "\\displaystyle ", body[len("\\displaystyle"):].strip()
+    # a list of equations side by side ("a = b,\\qquad c = d"): one group of them per row
+    pieces = _split_top(body, r",\s*\\q?quad(?![A-Za-z])|\\qquad(?![A-Za-z])")
+    if len(pieces) > 1:
+        items = [(piece.strip() + ("," if k < len(pieces) - 1 and sep_next.startswith(",") else ""))
+                 for k, ((_, piece), (sep_next, _)) in enumerate(zip(pieces, pieces[1:] + [("", "")]))]
+        items = [break_long(item, limit) if width(item) > limit else item for item in items]
+        rows, row = [], ""
+        for item in items:
+            if row and width(row) + width(item) + 2.0 > limit:
+                rows.append(row)
+                row = item
+            else:
+                row = f"{row}\\quad {item}" if row else item
+        rows.append(row)
+        if len(rows) > 1:
+            return display + "\\begin{aligned}" + " \\\\ ".join("{}& " + r for r in rows) + "\\end{aligned}"
     sides = _split_top(body, _REL_RE)
     if re.search(r"\\begin\{[pbvBV]?matrix\}", body):
         # break the matrices' cells; each side keeps its place
@@ -291,18 +311,21 @@ def break_long(tex, limit=LIMIT):
             return display + out
         return tex
     lhs = sides[0][1].strip() if len(sides) > 1 else ""
-    rows = []
-    for sep, side in sides[1:] if len(sides) > 1 else [("", body)]:
-        side_rows = _break_expression(side.strip(), limit - (min(width(lhs), 8.0) if lhs else 0.0) - 2.0)
+    rows = []  # (left column, relation, right column)
+    chain = sides[1:] if len(sides) > 1 else [("", body)]
+    if lhs and width(lhs) > 10.0:
+        # a wide left-hand side (a long sum "= 0"): one column, the left side in rows first
+        chain = [("", lhs)] + chain
+        lhs = ""
+    indent = (min(width(lhs), 8.0) if lhs else 0.0) + 2.0
+    for sep, side in chain:
+        side_rows = _break_expression(side.strip(), limit - indent)
         for k, row in enumerate(side_rows):
-            if k == 0:
-                rows.append((sep, row))
-            else:
-                rows.append(("", "\\quad " + row))
+            rows.append((sep, row) if k == 0 else ("", "\\quad " + row))
     if len(rows) <= 1:
         return tex
     lines = []
     for k, (sep, row) in enumerate(rows):
-        left = lhs if (k == 0 and len(sides) > 1) else "{}"
+        left = lhs if (k == 0 and lhs) else "{}"
         lines.append(f"{left} &{(' ' + sep + ' ') if sep else ' '}{row}")
     return display + "\\begin{aligned}" + " \\\\ ".join(lines) + "\\end{aligned}"
