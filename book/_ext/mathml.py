@@ -30,6 +30,7 @@ from pathlib import Path
 from docutils import nodes
 
 from math_breaks import break_long
+from math_breaks import width as math_width
 
 MATHML_NS = "http://www.w3.org/1998/Math/MathML"
 PLACEHOLDER = "MECHPH{}Z"
@@ -37,6 +38,7 @@ ALIGN_ENVS = ("aligned", "split", "align", "align*", "alignat", "alignat*", "gat
               "gathered", "multline", "multline*", "flalign", "flalign*", "eqnarray", "eqnarray*")
 WRAPPER_ENVS = ("equation", "equation*", "displaymath", "math")
 CSS = "mech-math.css"
+LONG_INLINE_EM = 14.0  # an inline formula wider than this (about 280 px) is marked mech-long
 
 
 class MathMLError(ValueError):
@@ -573,7 +575,9 @@ def html_visit_math(self, node):
         mathml, _ = tex_to_mathml(node.astext(), display=False)
     except MathMLError as exc:
         _fail(self, node, exc)
-    self.body.append(self.starttag(node, "span", "", CLASS="math notranslate nohighlight"))
+    # a long inline formula may scroll in its own box on a phone instead of widening the page
+    long = " mech-long" if math_width(node.astext()) > LONG_INLINE_EM else ""
+    self.body.append(self.starttag(node, "span", "", CLASS="math notranslate nohighlight" + long))
     self.body.append(mathml + "</span>")
     raise nodes.SkipNode
 
