@@ -198,6 +198,51 @@ FIT_CHECKS = r"""
           wideOutputs, pageWidth, pans: pageWidth > window.innerWidth + 1, culprits};
 }
 """
+# Labels of the moving and turnable figures (figures/animate.py) that overlap, in every
+# frame an animation can show (at most 90 frames, evenly spread) and in each turnable view
+# as first drawn (issue 26). Two text boxes overlap when they share more than a sliver: a
+# text box is taller than its ink, so 12 % of the smaller height may touch at top and bottom.
+LABEL_CHECKS = r"""
+() => {
+  const found = [];
+  const boxes = (svg) => [...svg.querySelectorAll('text')]
+    .filter((t) => t.textContent.trim() && t.getClientRects().length)
+    .map((t) => [t.textContent.trim(), t.getBoundingClientRect()]);
+  const hit = (a, b) => {
+    const h = 0.12 * Math.min(a.height, b.height);
+    return a.left < b.right - 0.5 && b.left < a.right - 0.5 && a.top + h < b.bottom - h && b.top + h < a.bottom - h;
+  };
+  const check = (where, svg) => {
+    const b = boxes(svg);
+    for (let i = 0; i < b.length; i++) for (let j = i + 1; j < b.length; j++) {
+      if (hit(b[i][1], b[j][1])) found.push(`${where}: "${b[i][0]}" overlaps "${b[j][0]}"`);
+    }
+  };
+  const figs = [...document.querySelectorAll('div.mech-anim, div.mech-view3d')];
+  figs.forEach((fig, k) => {
+    const svg = fig.querySelector('svg');
+    if (!svg) return;
+    const name = `figure ${k + 1}` + (fig.querySelector('.mech-title') ? ` (${fig.querySelector('.mech-title').textContent})` : '');
+    const slider = fig.querySelector('input.mech-slider');
+    if (!slider) { check(name, svg); return; }
+    const lo = +slider.min || 0, hi = +slider.max || 0, step = Math.max(1, Math.ceil((hi - lo + 1) / 90));
+    for (let v = lo; v <= hi; v += step) {
+      slider.value = String(v);
+      slider.dispatchEvent(new Event('input', {bubbles: true}));
+      check(`${name}, frame ${v}`, svg);
+    }
+    slider.value = String(lo);
+    slider.dispatchEvent(new Event('input', {bubbles: true}));
+  });
+  // one line per pair of labels and figure: the first frame where they meet
+  const seen = new Set(), out = [];
+  for (const f of found) {
+    const key = f.replace(/, frame \d+:/, ':');
+    if (!seen.has(key)) { seen.add(key); out.push(f); }
+  }
+  return {figures: figs.length, overlaps: out};
+}
+"""
 WIDE_DISPLAY_LIMIT = 5   # display formulas wider than the column at 1280 px, the whole book
 FIT_WIDTHS = (1280, 400)
 
@@ -432,6 +477,9 @@ async def _check_one(browser, base, rel, screenshot_dir, page_budget):
             problems.append(f"page {narrow['pageWidth']} px wide at {narrow['viewport']} px, it pans sideways: "
                             + "; ".join(narrow["culprits"]))
         info["animations"] = await _check_animations(page, problems)
+        labels = await page.evaluate(LABEL_CHECKS)
+        info["label_overlaps"] = labels["overlaps"]
+        problems.extend(f"labels collide: {o}" for o in labels["overlaps"])
         info["views3d"] = await _check_views(page, problems)
         if screenshot_dir is not None:
             shot = Path(screenshot_dir) / (rel.removesuffix(".html").replace("/", "__") + ".jpg")
@@ -696,6 +744,8 @@ async def _fit_all(root, pages, executable, tabs):
                             await page.goto(base + rel, wait_until="load", timeout=60000)
                             await page.evaluate("document.fonts.ready")
                             fit[width] = await page.evaluate(FIT_CHECKS)
+                            if width == 1280:
+                                fit["labels"] = (await page.evaluate(LABEL_CHECKS))["overlaps"]
                         finally:
                             await context.close()
                     results[rel] = ([], {"fit": fit})
@@ -724,10 +774,16 @@ if __name__ == "__main__":
     if "-v" in sys.argv or chosen:
         for page, (_, info) in sorted(res.items()):
             for width, f in info["fit"].items():
+                if width == "labels":
+                    continue
                 for d in f["wideDisplays"]:
                     print(f"{width} display {page} {d['width']}/{d['column']}: {d['text']}")
                 for d in f["wideOutputs"]:
                     print(f"{width} output {page} {d['width']}/{d['column']}: {d['text']}")
                 if f["pans"]:
                     print(f"{width} PANS {page} {f['pageWidth']}: {f['culprits']}")
+    overlaps = [(page, o) for page, (_, info) in sorted(res.items()) for o in info["fit"].get("labels", [])]
+    for page, o in overlaps:
+        print(f"LABELS {page}: {o}")
     print(json.dumps({w: {k: v for k, v in s.items() if not k.startswith("worst")} for w, s in out.items()}, indent=1))
+    print("label overlaps:", len(overlaps))

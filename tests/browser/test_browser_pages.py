@@ -137,3 +137,10 @@ def test_equations_and_pages_fit(crawl):
     assert wide["pages"] >= 20
     assert wide["wide_displays"] <= _crawl.WIDE_DISPLAY_LIMIT, wide["worst_displays"]
     assert fit[400]["panning_pages"] == []
+
+
+def test_labels_never_collide(crawl):
+    """Issue 26: no two labels of a moving or turnable figure overlap, in any frame (each
+    page with a collision also fails its own test_page_in_browser, naming the labels)."""
+    overlaps = {page: info["label_overlaps"] for page, (_, info) in crawl.items() if info.get("label_overlaps")}
+    assert overlaps == {}
