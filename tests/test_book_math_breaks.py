@@ -71,3 +71,18 @@ def test_matrix_keeps_its_shape():
 def test_aligned_formula_is_left_alone():
     tex = r"a &= " + " + ".join(f"x_{{{k}}}" for k in range(60)) + r" \\ b &= c"
     assert math_breaks.break_long(tex) == tex
+
+
+def test_tuple_of_results_goes_one_group_per_row():
+    """SymPy prints a cell's several results as one tuple; a long one is split at its commas."""
+    sm = pytest.importorskip("sympy")
+    x, y, lam = sm.symbols("x y lambda")
+    items = [sm.sin(lam) * x * y + sm.cos(lam) * x ** 2 + sm.sin(x) * sm.cos(y) * k for k in range(1, 6)]
+    tex = r"\displaystyle " + sm.latex(tuple(items))
+    out = math_breaks.break_long(tex)
+    strip = lambda t: _symbols(re.sub(r"\\\\|\\quad|\\left\(|\\right\)|\\Bigl\(\\,|\\,\\Bigr\)|,|\\ ", "", t))
+    assert out != tex and strip(out) == strip(tex)
+    body = re.search(r"\\begin\{aligned\}(.*)\\end\{aligned\}", out, re.S).group(1)
+    rows = [r for _, r in math_breaks._split_top(body, r"\\\\")]
+    assert len(rows) >= 2 and all(math_breaks.width(r) <= math_breaks.LIMIT + 2 for r in rows)
+    mathml.tex_to_mathml(out, display=True)

@@ -275,6 +275,21 @@ def _break_matrix(tex, limit):
     return tex[:start] + " \\\\ ".join(new_rows) + tex[end:]
 
 
+def _tuple_items(body):
+    """The items of ``body`` when it is one tuple ``\\left( a, \\  b\\right)``, else None."""
+    body = body.strip()
+    if not (body.startswith("\\left(") and body.endswith("\\right)")):
+        return None
+    depth, i = 0, 0
+    for m in re.finditer(r"\\(left|right)(?![A-Za-z])", body):
+        depth += 1 if m.group(1) == "left" else -1
+        if depth == 0 and m.end() + 1 < len(body):
+            return None  # the first \left( closes before the end: not one tuple
+    inside = body[len("\\left("):-len("\\right)")]
+    items = [piece.strip() for _, piece in _split_top(inside, r",(?:\s*\\ )?")]
+    return [item for item in items if item]
+
+
 def break_long(tex, limit=LIMIT):
     """``tex`` itself when it fits in ``limit`` em, else the same formula in aligned rows."""
     body = tex.strip()
@@ -287,6 +302,23 @@ def break_long(tex, limit=LIMIT):
     display = ""
     if body.startswith("\\displaystyle"):
         display, body = "\\displaystyle ", body[len("\\displaystyle"):].strip()
+    # a tuple (SymPy prints several results of a cell as one): a few items per row
+    inner = _tuple_items(body)
+    if inner is not None and len(inner) > 1:
+        items = [break_long(item, limit - 2.0) if width(item) > limit - 2.0 else item for item in inner]
+        rows, row = [], []
+        for item in items:
+            if row and width(",\\quad ".join(row + [item])) + 2.0 > limit:
+                rows.append(row)
+                row = [item]
+            else:
+                row.append(item)
+        rows.append(row)
+        if len(rows) > 1:
+            lines = [",\\quad ".join(r) for r in rows]
+            lines = [("\\Bigl(\\, " if k == 0 else "\\quad ") + line + ("," if k < len(lines) - 1 else "\\,\\Bigr)")
+                     for k, line in enumerate(lines)]
+            return display + "\\begin{aligned}" + " \\\\ ".join("{}& " + line for line in lines) + "\\end{aligned}"
     # a list of equations side by side ("a = b,\\qquad c = d"): one group of them per row
     pieces = _split_top(body, r",\s*\\q?quad(?![A-Za-z])|\\qquad(?![A-Za-z])")
     if len(pieces) > 1:
