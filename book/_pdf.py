@@ -30,7 +30,9 @@ PRINT_CSS = """
 .bd-header, .bd-sidebar-primary, .bd-sidebar-secondary, .bd-header-article, .prev-next-area,
 .bd-footer, .bd-footer-content, .header-article-items, .mech-play, .mech-slider, #pst-skip-link,
 .bd-footer-article, .toc-drawer, button { display: none !important; }
-.bd-main, .bd-content, .bd-article-container, .bd-page-width { max-width: 100% !important; width: 100% !important; }
+#jb-print-toc { display: none !important; }
+.bd-main, .bd-content, .bd-article-container, .bd-page-width, .bd-article {
+  max-width: 100% !important; width: 100% !important; margin: 0 !important; padding: 0 !important; }
 .bd-container, .bd-container__inner { display: block !important; }
 div.math, div.highlight pre, div.cell_output, div.cell_output pre { overflow: visible !important; white-space: pre-wrap; }
 figure, div.math, table, img, svg { break-inside: avoid; }
@@ -131,7 +133,7 @@ def build_pdf(root, output=None):
         title, pdf = printed[name]
         first = len(writer.pages)
         writer.append(PdfReader(io.BytesIO(pdf)))
-        writer.add_outline_item(title, first)
+        writer.add_outline_item(title=title, page_number=first)
     writer.add_metadata({"/Title": "mech: a symbolic-numeric companion to linkage kinematics"})
     with open(output, "wb") as f:
         writer.write(f)
