@@ -330,7 +330,8 @@ def _table(rows_tex, kind):
             else:
                 align, pad = "left", "padding-left:0;"
                 cell = "{}" + cell  # a relation that starts the cell keeps its spacing
-            body = _to_mathml(cell)
+            # an empty cell (a continuation row "\\ &= ...") is an empty group
+            body = _to_mathml(cell if cell.strip() else "{}")
             tds.append(f'<mtd columnalign="{align}" style="text-align:{align};{pad}">'
                        f'<mrow>{body}</mrow></mtd>')
         rows.append("<mtr>" + "".join(tds) + "</mtr>")
