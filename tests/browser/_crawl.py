@@ -767,11 +767,16 @@ if __name__ == "__main__":
     import json
     import sys
 
+    args = sys.argv[2:]
     html = Path(__file__).resolve().parents[2] / "book" / "_build" / "html"
-    chosen = [p if p.endswith(".html") else p + ".html" for p in sys.argv[2:]] or None
+    if args[:1] == ["--html"]:
+        html, args = Path(args[1]), args[2:]
+    verbose = "-v" in args
+    args = [a for a in args if a != "-v"]
+    chosen = [p if p.endswith(".html") else p + ".html" for p in args] or None
     res = fit_pages(html, chosen)
     out = fit_summary(res)
-    if "-v" in sys.argv or chosen:
+    if verbose or chosen:
         for page, (_, info) in sorted(res.items()):
             for width, f in info["fit"].items():
                 if width == "labels":
