@@ -173,7 +173,7 @@ async () => {
 # named by its first characters, so a report says which formula or output it is.
 FIT_CHECKS = r"""
 () => {
-  const name = (el) => (el.textContent || '').replace(/\s+/g, ' ').trim().slice(0, 60);
+  const name = (el) => Array.from((el.textContent || '').replace(/\s+/g, ' ').trim()).slice(0, 60).join('');
   const wide = (el) => el.scrollWidth > el.clientWidth + 2;
   const displays = [...document.querySelectorAll('div.math')].filter((d) => d.querySelector('math'));
   const wideDisplays = displays.filter(wide).map((d) => ({text: name(d), width: d.scrollWidth, column: d.clientWidth}));
@@ -184,12 +184,19 @@ FIT_CHECKS = r"""
   const pageWidth = Math.max(doc.scrollWidth, document.body.scrollWidth);
   // what makes the page wider than the viewport: the widest elements that reach past it
   const culprits = [];
+  // an element that reaches past the viewport and sits in no box that scrolls or clips
+  const clipped = (el) => {
+    for (let a = el.parentElement; a && a !== document.body && a !== doc; a = a.parentElement) {
+      if (getComputedStyle(a).overflowX !== 'visible') return true;
+    }
+    return false;
+  };
   if (pageWidth > window.innerWidth + 1) {
     for (const el of document.querySelectorAll('body *')) {
       const r = el.getBoundingClientRect();
-      if (r.right > window.innerWidth + 1 && r.width > 0 && !el.closest('.bd-sidebar-primary, .bd-sidebar-secondary, dialog')) {
-        const parent = el.parentElement && el.parentElement.getBoundingClientRect();
-        if (!parent || parent.right <= window.innerWidth + 1) culprits.push(`<${el.localName} class="${el.className}">${name(el)}`);
+      if (r.right > window.innerWidth + 1 && r.width > 0 && !clipped(el)
+          && !el.closest('.bd-sidebar-primary, .bd-sidebar-secondary, dialog')) {
+        culprits.push(`<${el.localName} class="${el.className}">${name(el)}`);
       }
       if (culprits.length >= 5) break;
     }
