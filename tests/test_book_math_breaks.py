@@ -86,3 +86,19 @@ def test_tuple_of_results_goes_one_group_per_row():
     rows = [r for _, r in math_breaks._split_top(body, r"\\\\")]
     assert len(rows) >= 2 and all(math_breaks.width(r) <= math_breaks.LIMIT + 2 for r in rows)
     mathml.tex_to_mathml(out, display=True)
+
+
+def test_long_function_arguments_go_one_per_row():
+    """A long atan2(y, x) is written with its arguments in rows (nothing lost)."""
+    sm = pytest.importorskip("sympy")
+    a, b, c, d, th = sm.symbols("a b c d theta", positive=True)
+    expr = 2 * sm.atan2(4 * a * d * sm.sin(th / 2) ** 2 + (-a - b + c + d) * (-a + b - c + d),
+                        4 * a * d * sm.cos(th / 2) ** 2 + (-a + b + c - d) * (a + b + c + d))
+    tex = r"\displaystyle " + sm.latex(expr)
+    out = math_breaks.break_long(tex)
+    body = re.search(r"\\begin\{aligned\}(.*)\\end\{aligned\}", out, re.S).group(1)
+    rows = [r for _, r in math_breaks._split_top(body, r"\\\\")]
+    assert len(rows) == 2 and all(math_breaks.width(r) <= math_breaks.LIMIT + 3 for r in rows)
+    strip = lambda t: _symbols(re.sub(r"\\\\|\\quad|\\left\(|\\right\)|\\Bigl\(|\\Bigr\)|[(){},]|\\ ", "", t))
+    assert strip(out) == strip(tex)
+    mathml.tex_to_mathml(out, display=True)

@@ -235,13 +235,94 @@ def _pack(terms, limit):
     return rows
 
 
+def _unwrap_groups(tex):
+    """``{\\left( ... \\right)}`` -> ``\\left( ... \\right)``: SymPy's braces around a
+    function's arguments only group them."""
+    out, i = [], 0
+    while True:
+        j = tex.find("{\\left(", i)
+        if j < 0:
+            out.append(tex[i:])
+            return "".join(out)
+        depth, k, close = 0, j + 1, None
+        for m in re.finditer(r"\\(left|right)(?![A-Za-z])", tex[j + 1:]):
+            depth += 1 if m.group(1) == "left" else -1
+            if depth == 0:
+                close = j + 1 + m.end()
+                break
+        end = None
+        if close is not None:
+            k = close + 1 if tex[close:close + 1] in ")]." else close
+            if tex[k:k + 1] == "}":
+                end = k
+        if end is None:
+            out.append(tex[i:j + 1])
+            i = j + 1
+            continue
+        out.append(tex[i:j] + tex[j + 1:end])
+        i = end + 1
+
+
+def _widest_group(tex):
+    """(start, end) of the top-level ``\\left( ... \\right)`` group whose inside is widest, or None."""
+    best, depth, start, brace = None, 0, None, 0
+    i = 0
+    while i < len(tex):
+        c = tex[i]
+        if c == "\\":
+            m = re.match(r"\\(left|right)(?![A-Za-z])", tex[i:])
+            if m:
+                if m.group(1) == "left":
+                    if depth == 0 and brace == 0 and tex[i + m.end():i + m.end() + 1] == "(":
+                        start = i
+                    depth += 1
+                else:
+                    depth -= 1
+                    if depth == 0 and start is not None and tex[i + m.end():i + m.end() + 1] == ")":
+                        w = width(tex[start + 6:i])
+                        if best is None or w > best[2]:
+                            best = (start, i + m.end() + 1, w)
+                        start = None
+                i += m.end() + 1
+                continue
+            i += 2
+            continue
+        brace += {"{": 1, "}": -1}.get(c, 0)
+        i += 1
+    return best
+
+
+def _break_paren(tex, limit):
+    """Rows of ``prefix \\left( inside \\right) suffix`` with the inside broken (at its
+    commas, else at its + and -), or None when no group holds most of the width."""
+    tex = _unwrap_groups(tex)
+    group = _widest_group(tex)
+    if group is None or group[2] < 0.5 * width(tex):
+        return None
+    start, end, _ = group
+    prefix, inside, suffix = tex[:start], tex[start + 6:end - 7], tex[end:]
+    items = [piece.strip() for _, piece in _split_top(inside, r",(?:\s*\\ )?")]
+    if len(items) > 1:
+        pieces = [(item if width(item) <= limit - 3 else break_long(item, limit - 3))
+                  + ("," if k < len(items) - 1 else "") for k, item in enumerate(items)]
+    else:
+        pieces = _pack(_terms(inside), limit - 3)
+    if len(pieces) <= 1:
+        return None
+    rows = [prefix + "\\Bigl(" + pieces[0]] + ["\\quad " + p for p in pieces[1:]]
+    rows[-1] += "\\Bigr)" + suffix
+    return rows
+
+
 def _break_expression(tex, limit):
     """Rows (LaTeX, for the right column of ``aligned``) of an expression too wide."""
     terms = _terms(tex)
-    if len(terms) <= 1:
-        return [tex]
-    rows = _pack(terms, limit)
-    return rows
+    rows = _pack(terms, limit) if len(terms) > 1 else [tex]
+    out = []
+    for row in rows:
+        broken = _break_paren(row, limit) if width(row) > limit + 3 else None
+        out.extend(broken or [row])
+    return out
 
 
 def _break_matrix(tex, limit):
