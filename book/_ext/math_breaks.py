@@ -292,7 +292,7 @@ def _widest_group(tex):
     return best
 
 
-def _break_paren(tex, limit):
+def _break_paren(tex, limit, depth=0):
     """Rows of ``prefix \\left( inside \\right) suffix`` with the inside broken (at its
     commas, else at its + and -), or None when no group holds most of the width."""
     tex = _unwrap_groups(tex)
@@ -307,8 +307,18 @@ def _break_paren(tex, limit):
                   + ("," if k < len(items) - 1 else "") for k, item in enumerate(items)]
     else:
         pieces = _pack(_terms(inside), limit - 3)
+        if len(pieces) <= 1:  # a product of parenthesised factors: one factor group per row
+            factors = [("", f) for _, f in _split_top(inside, _FACTOR)]
+            pieces = _pack(factors, limit - 3)
+            pieces = [pieces[0]] + ["\\times " + p for p in pieces[1:]]
     if len(pieces) <= 1:
         return None
+    if depth < 3:  # a piece still too wide: break inside its own parentheses
+        deeper = []
+        for piece in pieces:
+            rows_of = _break_paren(piece, limit - 2, depth + 1) if width(piece) > limit + 3 else None
+            deeper.extend(rows_of or [piece])
+        pieces = deeper
     rows = [prefix + "\\Bigl(" + pieces[0]] + ["\\quad " + p for p in pieces[1:]]
     rows[-1] += "\\Bigr)" + suffix
     return rows
@@ -321,7 +331,29 @@ def _break_expression(tex, limit):
     out = []
     for row in rows:
         broken = _break_paren(row, limit) if width(row) > limit + 3 else None
+        if broken is None and width(row) > limit + 3:
+            broken = _break_product(row, limit)
         out.extend(broken or [row])
+    return out
+
+
+_FACTOR = r"(?<=\\right\))\s+(?=\\left\()"
+
+
+def _break_product(tex, limit):
+    """Rows of a product of parenthesised factors, each factor group broken further if
+    needed, or None when it has a single factor."""
+    tex = _unwrap_groups(tex)
+    factors = [f for _, f in _split_top(tex, _FACTOR)]
+    if len(factors) <= 1:
+        return None
+    rows = _pack([("", f) for f in factors], limit - 2)
+    out = []
+    for k, row in enumerate(rows):
+        parts = (_break_paren(row, limit - 2, 1) if width(row) > limit + 3 else None) or [row]
+        if k:
+            parts[0] = "\\times " + parts[0]
+        out.extend(parts)
     return out
 
 
