@@ -333,8 +333,28 @@ def _break_expression(tex, limit):
         broken = _break_paren(row, limit) if width(row) > limit + 3 else None
         if broken is None and width(row) > limit + 3:
             broken = _break_product(row, limit)
+        if broken is None and width(row) > limit + 3:
+            broken = _break_fraction(row, limit)
         out.extend(broken or [row])
     return out
+
+
+def _break_fraction(tex, limit):
+    """``sign \\frac{N}{D}`` with a wide numerator as ``sign \\frac{1}{D}\\Bigl(N\\Bigr)``,
+    the numerator in rows; None for anything else."""
+    m = re.match(r"\s*([+-]?)\s*\\frac\s*\{", tex)
+    if not m:
+        return None
+    num, i = _group(tex, m.end() - 1)
+    den, j = _group(tex, i)
+    if tex[j:].strip() or width(num) <= limit:
+        return None
+    pieces = _break_expression(num, limit - 4)
+    if len(pieces) <= 1:
+        return None
+    rows = [f"{m.group(1)}\\frac{{1}}{{{den}}}\\Bigl(" + pieces[0]] + ["\\quad " + p for p in pieces[1:]]
+    rows[-1] += "\\Bigr)"
+    return rows
 
 
 _FACTOR = r"(?<=\\right\))\s+(?=\\left\()"
