@@ -17,9 +17,10 @@ The build-status table of MyST-NB marks each page with an emoji (U+2705, U+274C)
 machine without an emoji font draws as a box; :class:`StatusWords` writes "passed" and
 "failed" instead.
 
-The book's own figures carry no number (``numfig: false`` in ``_config.yml``): only the
-textbook's figures are numbered ("Fig. 2-37"), so a number a reader sees is always the
-textbook's.
+The book's own figures carry no number: only the textbook's figures are numbered ("Fig.
+2-37"), so a number a reader sees is always the textbook's. ``_config.yml`` sets ``numfig:
+false``, but sphinx-jupyterbook-latex turns it on again when the configuration is read
+(for its LaTeX output, on every builder); :func:`no_figure_numbers` turns it off after it.
 """
 
 import re
@@ -64,7 +65,13 @@ class StatusWords(SphinxPostTransform):
                 text.parent.replace(text, nodes.Text(word))
 
 
+def no_figure_numbers(app, config):
+    config.numfig = False
+
+
 def setup(app):
+    # after sphinx-jupyterbook-latex's own config-inited handler (priority 500)
+    app.connect("config-inited", no_figure_numbers, priority=900)
     app.add_post_transform(ExerciseTextbookNumbers)
     app.add_post_transform(StatusWords)
     return {"parallel_read_safe": True, "parallel_write_safe": True, "version": "1"}
