@@ -21,9 +21,11 @@ $(STAMP): requirements.txt pyproject.toml
 setup: $(STAMP)
 
 ## Set everything up and build the book (fails on any warning or failing cell).
-book: $(STAMP)
+book: $(STAMP) browser-deps
 	set -o pipefail; PYTHONPATH=$(CURDIR) $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
 	$(BIN)/python book/_check_offline.py book/_build/html
+	# the whole book as one PDF, printed offline by Chromium (book/_pdf.py), linked from the landing page
+	$(BIN)/python book/_pdf.py book/_build/html
 
 ## Regenerate mech/_generated from the derivation notebooks.
 ## (and book/_static/kernels, the JavaScript backend, checked under Node when installed)
@@ -46,13 +48,14 @@ node-deps:
 	fi
 
 ## System packages of the browser test (tests/browser): Debian's chromium, a CJK font and
-## an OpenType math font for the MathML (Latin Modern Math), installed with apt-get only
-## when missing (as root, or with password-less sudo). poppler-utils (pdftotext, pdftoppm)
-## reads back the exercise sheets' PDFs in tests/exercises/test_teaching.py.
+## an OpenType math font for the MathML (Latin Modern Math), and poppler-utils (pdftotext and
+## pdftoppm: the book's PDF and the exercise sheets' PDFs are read back as text and pictures in
+## the tests), installed with apt-get only when missing (as root, or with password-less sudo).
+## `make book` needs them too: the book's PDF is printed by Chromium.
 CHROME_DEBS := chromium fonts-noto-cjk fonts-lmodern poppler-utils
 browser-deps:
-	@if command -v chromium >/dev/null && command -v pdftotext >/dev/null && fc-list :lang=zh 2>/dev/null | grep -q . \
-	    && fc-list 2>/dev/null | grep -q "Latin Modern Math"; then :; \
+	@if command -v chromium >/dev/null && command -v pdftotext >/dev/null && command -v pdftoppm >/dev/null \
+	    && fc-list :lang=zh 2>/dev/null | grep -q . && fc-list 2>/dev/null | grep -q "Latin Modern Math"; then :; \
 	elif [ "$$(id -u)" = 0 ]; then \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $(CHROME_DEBS); \
 	elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then \

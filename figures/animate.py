@@ -21,9 +21,9 @@ svg changes both attributes (degrees) and redraws. A moving 3-D view has both cl
 Weight, measured on the crank-rocker (10, 40, 30, 35) with a coupler point, 180 poses
 (the table is on the book's page *How to read this book*): Matplotlib's
 ``FuncAnimation.to_jshtml`` (one PNG per pose, 5 x 4 in) stores 2441 kB at 72 dpi and
-3655 kB at 100 dpi, and took about 13 s to render; this module stores 16.2 kB (6.8 kB of
+3655 kB at 100 dpi, and took about 13 s to render; this module stores 17.3 kB (6.8 kB of
 data, the poses rounded to 4 significant digits on an integer grid and the input values;
-7.4 kB of script, 1.5 kB of style). Plotly would add its own script of about 3.5 MB to every page that uses it.
+8.5 kB of script (with the placing of labels that never collide), 1.5 kB of style). Plotly would add its own script of about 3.5 MB to every page that uses it.
 """
 
 import html
@@ -41,6 +41,7 @@ _CSS = """<style>
 .mech-fig{margin:.4em 0 1.2em;font:13px/1.4 sans-serif}
 .mech-fig svg{width:100%;height:auto;display:block;touch-action:none;background:#fff;border:1px solid #e4e4e4}
 .mech-view3d svg{cursor:grab}
+.mech-title{font-weight:600;margin:0 0 .25em}
 .mech-fig path,.mech-fig circle,.mech-fig rect{vector-effect:non-scaling-stroke}
 .mech-bar{display:flex;flex-wrap:wrap;gap:.5em;align-items:center;margin-top:.3em}
 .mech-bar .mech-slider{flex:1 1 10em}
@@ -125,8 +126,9 @@ def _controls(n, label, marks):
             f'aria-label="{html.escape(label)}"><span class="mech-value"></span>{jumps}</div>')
 
 
-def _wrap(classes, attrs, svg, controls, data):
-    return (f'{_CSS}<div class="mech-fig {classes}" {attrs}>{svg}{controls}'
+def _wrap(classes, attrs, svg, controls, data, title=""):
+    heading = f'<div class="mech-title">{html.escape(title)}</div>' if title else ""
+    return (f'{_CSS}<div class="mech-fig {classes}" {attrs}>{heading}{svg}{controls}'
             f'<script type="application/json" class="mech-data">{_json(data)}</script></div>'
             f"<script>{_script()}</script>")
 
@@ -138,7 +140,7 @@ def _display(text):
 
 
 def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches=None, marks=(),
-            inputs=None, input_label="\u03b8 (deg)", labels=True, fps=30, width=560, caption=""):
+            inputs=None, input_label="\u03b8 (deg)", labels=True, fps=30, width=560, caption="", title=""):
     """Animate a planar linkage from its solved poses.
 
     Parameters
@@ -176,6 +178,8 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         Largest width in CSS pixels.
     caption : str
         Text for screen readers (``aria-label`` of the SVG).
+    title : str
+        A visible title above the figure (which linkage it is, when a page shows several).
 
     Returns
     -------
@@ -242,7 +246,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
     font = round(0.034 * max(w, h), 1)
     svg = (f'<svg viewBox="{x0} {y0} {w} {h}" style="max-width:{int(width)}px;font-size:{font}px" role="img" '
            f'aria-label="{html.escape(caption)}"></svg>')
-    return _display(_wrap("mech-anim", 'data-frame="0"', svg, _controls(n, input_label, marks), data))
+    return _display(_wrap("mech-anim", 'data-frame="0"', svg, _controls(n, input_label, marks), data, title))
 
 
 def animate_linkage(linkage, solution, *, trace=(), inputs=None, **options):
@@ -319,7 +323,7 @@ def great_circle(pole, n=97):
 
 
 def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), inputs=None,
-           input_label="\u03b8 (deg)", labels=True, yaw=30.0, pitch=20.0, fps=20, width=460, caption=""):
+           input_label="\u03b8 (deg)", labels=True, yaw=30.0, pitch=20.0, fps=20, width=460, caption="", title=""):
     """A 3-D figure the reader turns by dragging; moving when its points have several poses.
 
     Parameters
@@ -337,7 +341,7 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
         Draw the unit sphere's outline and draw what lies behind it faint and dashed.
     trace : sequence of str
         Moving points whose path is drawn and traced up to the current frame.
-    inputs, input_label, labels, fps, width, caption
+    inputs, input_label, labels, fps, width, caption, title
         As in `animate`.
     yaw, pitch : float
         The initial view, degrees: turn about the z axis, then tilt towards the reader.
@@ -393,4 +397,4 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
     moving = n > 1
     attrs = f'data-yaw="{float(yaw):.1f}" data-pitch="{float(pitch):.1f}"' + (' data-frame="0"' if moving else "")
     return _display(_wrap("mech-view3d mech-anim" if moving else "mech-view3d", attrs, svg,
-                          _controls(n, input_label, ()) if moving else "", data))
+                          _controls(n, input_label, ()) if moving else "", data, title))

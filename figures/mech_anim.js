@@ -22,6 +22,31 @@
     }
     return close && d ? d + "Z" : d;
   }
+  // Labels that never collide: each label tries a few places around its point (up right,
+  // up left, down right, down left, above, below) and takes the first whose box overlaps
+  // no label placed before it in this drawing (the first place when none is free).
+  function overlaps(a, b) {
+    // a text box is taller than its ink: the boxes may touch by 12 % of a height
+    var h = 0.12 * Math.min(a.height, b.height);
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y + h < b.y + b.height - h && b.y + h < a.y + a.height - h;
+  }
+  function place(t, q, off, placed) {
+    var spots = [[1, -1, "start"], [-1, -1, "end"], [1, 1.6, "start"], [-1, 1.6, "end"], [0, -1.5, "middle"],
+                 [0, 2.2, "middle"], [1.6, 0.5, "start"], [-1.6, 0.5, "end"]], first = null;
+    for (var k = 0; k < spots.length; k++) {
+      t.setAttribute("x", q[0] + spots[k][0] * off);
+      t.setAttribute("y", q[1] + spots[k][1] * off);
+      t.setAttribute("text-anchor", spots[k][2]);
+      var b = t.getBBox();
+      if (!first) first = [k, b];
+      if (!b.width || !placed.some(function (p) { return overlaps(p, b); })) { placed.push(b); return; }
+    }
+    var s0 = spots[first[0]];
+    t.setAttribute("x", q[0] + s0[0] * off);
+    t.setAttribute("y", q[1] + s0[1] * off);
+    t.setAttribute("text-anchor", s0[2]);
+    placed.push(first[1]);
+  }
   // The point of frame f in a flat array with `dim` numbers per frame (null: no pose).
   function at(arr, f, dim) {
     // A fixed point is stored once, not once per frame.
@@ -101,6 +126,8 @@
         el(layer.top, "rect", {x: q[0] - 1.3 * u, y: q[1] - 0.8 * u, width: 2.6 * u, height: 1.6 * u, class: "mf-block",
                                transform: "rotate(" + deg.toFixed(1) + " " + q[0] + " " + q[1] + ")"});
       });
+      var placed = [];
+      layer.mark.querySelectorAll("text").forEach(function (t) { var b = t.getBBox(); if (b.width) placed.push(b); });
       p.forEach(function (q, i) {
         if (!q) return;
         // Names starting with "_" are helper points (a block's direction): not drawn.
@@ -109,7 +136,11 @@
           el(layer.top, "path", {d: pathD([q, [q[0] - u, q[1] + 1.7 * u], [q[0] + u, q[1] + 1.7 * u]], true), class: "mf-ground"});
         }
         el(layer.top, "circle", {cx: q[0], cy: q[1], r: 0.45 * u, class: "mf-joint"});
-        if (d.labels) el(layer.top, "text", {x: q[0] + 0.7 * u, y: q[1] - 0.7 * u, class: "mf-label"}).textContent = d.names[i];
+        if (d.labels) {
+          var t = el(layer.top, "text", {x: q[0] + 0.7 * u, y: q[1] - 0.7 * u, class: "mf-label"});
+          t.textContent = d.names[i];
+          place(t, q, 0.7 * u, placed);
+        }
       });
     }
     controls(div, d, draw);
@@ -172,11 +203,16 @@
         var a = p[l[0]], b = p[l[1]];
         if (a && b) line(l[2] ? slerp(a, b) : [a, b], "mf-link");
       });
+      var placed = [];
       p.forEach(function (q, i) {
         if (!q) return;
         var r = project(q);
         el(g, "circle", {cx: r[0], cy: r[1], r: 18, class: "mf-joint" + (d.sphere && r[2] < 0 ? " mf-back" : "")});
-        if (d.labels) el(g, "text", {x: r[0] + 30, y: r[1] - 30, class: "mf-label3"}).textContent = d.names[i];
+        if (d.labels) {
+          var t = el(g, "text", {x: r[0] + 30, y: r[1] - 30, class: "mf-label3"});
+          t.textContent = d.names[i];
+          place(t, r, 30, placed);
+        }
       });
     }
     var drag = null;

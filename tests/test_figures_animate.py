@@ -201,3 +201,10 @@ def test_animate_weight_stated_in_the_docstring():
     stated = float(re.search(r"this module stores ([0-9.]+) kB", " ".join(anim.__doc__.split())).group(1))
     measured = len(html.encode()) / 1000
     assert abs(stated - measured) <= 0.02 * measured, (stated, measured)
+
+
+def test_title_is_shown_above_the_figure():
+    """Issue 26: a page with several turnable views says which one each is."""
+    out = anim.view3d({"P": [0.0, 0.0, 1.0]}, title="The Watt-1 six-bar <1>").data
+    assert '<div class="mech-title">The Watt-1 six-bar &lt;1&gt;</div><svg' in out
+    assert 'class="mech-title"' not in anim.view3d({"P": [0.0, 0.0, 1.0]}).data

@@ -12,7 +12,9 @@ page is written, with `latex2mathml` (pure Python) and a few repairs around it:
 - ``\\operatorname{...}`` and ``\\mathrm{...}`` become upright identifiers;
 - ``mathvariant`` bold and bold-italic (``\\mathbf``, ``\\boldsymbol``), which MathML Core
   does not draw, become the Unicode mathematical bold letters;
-- ``\\pm`` and ``\\mp`` become operators.
+- ``\\pm`` and ``\\mp`` become operators;
+- a display formula wider than the column is first broken into aligned rows
+  (``math_breaks.py``).
 
 A formula that cannot be converted (an unknown command, a stray ``&``, malformed output)
 raises :class:`MathMLError`, which stops the build: nothing falls back to raw TeX.
@@ -27,12 +29,16 @@ from pathlib import Path
 
 from docutils import nodes
 
+from math_breaks import break_long
+from math_breaks import width as math_width
+
 MATHML_NS = "http://www.w3.org/1998/Math/MathML"
 PLACEHOLDER = "MECHPH{}Z"
 ALIGN_ENVS = ("aligned", "split", "align", "align*", "alignat", "alignat*", "gather", "gather*",
               "gathered", "multline", "multline*", "flalign", "flalign*", "eqnarray", "eqnarray*")
 WRAPPER_ENVS = ("equation", "equation*", "displaymath", "math")
 CSS = "mech-math.css"
+LONG_INLINE_EM = 14.0  # an inline formula wider than this (about 280 px) is marked mech-long
 
 
 class MathMLError(ValueError):
@@ -324,7 +330,8 @@ def _table(rows_tex, kind):
             else:
                 align, pad = "left", "padding-left:0;"
                 cell = "{}" + cell  # a relation that starts the cell keeps its spacing
-            body = _to_mathml(cell)
+            # an empty cell (a continuation row "\\ &= ...") is an empty group
+            body = _to_mathml(cell if cell.strip() else "{}")
             tds.append(f'<mtd columnalign="{align}" style="text-align:{align};{pad}">'
                        f'<mrow>{body}</mrow></mtd>')
         rows.append("<mtr>" + "".join(tds) + "</mtr>")
@@ -534,6 +541,8 @@ def tex_to_mathml(tex, display=False):
         tex = m.group(2).strip()
     if not tex:
         raise MathMLError("an empty formula")
+    if display:  # a formula wider than the column: aligned rows (math_breaks.py, issue 26)
+        tex = break_long(tex)
     parts = [p for p in re.split(r"\n\s*\n", tex) if p.strip()] if display else [tex]
     if display and (len(parts) > 1 or len(split_top(tex, "\\\\")) > 1 or len(split_top(tex, "&")) > 1):
         # rows without an environment (Sphinx wraps them in split): an aligned table
@@ -567,7 +576,9 @@ def html_visit_math(self, node):
         mathml, _ = tex_to_mathml(node.astext(), display=False)
     except MathMLError as exc:
         _fail(self, node, exc)
-    self.body.append(self.starttag(node, "span", "", CLASS="math notranslate nohighlight"))
+    # a long inline formula may scroll in its own box on a phone instead of widening the page
+    long = " mech-long" if math_width(node.astext()) > LONG_INLINE_EM else ""
+    self.body.append(self.starttag(node, "span", "", CLASS="math notranslate nohighlight" + long))
     self.body.append(mathml + "</span>")
     raise nodes.SkipNode
 

@@ -61,6 +61,7 @@ def crawl(chromium):
         "html_bytes": spread((HTML / page).stat().st_size for page in results),
         "shared_files": {name: {"received": sizes[0], "uncompressed": sizes[1]}
                          for name, sizes in sorted(shared.items(), key=lambda kv: -kv[1][1])},
+        "fit": _crawl.fit_summary(results),
         "animations": sum(info.get("animations", 0) for info in infos),
         "views3d": sum(info.get("views3d", 0) for info in infos),
         "results": {page: {"problems": p, **info} for page, (p, info) in sorted(results.items())},
@@ -125,3 +126,22 @@ def test_key_components_keep_their_styles(chromium):
     page = "forces/exercises.html"  # code cells, exercises with solutions, hidden cells
     assert page in PAGES
     assert _crawl.style_problems(HTML, page, executable=chromium) == []
+
+
+def test_equations_and_pages_fit(crawl):
+    """Issue 26: at most WIDE_DISPLAY_LIMIT display formulas wider than their column at
+    1280 px in the whole book, and no page wider than a 400 px screen (each page that pans
+    also fails its own test_page_in_browser, naming what sticks out)."""
+    fit = _crawl.fit_summary(crawl)
+    wide = fit[1280]
+    assert wide["pages"] >= 20
+    assert wide["wide_displays"] <= _crawl.WIDE_DISPLAY_LIMIT, wide["worst_displays"]
+    assert fit[400]["panning_pages"] == []
+
+
+def test_labels_never_collide(crawl):
+    """Issue 26: no two labels of a moving or turnable figure overlap, in any frame (each
+    page with a collision also fails its own test_page_in_browser, naming the labels),
+    except the two pairs still listed in `_crawl.KNOWN_LABEL_OVERLAPS`."""
+    overlaps = {page: info["label_overlaps"] for page, (_, info) in crawl.items() if info.get("label_overlaps")}
+    assert overlaps == {}

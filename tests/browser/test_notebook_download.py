@@ -1,4 +1,4 @@
-"""Derivation pages as notebooks (issue 17, item 6).
+"""Pages as notebooks (issue 17, item 6; issue 26: every page, the run box folded).
 
 Every derivation page of the built book offers its ``.ipynb`` in the download menu and
 tells the reader how to run it; one downloaded notebook, copied to a temporary folder
@@ -49,9 +49,31 @@ def test_derivation_page_offers_its_notebook(built, page):
     assert "import" in sources and notebook.metadata.kernelspec.name == "python3"
 
 
-def test_other_pages_offer_no_notebook(built):
-    html = (built / "glossary.html").read_text(encoding="utf-8")
-    assert ".ipynb" not in html and "Run this derivation yourself" not in html
+@pytest.mark.parametrize("page", ["glossary", "intro", "kinematics/examples"])
+def test_other_pages_offer_their_notebook_without_the_run_box(built, page):
+    """Issue 26: every page is downloadable as a notebook (a page without code as text
+    cells); only derivation pages carry the run box."""
+    nbformat = pytest.importorskip("nbformat")
+    html = (built / f"{page}.html").read_text(encoding="utf-8")
+    href = "../" * page.count("/") + f"_sources/{page}.ipynb"
+    assert f'href="{href}"' in html and "Run this derivation yourself" not in html
+    notebook = nbformat.read(built / "_sources" / f"{page}.ipynb", as_version=4)
+    nbformat.validate(notebook)
+    assert len(notebook.cells) >= 1
+
+
+def test_every_page_offers_a_notebook(built):
+    pages = [p for p in built.rglob("*.html") if not {"_static", "_sources", "_images"} & set(p.parts)
+             and p.name not in ("genindex.html", "search.html")]
+    missing = [p.relative_to(built).as_posix() for p in pages
+               if 'http-equiv="refresh"' not in p.read_text(encoding="utf-8")[:2000].lower()
+               and not (built / "_sources" / p.relative_to(built).with_suffix(".ipynb")).is_file()]
+    assert len(pages) >= 20 and missing == []
+
+
+def test_run_box_is_folded(built):
+    html = (built / f"{RUN_ME}.html").read_text(encoding="utf-8")
+    assert re.search(r'<details class="[^"]*mech-run-notebook[^"]*"><summary[^>]*>Run this derivation yourself</summary>', html)
 
 
 @pytest.mark.slow
