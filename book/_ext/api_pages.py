@@ -24,6 +24,7 @@ import importlib
 import inspect
 import pkgutil
 import re
+from pathlib import Path
 
 from docutils import nodes
 from docutils.statemachine import StringList
@@ -42,6 +43,13 @@ def public_packages():
         if info.ispkg and not any(part.startswith("_") for part in info.name.split(".")):
             names.append(info.name)
     return sorted(names, key=lambda n: (n.count("."), n))
+
+
+def public_modules(package):
+    """The public modules of ``package`` that are not packages (``mech.exercises.chapter2``)."""
+    module = importlib.import_module(package)
+    return [f"{package}.{info.name}" for info in pkgutil.iter_modules(module.__path__)
+            if not info.ispkg and not info.name.startswith("_")]
 
 
 def _exports(package):
@@ -92,7 +100,12 @@ class MechApi(SphinxDirective):
         own = []
         for name, obj in _exports(package):
             home, home_name = where[key(name, obj)]
-            lines.append(f"   {name}" if home == package else f"   ~{home}.{home_name}")
+            # autosummary reads names relative to the package (a home in a subpackage as
+            # `path.CouplerOctic`), and the package's own names bare
+            target = f"{home}.{home_name}"
+            if target.startswith(package + "."):
+                target = target[len(package) + 1:]
+            lines.append(f"   ~{target}")
             if home == package:
                 own.append((name, obj))
         lines.append("")
@@ -100,11 +113,8 @@ class MechApi(SphinxDirective):
             directive, options = _kind(obj)
             lines += [f".. {directive}:: {package}.{name}", *options, ""]
         # public modules that are not packages (``mech.exercises.chapter2``): their docstring
-        packages = set(public_packages())
-        for name in getattr(importlib.import_module(package), "__all__", []):
-            obj = getattr(importlib.import_module(package), name)
-            if inspect.ismodule(obj) and obj.__name__ not in packages:
-                lines += [f".. automodule:: {obj.__name__}", ""]
+        for name in public_modules(package):
+            lines += [f".. automodule:: {name}", ""]
         # the pages are MyST, whose nested parse reads Markdown: the reStructuredText of the
         # autodoc directives (and of the docstrings they pull in) goes through `eval-rst`
         lines = ["```{eval-rst}", *lines, "```"]
@@ -187,7 +197,35 @@ def used_names(sources, where):
     return sorted(seen, key=lambda p: (p[0], p[1].lower()))
 
 
-def _code_sources(doctree):
+_CELL = re.compile(r"^(`{3,})\{code-cell\}[^\n]*\n(.*?)^\1\s*$", re.S | re.M)
+_FENCE = re.compile(r"^(`{3,})(?:python|python3|ipython3|py)\s*\n(.*?)^\1\s*$", re.S | re.M)
+
+
+def _cell_body(text):
+    """A code cell without its options (``:tags: [...]`` lines or a ``---`` block)."""
+    lines = text.splitlines()
+    if lines and lines[0].strip() == "---":
+        end = next((i for i, ln in enumerate(lines[1:], 1) if ln.strip() == "---"), 0)
+        lines = lines[end + 1:]
+    while lines and lines[0].startswith(":"):
+        lines = lines[1:]
+    return "\n".join(lines)
+
+
+def _code_sources(doctree, path):
+    """The page's code: every cell of its source (hidden ones included: a page often imports
+    in a removed cell) and every Python block that the doctree shows."""
+    if path is not None and path.suffix == ".md" and path.exists():
+        text = path.read_text(encoding="utf-8")
+        yield from (_cell_body(m.group(2)) for m in _CELL.finditer(text))
+        yield from (m.group(2) for m in _FENCE.finditer(text))
+    elif path is not None and path.suffix == ".ipynb" and path.exists():
+        import json
+
+        for cell in json.loads(path.read_text(encoding="utf-8")).get("cells", []):
+            if cell.get("cell_type") == "code":
+                source = cell.get("source", "")
+                yield "".join(source) if isinstance(source, list) else source
     for block in doctree.findall(nodes.literal_block):
         language = (block.get("language") or "").lower()
         if language in ("python", "ipython3", "ipython", "python3", "py", "pycon"):
@@ -198,7 +236,8 @@ def add_used_box(app, doctree):
     docname = app.env.docname
     if docname.startswith(API_PREFIX):
         return
-    used = used_names(_code_sources(doctree), app.mech_api_homes)
+    path = Path(app.env.doc2path(docname))
+    used = used_names(_code_sources(doctree, path), app.mech_api_homes)
     if not used:
         return
     box = nodes.admonition(classes=["seealso", "mech-api-used"])

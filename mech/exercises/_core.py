@@ -205,7 +205,7 @@ class Exercise:
     tag : str
         The catalog's tag: ``"N"`` (the text alone determines it), ``"A"`` or ``"G"``.
     statement : str
-        The problem in English, a :meth:`str.format` template over the parameter names.
+        The problem in English, a ``str.format`` template over the parameter names.
     parameters : tuple of Parameter
         The givens; their defaults are the textbook's numbers.
     solver : callable

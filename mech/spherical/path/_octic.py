@@ -181,7 +181,7 @@ def coupler_octic(linkage, points, *, form="auto", small=0.1):
     ------
     ValueError
         If an input is not finite, has the wrong shape, an arc is outside (0, pi), `form`
-        is unknown, `small` < 0, or a point is so long that |x|**8 overflows.
+        is unknown, `small` < 0, or a point is so long that ``|x|**8`` overflows.
 
     Notes
     -----
