@@ -47,7 +47,7 @@ OUTPUT = HERE / "results" / "burmester.json"
 
 
 def coupler_task(seed):
-    """Five coupler poses of a random crank-rocker (as in tests/planar/test_synthesis_guidance.py)."""
+    """Five coupler poses of a random crank-rocker (as in tests/planar/synthesis/test_synthesis_guidance.py)."""
     rng = np.random.default_rng(seed)
     while True:
         a, b, c, d = rng.uniform(0.2, 1.0), *rng.uniform(1.0, 3.0, 3)

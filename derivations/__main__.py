@@ -5,6 +5,9 @@
     python -m derivations --check    # run them without writing; fail if any module is stale
     python -m derivations planar/grashof.md   # only the named notebooks
 
+A run that writes also refreshes the notebooks' entries in ``derivations/manifest.json``
+(see ``_manifest.py``), which the fast test run checks by hashes instead of re-running.
+
 Each notebook's code cells are run in order in a fresh namespace, without a Jupyter kernel;
 the notebook's own asserts (its proofs) and its final ``_codegen.write`` call do the work.
 A full run takes about 20 minutes on a quiet two-core machine: name the notebooks you
@@ -61,6 +64,10 @@ def main(argv=None):
         start = time.perf_counter()
         run(path)
         print(f"{path.relative_to(HERE)}: ok ({time.perf_counter() - start:.1f} s)")
+    if not args.check:
+        from derivations import _manifest
+
+        _manifest.record(paths)
     return 0
 
 

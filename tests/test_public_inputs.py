@@ -1501,7 +1501,7 @@ CASES.update({
 
 
 def _sg_nine():
-    """Nine coupler orientations of a crank-rocker (as in tests/spherical/test_spherical_optimal.py)."""
+    """Nine coupler orientations of a crank-rocker (as in tests/spherical/guidance/test_spherical_optimal.py)."""
     lk = sph.SphericalFourBar(0.35, 0.75, 0.6, 0.8)
     pose = lk.solve(np.linspace(0.3, 2.6, 9))
     zB, zC = np.array([0.0, 0.0, 1.0]), np.array([np.sin(0.75), 0.0, np.cos(0.75)])

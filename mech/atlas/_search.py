@@ -103,7 +103,7 @@ class PlacedSliderCrank(_Placed):
 
     @property
     def guide(self):
-        """The guide line in the target's frame: ``(point, direction)``, the foot of the
+        """The guide line in the target's frame as ``(point, direction)``; the foot of the
         perpendicular from A and a unit complex number along +x of the standard frame."""
         turn = np.exp(1j * self.rotation)
         return complex(self.origin + turn * 1j * self.slider.e), complex(turn)
@@ -337,7 +337,7 @@ def query(atlas, target, *, k=5, shortlist=64, resampled=False, closed=True, spa
     signatures of windows of each closed curve (the arc run forward and back), through
     the distance to the segment between neighbouring windows' signatures, then aligned
     by a pattern search on the two ends of the sub-arc; its matches carry `arc`. When
-    the arc's first harmonic is small (|c_1| below a quarter of its RMS radius: an arc that
+    the arc's first harmonic is small (``|c_1|`` below a quarter of its RMS radius: an arc that
     folds back on itself), the normalisation on c_1 is ill-conditioned: such an arc is also
     compared with a second set of window signatures, normalised on c_2 (built on the first
     such query, as large as the first set), whose short list is aligned from two starts

@@ -221,8 +221,8 @@ def curve_signature(points, *, closed=True, harmonics=HARMONICS, samples=SAMPLES
     """Shape signature of a curve: the same for every placement, size, start and direction.
 
     The curve is resampled at `samples` equal arc-length steps, its discrete Fourier
-    coefficients c_k are divided by the RMS radius S, and turned and restarted so that c_1
-    and c_-1 are real and positive; of the four normalisations (two directions, two branches
+    coefficients ``c_k`` are divided by the RMS radius S, and turned and restarted so that
+    ``c_1`` and ``c_-1`` are real and positive; of the four normalisations (two directions, two branches
     of the angles) the one with the largest fixed linear key is returned. An open arc is run
     forward and back to make it closed.
 
@@ -253,7 +253,7 @@ def curve_signature(points, *, closed=True, harmonics=HARMONICS, samples=SAMPLES
     Notes
     -----
     Derived, with the proof of each invariance, in :ref:`deriv-shape-signature`. The
-    normalisation is ill-conditioned when c_1 or c_-1 is small against S (a first-harmonic
+    normalisation is ill-conditioned when ``c_1`` or ``c_-1`` is small against S (a first-harmonic
     ellipse that is nearly a circle); `query` therefore compares all four normalisations of
     a target and then aligns candidates exactly.
 

@@ -210,7 +210,7 @@ class Exercise:
         How far the text fixes the answer: ``"N"`` (the text alone determines it), ``"A"``
         (the figure is needed and a layout is assumed) or ``"G"`` (a graphical exercise).
     statement : str
-        The problem in English, a :meth:`str.format` template over the parameter names.
+        The problem in English, a ``str.format`` template over the parameter names.
     parameters : tuple of Parameter
         The givens; their defaults are the textbook's numbers.
     solver : callable

@@ -137,7 +137,7 @@ class Entry:
 
     @property
     def stale(self):
-        """Listed as not covered, but covered: the entry in NOT_COVERED can go."""
+        """Listed as not covered, but covered; the entry in NOT_COVERED can go."""
         return self.not_covered is not None and self.covered
 
 

@@ -41,14 +41,23 @@ def _public_packages(root):
 class Place:
     """Where a number is covered.
 
-    role : "derivation", "book", "function" or "test"
-    path : file, relative to the repository root
-    name : page title, qualified public name, or pytest node id
-    how : what declares it ("title", "heading", "caption", "label", "tag", "codegen",
-        "front matter", "docstring", "module docstring", "registry", "test name")
-    line : 1-based line of the declaration
-    anchor : HTML id on the built page, or None (top of the page)
-    html : built page, relative to ``book/_build/html``, or None
+    Attributes
+    ----------
+    role : str
+        "derivation", "book", "function" or "test".
+    path : str
+        File, relative to the repository root.
+    name : str
+        Page title, qualified public name, or pytest node id.
+    how : str
+        What declares it: "title", "heading", "caption", "label", "tag", "codegen",
+        "front matter", "docstring", "module docstring", "registry" or "test name".
+    line : int
+        1-based line of the declaration.
+    anchor : str or None
+        HTML id on the built page, or None (top of the page).
+    html : str or None
+        Built page, relative to ``book/_build/html``, or None.
     """
 
     role: str

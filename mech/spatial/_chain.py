@@ -59,7 +59,7 @@ class Joint:
 
     @property
     def dof(self):
-        """Number of joint variables: 2 for a C pair, 1 otherwise."""
+        """Number of joint variables (2 for a C pair, 1 otherwise)."""
         return _KINDS[self.kind]
 
     @property

@@ -73,7 +73,7 @@ class Intersection:
 
 
 def great_circle_through(a, b):
-    """The directed great circle through `a` and then `b` (pole N = a x b / |a x b|).
+    """The directed great circle through `a` and then `b` (pole N = a x b / ``|a x b|``).
 
     Parameters
     ----------
@@ -149,7 +149,7 @@ def great_circle_at(a, inclination):
 def distance_to_great_circle(p, pole):
     """Signed arc from the great circle with pole `pole` to the points `p`.
 
-    atan2(p . N, |p x N|): positive on the left of the directed great circle (the pole's
+    atan2(p . N, ``|p x N|``): positive on the left of the directed great circle (the pole's
     side), in [-pi/2, pi/2].
 
     Parameters
@@ -187,7 +187,7 @@ def collinearity(a, b, c):
     the great circle a -> b.
 
     det[a, b, c] = det[b - a, c - a, a] (differences keep close points accurate); the arc
-    is atan2(det / |a x b|, |N x c|) with N the pole of the great circle a -> b.
+    is atan2(det / ``|a x b|``, ``|N x c|``) with N the pole of the great circle a -> b.
 
     Parameters
     ----------
@@ -260,7 +260,7 @@ def angle_between(pole1, pole2):
 def intersect(pole1, pole2):
     """The two common points of two directed great circles, given by their poles.
 
-    X = N1 x N2 / |N1 x N2| and -X; at X the angle from circle 1 to circle 2 is
+    X = N1 x N2 / ``|N1 x N2|`` and -X; at X the angle from circle 1 to circle 2 is
     angle_between(pole1, pole2) in (0, pi), at -X its negative (eq. 11).
 
     Parameters
@@ -298,7 +298,7 @@ def intersect(pole1, pole2):
 
 def bisector(a, b):
     """The perpendicular bisector of the arc AB: the great circle of points equidistant
-    from `a` and `b`, with pole (a - b) / |a - b| (so `a` lies on its left).
+    from `a` and `b`, with pole (a - b) / ``|a - b|`` (so `a` lies on its left).
 
     Parameters
     ----------
@@ -337,8 +337,8 @@ def bisector(a, b):
 def circle_through(a, b, c):
     """The circle through three points: pole N and arc radius r.
 
-    N = n / |n| with n = (b - a) x (c - a), so that a -> b -> c runs counter-clockwise about
-    N; r = atan2(|ab| |bc| |ca| / 2, n . a) with the chord lengths (sin r is the Euclidean
+    N = n / ``|n|`` with n = (b - a) x (c - a), so that a -> b -> c runs counter-clockwise about
+    N; r = atan2(``|ab|`` ``|bc|`` ``|ca|`` / 2, n . a) with the chord lengths (sin r is the Euclidean
     circumradius, cos r = N . a), accurate for small circles.
 
     Parameters

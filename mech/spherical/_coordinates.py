@@ -205,7 +205,7 @@ def local_frame(p):
 def distance(p, q):
     """Arc between the points `p` and `q`: the angle they subtend at the centre.
 
-    d = atan2(|p x q|, p . q) with p x q formed as (p - q) x q (or (p + q) x q when
+    d = atan2(``|p x q|``, p . q) with p x q formed as (p - q) x q (or (p + q) x q when
     p . q < 0), eq. (4) of the spherical calculus: accurate to a few rounding errors,
     relative to the arc, for arcs near 0 and near pi, where arccos(p . q) loses half the
     digits.

@@ -420,8 +420,8 @@ class SphericalFourBar:
     def assembly_range(self):
         """The input angles where the linkage assembles; its ends are limit positions.
 
-        The arc g = BD grows with |theta| from |a - d| to min(a + d, 2 pi - a - d); the
-        linkage assembles while g lies in [|b - c|, min(b + c, 2 pi - b - c)] (the
+        The arc g = BD grows with ``|theta|`` from ``|a - d|`` to min(a + d, 2 pi - a - d); the
+        linkage assembles while g lies in [``|b - c|``, min(b + c, 2 pi - b - c)] (the
         triangle BCD closes). The ends come from eq. (6) of :ref:`deriv-spherical-fourbar`.
 
         Returns

@@ -203,7 +203,7 @@ class FunctionGenerator:
 
     @property
     def max_error(self):
-        """Largest |structural error| over `reference`."""
+        """Largest ``|structural error|`` over `reference`."""
         return float(np.max(np.abs(self.structural_error(*self.reference))))
 
     @property

@@ -41,7 +41,7 @@ def _great_circle_normal(a, b, name_a="a", name_b="b"):
 def tangent(a, b):
     """Unit tangent at `a` of the great circle toward `b` (the spherical vector AB).
 
-    t = ((a x b) x a) / |.|, which is (b - (a . b) a) / |.| for unit vectors.
+    t = ((a x b) x a) / ``|.|``, which is (b - (a . b) a) / ``|.|`` for unit vectors.
 
     Parameters
     ----------

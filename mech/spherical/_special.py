@@ -260,7 +260,7 @@ def deltoid_input(psi, a, b):
 def spherical_slider_crank(a, b, e=0.0, *, branch=1):
     """The spherical slider-crank (球面曲柄滑块机构): c = pi/2, d = pi/2 + e.
 
-    C moves on the great circle whose pole is D (the guide); A is at arc |e| from it.
+    C moves on the great circle whose pole is D (the guide); A is at arc ``|e|`` from it.
 
     Parameters
     ----------
@@ -339,7 +339,7 @@ def slider_crank_stroke(a, b, e=0.0):
     Raises
     ------
     ValueError
-        Unless the crank turns fully with b - a > |e| and a + b + |e| < pi.
+        Unless the crank turns fully with b - a > ``|e|`` and a + b + ``|e|`` < pi.
 
     Notes
     -----

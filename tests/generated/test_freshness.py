@@ -1,7 +1,12 @@
 """Every generated module is fresh: its input hash matches the notebook, and its numbers
 agree with mpmath at 50 digits (``_codegen.check_fresh``, run by each notebook's
 ``write`` call under ``MECH_CODEGEN=check``). Text is never compared: SymPy's CSE output
-differs between machines."""
+differs between machines.
+
+Re-running the notebooks takes minutes, so it is marked ``slow``; the fast run checks the
+manifest instead (``derivations/_manifest.py``): the notebooks' code cells, the generator's
+source and the generated files must hash to what ``python -m derivations`` recorded when it
+last ran them."""
 
 import importlib
 import importlib.util
@@ -12,7 +17,7 @@ import numpy as np
 import pytest
 
 from derivations import __main__ as runner
-from derivations import _codegen
+from derivations import _codegen, _manifest
 
 NOTEBOOKS = runner.notebooks()
 
@@ -26,6 +31,7 @@ def check_mode(monkeypatch):
     monkeypatch.setenv("MECH_CODEGEN", "check")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("notebook", NOTEBOOKS, ids=lambda p: p.stem)
 def test_generated_module_is_fresh(notebook):
     stems = _written_stems(notebook)
@@ -35,6 +41,69 @@ def test_generated_module_is_fresh(notebook):
     runner.run(notebook)
     after = {s: (_codegen.GENERATED_DIR / f"{s}.py").read_bytes() for s in stems}
     assert before == after, "check mode must not write"
+    # the re-run passed, so the manifest that the fast run trusts must describe these files
+    assert not _manifest.stale(notebook), _manifest.stale(notebook)
+
+
+WRITERS = [nb for nb in NOTEBOOKS if _written_stems(nb)]
+
+
+@pytest.mark.parametrize("notebook", WRITERS, ids=lambda p: p.stem)
+def test_generated_module_matches_manifest(notebook):
+    """The fast freshness check: hashes only, no notebook is run."""
+    assert not _manifest.stale(notebook), _manifest.stale(notebook)
+
+
+def test_manifest_names_only_existing_notebooks():
+    keys = {nb.relative_to(runner.HERE).as_posix() for nb in WRITERS}
+    assert set(_manifest.read()) == keys
+
+
+def test_manifest_detects_changes(tmp_path, monkeypatch):
+    """A changed code cell, generator file or generated module each make the entry stale;
+    a changed prose line does not."""
+    notebook = tmp_path / "nb" / "probe.md"
+    notebook.parent.mkdir()
+    notebook.write_text("""---
+jupytext:
+  text_representation:
+    extension: .md
+    format_name: myst
+kernelspec:
+  display_name: Python 3
+  language: python
+  name: python3
+---
+# A probe
+
+Some prose.
+
+```{code-cell} ipython3
+x = 1
+_codegen.write("probe", "derivations/nb/probe.md", "(0-0)", [])
+```
+""")
+    generated = tmp_path / "generated"
+    generated.mkdir()
+    (generated / "probe.py").write_text("VALUE = 1\n")
+    generator = tmp_path / "_codegen.py"
+    generator.write_text("# template 1\n")
+    monkeypatch.setattr(_manifest, "HERE", tmp_path)
+    monkeypatch.setattr(_manifest, "MANIFEST", tmp_path / "manifest.json")
+    monkeypatch.setattr(_manifest, "GENERATED_DIR", generated)
+    _manifest.record([notebook])
+    assert _manifest.stale(notebook) == ""
+    assert runner.code_cells(notebook)[0].startswith("x = 1")
+    notebook.write_text(notebook.read_text().replace("Some prose.", "Other prose."))
+    assert _manifest.stale(notebook) == ""
+    notebook.write_text(notebook.read_text().replace("x = 1", "x = 2"))
+    assert "code cells changed" in _manifest.stale(notebook)
+    _manifest.record([notebook])
+    generator.write_text("# template 2\n")
+    assert "generator" in _manifest.stale(notebook)
+    _manifest.record([notebook])
+    (generated / "probe.py").write_text("VALUE = 2\n")
+    assert "probe.py differs" in _manifest.stale(notebook)
 
 
 def test_every_generated_module_has_a_notebook():
@@ -129,6 +198,7 @@ def test_codegen_rejects_unknown_free_symbols():
         _codegen.render("f", "derivations/f.md", "", [f])
 
 
+@pytest.mark.slow  # runs the four-bar notebook (about a minute and a half under load)
 def test_cse_same_numerical_results():
     """The CSE module and a plain rendering of the same expressions agree (PyDy's test)."""
     nb = Path(runner.HERE / "planar" / "fourbar_position.md")

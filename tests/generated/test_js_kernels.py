@@ -157,7 +157,7 @@ def _near_limit_bound(delta):
     """Allowed relative difference of a pose a relative distance delta from a dead point or
     limit position. The inputs' rounding moves positions by about eps / sqrt(delta) and
     rates by up to eps / delta**1.5 there; beyond 1e-3 the bound is 1e-13 (as in
-    tests/planar/test_fourbar_scale.py), below 1e-10 the values are mostly rounding and
+    tests/planar/kinematics/test_fourbar_scale.py), below 1e-10 the values are mostly rounding and
     only the masks and NaN are compared (as there below 1e-3)."""
     with np.errstate(divide="ignore"):
         near = np.maximum(1e-13, 1e-15 / np.maximum(delta, 1e-300) ** 1.5)

@@ -525,7 +525,7 @@ def eccentric_clamp_max_angle(e, r_disc, rho_pin, phi):
     r_disc : array_like
         Disc radius, > 0.
     rho_pin : array_like
-        Friction-circle radius of the pivot, >= 0 (:func:`~mech.planar.forces._friction.friction_circle`).
+        Friction-circle radius of the pivot, >= 0 (:func:`~mech.planar.forces.friction_circle`).
     phi : array_like
         Friction angle disc-workpiece, radians, in [0, pi/2).
 

@@ -220,7 +220,7 @@ def slider_crank_mechanical_advantage(a, b, e, theta, *, branch=1, driver="crank
 
     Notes
     -----
-    Derivation :ref:`deriv-force-gain`; |cos(phi)| is the cosine of the pressure angle.
+    Derivation :ref:`deriv-force-gain`; ``|cos(phi)|`` is the cosine of the pressure angle.
 
     Examples
     --------
@@ -255,7 +255,7 @@ class DeadPoints:
 def fourbar_dead_points(a, b, c, d, *, branch=1):
     """Rocker angles where a four-bar driven by its rocker CD is at a dead point.
 
-    The coupler is collinear with the driven crank AB, so AC = b + a (extended) or |b - a|
+    The coupler is collinear with the driven crank AB, so AC = b + a (extended) or ``|b - a|``
     (folded); the triangle ACD gives the rocker angle psi = +-(pi - angle ADC).
 
     Parameters
@@ -319,7 +319,7 @@ def slider_crank_dead_points(a, b, e=0.0, *, branch=1):
     Parameters
     ----------
     a, b : float
-        Crank and rod, > 0, with b >= a + |e|.
+        Crank and rod, > 0, with b >= a + ``|e|``.
     e : float
         Offset: the guide is y = e.
     branch : {1, -1}
@@ -332,7 +332,7 @@ def slider_crank_dead_points(a, b, e=0.0, *, branch=1):
     Raises
     ------
     ValueError
-        For bad dimensions, or a crank that cannot turn fully (a + |e| > b).
+        For bad dimensions, or a crank that cannot turn fully (a + ``|e|`` > b).
 
     Notes
     -----

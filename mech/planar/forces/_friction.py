@@ -457,7 +457,7 @@ def two_force_tilt_angle(length, rho_a, rho_b, cross=True):
     Returns
     -------
     tilt : float
-        asin((rho_a + rho_b)/l) or asin(|rho_a - rho_b|/l), radians.
+        asin((rho_a + rho_b)/l) or asin(``|rho_a - rho_b|``/l), radians.
 
     Raises
     ------

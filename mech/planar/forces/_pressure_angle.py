@@ -76,7 +76,7 @@ def _follower_velocity(solution, joint, follower):
 def pressure_angle(solution, joint, force, *, follower=None):
     """Pressure angle at a point of a solved linkage: force against velocity (F49).
 
-    alpha = atan2(|u x v|, |u . v|) in [0, pi/2], the acute angle between the line of
+    alpha = atan2(``|u x v|``, ``|u . v|``) in [0, pi/2], the acute angle between the line of
     the driving force u and the velocity v of the follower's point where it acts.
 
     Parameters
@@ -293,7 +293,7 @@ def transmission_extremes(a, b, c, d):
 def slider_crank_pressure_angle(a, b, e, theta):
     """Pressure angle at the slider of the offset slider-crank (F56).
 
-    sin(alpha) = |a sin(theta) - e| / b with the guide on y = e (`SliderCrank`'s
+    sin(alpha) = ``|a sin(theta) - e|`` / b with the guide on y = e (`SliderCrank`'s
     convention; the textbook's e is measured on the other side, k = a sin(phi_1) + e).
 
     Parameters
@@ -336,7 +336,7 @@ def slider_crank_pressure_angle(a, b, e, theta):
 def slider_crank_min_transmission_angle(a, b, e=0.0):
     """Minimum transmission angle of the offset slider-crank and where it occurs (F57).
 
-    cos(gamma_min) = (a + |e|) / b, with the crank perpendicular to the guide and pointing
+    cos(gamma_min) = (a + ``|e|``) / b, with the crank perpendicular to the guide and pointing
     away from it: theta_at = -pi/2 for e >= 0, +pi/2 for e < 0.
 
     Parameters
@@ -354,7 +354,7 @@ def slider_crank_min_transmission_angle(a, b, e=0.0):
     Raises
     ------
     ValueError
-        If a length is not > 0, or a + |e| > b (the crank cannot turn fully).
+        If a length is not > 0, or a + ``|e|`` > b (the crank cannot turn fully).
 
     Notes
     -----
@@ -378,7 +378,7 @@ def slider_crank_min_transmission_angle(a, b, e=0.0):
 
 
 def guide_bar_pressure_angle(s, e=0.0):
-    """Pressure angle at the block of a guide-bar: tan(alpha) = |e| / |s| (F58).
+    """Pressure angle at the block of a guide-bar: tan(alpha) = ``|e|`` / ``|s|`` (F58).
 
     Parameters
     ----------

@@ -135,7 +135,7 @@ def min_transmission_angle(a, b, c, d):
     Derived in :ref:`deriv-transmission-angle`. If the crank does not turn fully
     (``grashof(a, b, c, d).kind`` not "crank-rocker" or "double-crank"), the input rocks
     between dead-centre positions where coupler and output are collinear (BD = b + c or
-    |b - c|). The transmission angle is 0 there, so the function returns ``(0.0,
+    ``|b - c|``). The transmission angle is 0 there, so the function returns ``(0.0,
     theta_at)`` with ``theta_at`` the smallest crank angle in [0, pi] of such a position
     (its mirror -theta_at is another): a linkage driven at AB locks there.
 

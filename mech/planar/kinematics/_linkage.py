@@ -53,7 +53,7 @@ class Linkage:
 
     *Change points.* Where the two modes of a group meet and part again (its radicand
     touches zero: a parallelogram four-bar at theta = 0 and pi, a slider-crank with
-    a + |e| = b, pins that pass through each other), the motion continues smoothly onto the
+    a + ``|e|`` = b, pins that pass through each other), the motion continues smoothly onto the
     other mode, as `FourBar` does: a parallelogram stays a parallelogram. For a linkage
     driven by one crank the rule is local: the mode at input angle theta is ``branch``
     times -1 for each change point in (0, theta] (for theta < 0, in (theta, 0]), so

@@ -153,7 +153,7 @@ class Image:
 
     @property
     def scale(self):
-        """Size of the image over the size of the link: ``|omega|`` or ``sqrt(alpha^2 + omega^4)``."""
+        """Size of the image over the size of the link, ``|omega|`` or ``sqrt(alpha^2 + omega^4)``."""
         return np.abs(self.factor)
 
     @property

@@ -151,7 +151,7 @@ class SliderCrank:
 
     a = property(lambda self: self._a, doc="Crank length AB.")
     b = property(lambda self: self._b, doc="Connecting-rod length BC.")
-    e = property(lambda self: self._e, doc="Offset: the guide is the line y = e.")
+    e = property(lambda self: self._e, doc="Offset (the guide is the line y = e).")
     branch = property(lambda self: self._branch, doc="Assembly branch, +1 or -1.")
 
     @property
@@ -436,6 +436,8 @@ class SliderCrank:
         ValueError
             If the slider-crank is offset (``e != 0``) or on branch -1.
 
+        Examples
+        --------
         >>> from mech.planar import SliderCrank
         >>> float(SliderCrank(1.0, 4.0).approximate(0.0).x)
         5.0

@@ -477,7 +477,7 @@ def step_ratio(solution, *, axis=-1):
     Returns
     -------
     dict of str to float
-        For every point that moves, max |P[k+1] - P[k]| / median |P[k+1] - P[k]|. A jump
+        For every point that moves, max ``|P[k+1] - P[k]|`` / median ``|P[k+1] - P[k]|``. A jump
         from one assembly mode to another gives a step of the order of a link length, far
         above the ratio of the largest to the median speed that a smooth motion gives.
 

@@ -21,7 +21,7 @@ _LINKS = ("a", "b", "c", "d")
 
 @dataclass(frozen=True)
 class GrashofResult:
-    """Type of a revolute four-bar with ground ``d``: the result of :func:`grashof`."""
+    """Type of a revolute four-bar with ground ``d``: the result of :func:`~mech.planar.structure.grashof`."""
 
     grashof: bool
     change_point: bool

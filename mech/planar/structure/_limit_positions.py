@@ -25,7 +25,7 @@ class LimitPositions:
     psi_extended, psi_folded : float
         Rocker angles (of D->C) at those positions; the rocker stops and turns back there.
     swing : float
-        Rocker swing |psi_folded - psi_extended| (the textbook's phi).
+        Rocker swing ``|psi_folded - psi_extended|`` (the textbook's phi).
     extreme_angle : float
         The angle between the two crank positions (极位夹角, the textbook's theta),
         in [0, pi).
@@ -75,7 +75,7 @@ def limit_positions(a, b, c, d, *, branch=1):
     factors (no ``arccos``), and swing and extreme angle come from single ``atan2`` calls,
     not from differences of angles, so a short crank loses no relative accuracy. Branch
     -1 negates all four angles; swing, extreme angle and K are the same on both branches.
-    The extreme angle is |alpha(b - a) - alpha(b + a)| with alpha the angle at A of the
+    The extreme angle is ``|alpha(b - a) - alpha(b + a)|`` with alpha the angle at A of the
     triangle ACD; it is acute except near the change point a + c = b + d. At a change
     point (s + l = p + q, Fig. 2-38) the two branches share one limit position and the
     linkage has a single assembly mode; the values returned are still the limits of the

@@ -193,7 +193,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=1.0, target=None, x_range
     samples : int, optional
         Input rotations sampled over `x_range` by the coverage check.
     tol : float, optional
-        Largest |structural error| (radians) at the pairs for them to count as met; for
+        Largest ``|structural error|`` (radians) at the pairs for them to count as met; for
         free start angles also the relative residual of (3) for a root to count, the
         relative size of K1, K2 below which a root is a link of unbounded length.
 

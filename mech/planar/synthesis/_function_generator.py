@@ -90,7 +90,7 @@ def lengths_from_coefficients(k1, k2, k3, d=1.0):
     """Signed lengths (a, b, c, d) of the four-bar with Freudenstein coefficients K1..K3.
 
     a = d/K1, c = d/K2, b^2 = a^2 + c^2 + d^2 - 2ac K3, eq. (4) of the derivation. A
-    negative a (or c) is the link of length |a| turned by pi: B = |a| exp(i(theta + pi)).
+    negative a (or c) is the link of length ``|a|`` turned by pi: B = ``|a|`` exp(i(theta + pi)).
 
     Parameters
     ----------
@@ -198,7 +198,7 @@ class FunctionMap:
 
     @property
     def output_scale(self):
-        """Output rotation per unit of y: an angle error divided by it is an error in y."""
+        """Output rotation per unit of y; an angle error divided by it is an error in y."""
         return self.psi_range / (self.y_end - self.y_start)
 
     def input_rotation(self, x):
@@ -278,7 +278,7 @@ class FunctionGenerator:
         limit position of the input inside it), "reversal" if the output turns back while
         the target does not.
     pair_error : float
-        Largest |structural error| at the pairs.
+        Largest ``|structural error|`` at the pairs.
     min_transmission_angle : (float, float)
         Smallest transmission angle over the sampled range and the input rotation x there.
     monotone : bool
@@ -398,7 +398,7 @@ class FunctionGenerator:
         return y
 
     def errors(self, samples=721):
-        """(max |structural error|, RMS) over `samples` input rotations spanning `x_range`."""
+        """(max ``|structural error|``, RMS) over `samples` input rotations spanning `x_range`."""
         samples = integer("samples", samples, minimum=2, maximum=MAX_COUNT)
         x = np.linspace(*self.x_range, samples)
         e = self.structural_error(x) if self.target is not None else self.structural_error(self.x, self.y)

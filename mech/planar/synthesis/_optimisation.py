@@ -155,7 +155,7 @@ class DesignModel:
         return self._constraint(self.equality, "equality", x)
 
     def feasible(self, x, *, tol=0.0):
-        """True where x is in the box, g <= tol and |h| <= tol (and f is finite)."""
+        """True where x is in the box, g <= tol and ``|h|`` <= tol (and f is finite)."""
         x = self._x(x)
         tol = real_number("tol", tol)
         inside = np.all((x >= self.lower) & (x <= self.upper), axis=-1)
@@ -400,7 +400,7 @@ def scipy_minimize(model, x0, *, method="SLSQP", options=None):
     Notes
     -----
     SciPy is imported here, not with `mech`. SciPy works on the box mapped to [0, 1]^n and
-    on f / |f(x0)|, so its absolute tolerances (SLSQP's ``ftol``) act as relative ones. The gradient is estimated by finite
+    on f / ``|f(x0)|``, so its absolute tolerances (SLSQP's ``ftol``) act as relative ones. The gradient is estimated by finite
     differences, so an objective with kinks (a sum of distances) or with designs that cannot
     be assembled (f not finite) can stop SLSQP early: check ``message`` and the constraint
     values ``g``, ``h`` of the result.

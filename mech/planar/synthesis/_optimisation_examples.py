@@ -237,7 +237,7 @@ def path_synthesis_model(points, *, gamma_min=np.radians(30.0), bounds=None):
     of the crank, 2 pi / n apart. Variables (`PATH_VARIABLES`): l1..l4 (crank, coupler,
     rocker, ground), l5 and alpha (P at l5 from B, alpha from B->C), the crank pivot
     (xA, yA), the ground angle phi4 and the crank angle theta0 at the first point.
-    Objective: the sum of the distances |P_i' - P_i| (the text's F33; not an RMS error).
+    Objective: the sum of the distances ``|P_i' - P_i|`` (the text's F33; not an RMS error).
     Constraints (F53): crank l1 (Grashof, g1..g3), l1 > 0 (g4), transmission angle at
     least ``gamma_min`` at both crank-frame alignments (g5, g6, radians).
 

@@ -69,7 +69,7 @@ def penalty_method(model, x0, *, r0=None, factor=0.3, stages=12, iterations=2000
     x0 : array_like, shape (n,)
         A strictly feasible start: in the open box, every g_i < 0, f finite.
     r0 : float, optional
-        First penalty factor; by default the barrier is 10 % of |f(x0)| at x0.
+        First penalty factor; by default the barrier is 10 % of ``|f(x0)|`` at x0.
     factor : float in (0, 1)
         Reduction of r per stage.
     stages : int

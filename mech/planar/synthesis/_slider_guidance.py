@@ -197,7 +197,7 @@ def slider_point_circle(theta, d):
     ------
     ValueError
         For bad poses, or poses whose slider points form a straight line, not a circle
-        (poses 1 and 2 differ by a translation, or the turns make the |z|^2 term vanish).
+        (poses 1 and 2 differ by a translation, or the turns make the ``|z|^2`` term vanish).
 
     Notes
     -----

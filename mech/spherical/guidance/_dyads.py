@@ -197,7 +197,7 @@ def slider_dyad_for_point(R, slider_point, *, rtol=1e-9):
     slider_point : array_like, shape (3,)
         The slider's axis in body coordinates.
     rtol : float, optional
-        Largest accepted |det[w1, w2, w3]| (three orientations).
+        Largest accepted ``|det[w1, w2, w3]|`` (three orientations).
 
     Returns
     -------

@@ -245,7 +245,7 @@ def optimal_guidance(R, start=None, *, objective="orientation", theta_input=None
         orientations spread over the task that pass their analysis, the one whose two
         cranks best keep constant length over all the orientations.
     objective : {"orientation", "constant_length"}
-        ``"orientation"``: least squares of the orientation error |R(theta_j) - R_j|_F
+        ``"orientation"``: least squares of the orientation error ``|R(theta_j) - R_j|_F``
         (the linkage is analysed at every step; input angles free, or prescribed).
         ``"constant_length"``: least squares of the two cranks' design equations
         A . (R_j zB) = cos a and D . (R_j zC) = cos c, two independent problems.

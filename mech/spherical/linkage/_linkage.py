@@ -180,7 +180,7 @@ class SphericalLinkage:
 
     @property
     def members(self):
-        """The points of every link: link name -> tuple of point names (frame points first).
+        """The points of every link, a mapping from link name to point names (frame points first).
 
         A link with three or more points is a ternary (or higher) link.
         """

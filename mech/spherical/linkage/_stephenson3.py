@@ -132,7 +132,7 @@ class SphericalStephenson3:
 
     @property
     def points(self):
-        """Names of the points: ground A, D; crank B, E; guided link C, G, H (and P)."""
+        """Names of the points (ground A, D; crank B, E; guided link C, G, H; and P)."""
         return tuple(self._p)
 
     @property
@@ -142,7 +142,7 @@ class SphericalStephenson3:
 
     @property
     def members(self):
-        """The points of every link: link name -> tuple of point names."""
+        """The points of every link, a mapping from link name to a tuple of point names."""
         guided = ("C", "G", "H", "P") if "P" in self._p else ("C", "G", "H")
         return {"ground": ("A", "D"), "ABE": ("A", "B", "E"), "BC": ("B", "C"), "EG": ("E", "G"),
                 "DH": ("D", "H"), "CGH": guided}

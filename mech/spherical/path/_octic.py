@@ -183,7 +183,7 @@ def coupler_octic(linkage, points, *, form="auto", small=0.1):
     ------
     ValueError
         If an input is not finite, has the wrong shape, an arc is outside (0, pi), `form`
-        is unknown, `small` < 0, a point is the zero vector or so long that |x|**8
+        is unknown, `small` < 0, a point is the zero vector or so long that ``|x|**8``
         overflows, or the linkage is smaller than 2**-80 rad (F, of order size**12, would
         underflow).
 

@@ -270,7 +270,7 @@ def sixbar_curve(linkage, points, *, cone=False):
     quotients serve). Near the directions where a coefficient vanishes the value loses
     accuracy: P along the crank axis for Stephenson-1 (handled through its limit), and P
     near +-D for Watt-1, where the Dixon determinant is divided by ``|P x D|**4`` (relative
-    error about 1e-16 / |P x D|**4; at +-D exactly, a ring mean extrapolated to the pivot).
+    error about 1e-16 / ``|P x D|**4``; at +-D exactly, a ring mean extrapolated to the pivot).
 
     Examples
     --------

@@ -6,8 +6,6 @@ time ratios with the closed forms of the offset slider-crank (F31, eq. 2-9).
 """
 
 import math
-import sys
-from pathlib import Path
 
 import mpmath
 import numpy as np
@@ -16,9 +14,7 @@ import pytest
 from mech import AssemblyError
 from mech.planar import SliderCrank
 from mech.planar.special import _library as lib
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-import linkage_reference as ref  # noqa: E402
+from tests.planar import linkage_reference as ref
 
 N = 3600
 THETA = 2.0 * np.pi * np.arange(N + 1) / N

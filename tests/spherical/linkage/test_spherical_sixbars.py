@@ -6,7 +6,7 @@ import pytest
 from mech import AssemblyError
 from mech.spherical import SphericalFourBar, SphericalLinkage, ground_frame, stephenson1, stephenson2, watt1, watt2
 
-from sixbar_reference import reference
+from tests.spherical.sixbar_reference import reference
 
 KINDS = {"stephenson1": stephenson1, "stephenson2": stephenson2, "watt1": watt1, "watt2": watt2}
 # points carried by each moving link (besides the frame points), per type

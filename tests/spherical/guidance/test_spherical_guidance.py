@@ -19,7 +19,7 @@ from mech.spherical import (SphericalFourBar, burmester, circle_point_curve, cra
                             pole_triangle, relative_rotation, rotation_matrix, rotation_pole, slider_dyad_for_point,
                             slider_point_curve, slider_residual)
 
-from guidance_reference import burmester_mp
+from tests.spherical.guidance_reference import burmester_mp
 
 # example 2-15 of the planar chapter (five poses), used for the planar limit
 P15 = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j])
@@ -301,7 +301,7 @@ def test_bad_orientations():
 @pytest.mark.parametrize("seed", [1, 2, 3, 5])
 def test_slider_dyads_four_positions_match_resultant(seed):
     """§3.5: the slider points of four orientations, every real one, against the exact route."""
-    from guidance_reference import slider_points_mp
+    from tests.spherical.guidance_reference import slider_points_mp
     from mech.spherical import slider_dyads
 
     rng = np.random.default_rng(seed)

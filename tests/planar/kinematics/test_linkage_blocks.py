@@ -17,10 +17,10 @@ import mpmath
 import numpy as np
 import pytest
 
-import linkage_reference as ref
 from mech.planar import Guide, Linkage
 from mech.planar.kinematics import _linkage_blocks
 from mech.planar.special import _library as lib
+from tests.planar import linkage_reference as ref
 
 BLOCK = 1000
 

@@ -1,0 +1,106 @@
+"""The freshness manifest: which notebook code and which generator produced each generated module.
+
+Re-running every notebook (``python -m derivations --check``) is the full freshness check, and
+it takes minutes. The manifest ``derivations/manifest.json`` lets the fast test run check the
+same thing by hashes alone: for each notebook that writes code it records
+
+- ``code``: the SHA-256 of the notebook's code cells (prose edits do not count),
+- ``generator``: the SHA-256 of the generator's own source (every ``derivations/*.py`` but this
+  file), since a changed template or printer changes what the notebooks write,
+- ``modules``: the SHA-256 of each module the notebook wrote (``<stem>.py`` and, where it has
+  kernels, ``<stem>_numba.py``), as they stood after the notebook ran.
+
+``python -m derivations`` (which runs the notebooks and rewrites stale modules) refreshes the
+entries of the notebooks it ran; ``--check`` writes nothing. A fast test compares the manifest
+with the files on disk; the slow test re-runs the notebooks and then asks the same question.
+"""
+
+import hashlib
+import json
+import re
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+MANIFEST = HERE / "manifest.json"
+GENERATED_DIR = HERE.parent / "mech" / "_generated"
+
+__all__ = ["MANIFEST", "written_stems", "entry", "read", "record", "stale"]
+
+
+def _sha(data):
+    return "sha256:" + hashlib.sha256(data).hexdigest()
+
+
+def written_stems(path):
+    """The stems that a notebook passes to ``_codegen.write``, in order of appearance."""
+    return re.findall(r"_codegen\.write\(\s*\"([a-z0-9_]+)\"", Path(path).read_text())
+
+
+def _code_hash(path):
+    from derivations.__main__ import code_cells
+
+    # the cells joined with a separator that no cell contains, so that moving a line from one
+    # cell to the next still changes the hash
+    return _sha("\n\x00\n".join(code_cells(path)).encode())
+
+
+def _generator_hash():
+    parts = []
+    for p in sorted(HERE.glob("*.py")):
+        if p.name != "_manifest.py":
+            parts.append(p.name.encode() + b"\x00" + p.read_bytes())
+    return _sha(b"\x00\x00".join(parts))
+
+
+def _module_files(stem):
+    files = [GENERATED_DIR / f"{stem}.py"]
+    numba = GENERATED_DIR / f"{stem}_numba.py"
+    return files + [numba] if numba.exists() else files
+
+
+def entry(path):
+    """The manifest entry that the notebook at ``path`` and the files on disk call for now."""
+    modules = {}
+    for stem in written_stems(path):
+        for f in _module_files(stem):
+            modules[f.name] = _sha(f.read_bytes()) if f.exists() else "missing"
+    return {"code": _code_hash(path), "generator": _generator_hash(), "modules": modules}
+
+
+def _key(path):
+    return Path(path).resolve().relative_to(HERE).as_posix()
+
+
+def read():
+    """The recorded manifest, ``{notebook relative to derivations/: entry}``."""
+    return json.loads(MANIFEST.read_text()) if MANIFEST.exists() else {}
+
+
+def record(paths):
+    """Refresh the entries of the notebooks at ``paths`` (after they ran and wrote)."""
+    data = read()
+    for path in paths:
+        if written_stems(path):
+            data[_key(path)] = entry(path)
+    # one notebook a block, sorted: concurrent edits of different notebooks merge cleanly
+    MANIFEST.write_text(json.dumps(dict(sorted(data.items())), indent=1, sort_keys=True) + "\n")
+
+
+def stale(path):
+    """Why the notebook at ``path`` does not match its manifest entry ("" when it does)."""
+    recorded = read().get(_key(path))
+    if recorded is None:
+        return f"{_key(path)} has no entry in derivations/manifest.json"
+    now = entry(path)
+    reasons = []
+    if recorded["code"] != now["code"]:
+        reasons.append("its code cells changed")
+    if recorded["generator"] != now["generator"]:
+        reasons.append("the generator (derivations/*.py) changed")
+    for name in sorted(set(recorded["modules"]) | set(now["modules"])):
+        if recorded["modules"].get(name) != now["modules"].get(name):
+            reasons.append(f"mech/_generated/{name} differs from the one it wrote")
+    if not reasons:
+        return ""
+    return (f"{_key(path)}: " + "; ".join(reasons)
+            + " since the manifest was recorded: run `python -m derivations " + _key(path) + "`")
