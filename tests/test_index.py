@@ -260,7 +260,7 @@ def test_cli_kinds_and_errors():
     done = _cli("fig", "2-999")
     assert done.returncode == 1 and "No entry" in done.stderr
     done = _cli("bolt", "2-3")
-    assert done.returncode == 2 and "Expected a kind" in done.stderr
+    assert done.returncode == 2 and "to name a kind" in done.stderr
     done = _cli("2-19", "--root", "/")
     assert done.returncode == 2 and "installed wheel" in done.stderr
 
