@@ -11,19 +11,16 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 from dataclasses import dataclass, field, replace
 from typing import Any, Callable
 
 import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
-from mech._validate import MAX_ANGLE, integer, real_number
+from mech._validate import integer, real_number
 
 __all__ = ["Parameter", "Interval", "Result", "Part", "Solution", "Exercise"]
-
-#: The largest angle given in degrees an exercise accepts: 2**52 rad, beyond which float64
-#: has no fractional radians.
-_MAX_DEGREES = math.degrees(MAX_ANGLE)
 
 
 # ----------------------------------------------------------------------------- formatting
@@ -267,11 +264,6 @@ class Exercise:
                 f"got {unknown[0]!r}"
             )
         out.update({k: real_number(k, v) for k, v in given.items()})
-        for p in self.parameters:
-            if p.unit == "°" and not abs(out[p.name]) < _MAX_DEGREES:
-                # an angle with no fractional radians names no direction (`mech._validate.angle`)
-                raise ValueError(f"Expected `{p.name}` to be an angle below {_MAX_DEGREES:.6g} degrees (2**52 rad) "
-                                 f"in size, got {out[p.name]!r}")
         return out
 
     def statement_text(self, params=None, **overrides):
@@ -295,8 +287,22 @@ class Exercise:
 
     def _run(self, given):
         """The solver on complete givens: its `Solution` with units, or an error naming givens."""
+        # floating-point warnings of a computation that ends in a named error are dropped (the
+        # error says what is wrong); those of a solve that succeeds are passed on
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", RuntimeWarning)
+            try:
+                solution = self.solver(given)
+            except (ValueError, ArithmeticError) as exc:
+                failed = exc
+            else:
+                failed = None
+        for w in caught:
+            if failed is None or not issubclass(w.category, RuntimeWarning):
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
         try:
-            solution = self.solver(given)
+            if failed is not None:
+                raise failed
         except AssemblyError:
             raise
         except (ValueError, ArithmeticError) as exc:

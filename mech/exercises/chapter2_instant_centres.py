@@ -163,13 +163,14 @@ def wheels_2_9(params=None):
     beta = real_number("beta", p["beta"])
     if not 0.0 < beta < 180.0 or math.sin(beta * _DEG) * (r2 + r3) <= 0.0:
         raise ValueError(f"Expected 0 < `beta` < 180 degrees (A, B and C not in one line), got {beta!r}")
-    biggest = max(r1, r2, r3)
-    for name, r in (("r1", r1), ("r3", r3)):
+    radii = {"r1": r1, "r2": r2, "r3": r3}
+    largest = max(radii, key=radii.get)
+    for name in ("r1", "r3"):
         # P13 lies about r1 (or r3) from A (or C) on AC; built from contacts whose rounding is
-        # eps * biggest, its distances keep no digits when the wheel is much smaller
-        if r < _SMALLEST_WHEEL * biggest:
-            raise ValueError(f"Expected `{name}` at least 2**-20 times the largest radius ({biggest!r}) so that "
-                             f"the instant centre P13 is resolved, got {r!r}")
+        # eps * the largest radius, its distances keep no digits when the wheel is much smaller
+        if radii[name] < _SMALLEST_WHEEL * radii[largest]:
+            raise ValueError(f"Expected `{name}` at least 2**-20 times the largest radius `{largest}` = "
+                             f"{radii[largest]!r} so that the instant centre P13 is resolved, got {radii[name]!r}")
     u = complex(np.exp(1j * beta * _DEG))
     if abs((r1 + r2) - (r2 + r3) * u) <= r1 + r3:
         raise ValueError(f"Expected `r1`, `r2`, `r3` and `beta` that keep wheels 1 and 3 apart (|AC| > r1 + r3), "
