@@ -1630,6 +1630,44 @@ CASES.update({
 })
 
 
+# ----------------------------------------------------------------------------- issue 29
+def _sx_w1_start():
+    # five exact orientations of a Watt-1: the optimiser starts at an exact design and stops
+    return [d for d in sph.guidance_watt1(*_sx_watt1(), [0.3, -0.2, 0.93], sweep=41) if d.passes][0]
+
+
+def _s3_start():
+    return sph.guidance_stephenson3(*_s3_task(), _s3().assembly["A"])[0]
+
+
+_SX_PATH = {"points": "vec3", "theta": "real", "start": "vec3", "metric": "option",
+            "branches": ("branch", first), "tol": "tolerance", "min_transmission": "scalar?"}
+CASES.update({
+    f"spherical.{name}": E((lambda name=name: getattr(sph, name)), _SX_PATH,
+                           points=_SPH_PATH6[0], theta=_SPH_PATH6[1], start=_SPH_PATH6[2], metric="chord",
+                           branches=(1, 1), tol=1e-3, min_transmission=0.5)
+    for name in ("path_stephenson2", "path_watt1", "path_watt2")
+})
+CASES.update({
+    "spherical.optimal_guidance_sixbar": E(lambda: sph.optimal_guidance_sixbar,
+                                           {"R": "matrix", "theta": "real", "start": "instance", "rtol": "scalar",
+                                            "sweep": "count"},
+                                           R=_sx_watt1()[0], theta=_sx_watt1()[1], start=_sx_w1_start(), rtol=1e-2,
+                                           sweep=41),
+    "spherical.optimal_guidance_stephenson3": E(lambda: sph.optimal_guidance_stephenson3,
+                                                {"R": "matrix", "theta": "real", "start": "instance",
+                                                 "rtol": "scalar", "sweep": "count"},
+                                                R=_s3_task()[0], theta=_s3_task()[1], start=_s3_start(), rtol=1e-2,
+                                                sweep=41),
+    "spherical.SphericalOptimalStephenson3.guided_orientations": E(
+        lambda: sph.optimal_guidance_stephenson3(*_s3_task(), _s3_start(), sweep=41).guided_orientations,
+        {"theta": "real"}, theta=[0.2, 0.5]),
+    "planar.fourbar_inputs": E(lambda: pl.fourbar_inputs, {**_ABCD, "coupler": ("real", first), "rtol": "scalar"},
+                               a=10, b=40, c=30, d=35, coupler=(20, 10), rtol=1e-12),
+})
+RECORDS["spherical.SphericalOptimalStephenson3"] = "result record built by the package"
+
+
 CASES.update({
     "spherical.sixbar_curve": E(lambda: sph.sixbar_curve, {"linkage": "instance", "points": "vec3", "cone": "bool"},
                                 linkage=_sx_watt2()[0], points=[[0.0, 0.6, 0.8]], cone=False),
