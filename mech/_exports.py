@@ -26,7 +26,7 @@ def public_names(*modules):
         for name in module.__all__:
             obj = getattr(module, name)
             if name in owner and getattr(owner[name], name) is not obj:
-                raise ValueError(f"Expected one object named {name!r}, got one in {owner[name].__name__} "
+                raise ValueError(f"Expected `modules` to offer one object named {name!r}, got one in {owner[name].__name__} "
                                  f"and another in {module.__name__}")
             owner.setdefault(name, module)
     return sorted(owner)

@@ -27,7 +27,7 @@ def _build(args):
     from mech.atlas import Atlas, build_atlas
 
     if args.append and args.resume:
-        raise ValueError("Expected one of --append and --resume, got both")
+        raise ValueError("Expected one of `--append` and `--resume`, got both")
     started = time.perf_counter()
     options = dict(seed=args.seed, harmonics=args.harmonics, samples=args.samples, block=args.block,
                    min_transmission=math.radians(args.min_transmission), progress=not args.quiet,

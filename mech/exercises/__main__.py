@@ -202,7 +202,7 @@ def _check(args):
                 raise ValueError("Expected `--seed` with `--answer` KEY=VALUE, got none")
             entries += [Entry("command line", args.seed, default, n, v) for n, v in inline]
         if not entries:
-            raise ValueError("Expected answers in the files given, got none")
+            raise ValueError("Expected `--answers` files that hold answers, got none")
         return _check_class(args, entries)
     if args.number is None or args.seed is None or not inline:
         raise ValueError("Expected NUMBER, --seed and --answer KEY=VALUE, or --answers FILE ..., got "

@@ -67,7 +67,7 @@ def build_class(numbers, *, students=30, seed=0, figures=True):
         numbers = (numbers,)
     exercises = [get(n) for n in numbers]
     if not exercises:
-        raise ValueError("Expected at least one exercise number, got none")
+        raise ValueError("Expected `numbers` to name at least one exercise, got none")
     out = []
     for k, s in enumerate(student_seeds(seed, students), start=1):
         items = []

@@ -369,7 +369,7 @@ def draw(number, p, fig):
             _text(ax, [f"AB = {p['l_AB']:g} mm, DE = {p['l_DE']:g} mm, K = {p['K']:g}"])
         _axes_off(ax)
     else:
-        raise ValueError(f"Expected an exercise with a figure, got {number!r}")
+        raise ValueError(f"Expected `number` to be an exercise with a figure, got {number!r}")
 
 
 def figure_png(number, params, *, dpi=96):

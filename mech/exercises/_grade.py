@@ -91,19 +91,19 @@ def parse_answer(text, unit):
     if isinstance(text, (int, float)) and not isinstance(text, bool):
         value = float(text)
         if not math.isfinite(value):
-            raise ValueError(f"Expected a finite number, got {text!r}")
+            raise ValueError(f"Expected `text` to be a finite number, got {text!r}")
         return value
     if not isinstance(text, str):
-        raise ValueError(f"Expected a number with an optional unit, got {text!r}")
+        raise ValueError(f"Expected `text` to be a number with an optional unit, got {text!r}")
     m = _NUMBER.fullmatch(text)
     if not m:
-        raise ValueError(f"Expected a number with an optional unit, got {text!r}")
+        raise ValueError(f"Expected `text` to be a number with an optional unit, got {text!r}")
     if m.group(2)[:1] in set("0123456789.,+-−"):
-        raise ValueError(f"Expected a number with an optional unit, got {text!r}")
+        raise ValueError(f"Expected `text` to be a number with an optional unit, got {text!r}")
     value = float(m.group(1).replace("−", "-"))
     spelt = _unit_key(m.group(2))
     if spelt is None:
-        raise ValueError(f"Expected a known unit (deg, rad, mm, m, N, N m, N mm, m/s, m/s^2, rad/s, rpm ...), "
+        raise ValueError(f"Expected `text` in a known unit (deg, rad, mm, m, N, N m, N mm, m/s, m/s^2, rad/s, rpm ...), "
                          f"got {text!r}")
     kind, factor = UNITS[spelt]
     want = _KIND_OF_QUANTITY.get(unit, "number")
@@ -207,12 +207,12 @@ def read_answers(path, *, exercise=None):
     try:
         text = path.read_text(encoding="utf-8-sig")
     except OSError as err:
-        raise ValueError(f"Expected a readable answer file, got {str(path)!r} ({err.strerror})") from None
+        raise ValueError(f"Expected `path` to be a readable answer file, got {str(path)!r} ({err.strerror})") from None
     entries = []
     if path.suffix.lower() == ".csv":
         rows = list(csv.reader(io.StringIO(text)))
         if not rows:
-            raise ValueError(f"Expected a header row in {str(path)!r}, got an empty file")
+            raise ValueError(f"Expected `path` to begin with a header row, got an empty file {str(path)!r}")
         head = [h.strip() for h in rows[0]]
         low = [h.lower() for h in head]
         if "seed" not in low:

@@ -90,5 +90,5 @@ def write_gradebook(path, graded):
             w.writeheader()
             w.writerows(rows)
     except OSError as err:
-        raise ValueError(f"Expected a writable gradebook path, got {str(path)!r} ({err.strerror})") from None
+        raise ValueError(f"Expected `path` to be a writable gradebook path, got {str(path)!r} ({err.strerror})") from None
     return rows

@@ -196,7 +196,7 @@ def make_sheet(numbers=DEFAULT_EXERCISES, *, students=30, seed=0, title="Problem
         numbers = (numbers,)
     exercises = [get(n) for n in numbers]
     if not exercises:
-        raise ValueError("Expected at least one exercise number, got none")
+        raise ValueError("Expected `numbers` to name at least one exercise, got none")
     seeds = student_seeds(seed, students)
     head = (f"Class seed {seed}, {students} students. Each student has a seed of their own: "
             "`python -m mech.exercises check NUMBER --seed SEED --answer KEY=VALUE ...` "
