@@ -152,6 +152,22 @@ def _guided_frames(pts, branches, turn, heights=False):
         return frames, np.stack([_heights(B, Ds, C), _heights(E, Fs, G)])
 
 
+def _optimal_task(R, theta, rtol, sweep):
+    """The checks every optimal six-bar design makes of its task: at least five distinct
+    orientations, one input angle each, strictly increasing within a turn; `rtol` >= 0 and
+    `sweep` >= 2. Returns them as arrays and numbers."""
+    R = orientation_set("R", R, task=True)
+    n = R.shape[0]
+    if n < 5:
+        raise ValueError(f"Expected at least 5 orientations in `R`, got {n}")
+    theta = finite_array("theta", theta)
+    if theta.shape != (n,):
+        raise ValueError(f"Expected `theta` of shape ({n},) (one input angle per orientation), got shape {theta.shape}")
+    if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < 2.0 * np.pi):
+        raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
+    return R, theta, nonnegative_number("rtol", rtol), integer("sweep", sweep, minimum=2)
+
+
 def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     """The Watt-2 six-bar nearest (least squares in orientation) to n > 5 orientations.
 
@@ -203,20 +219,11 @@ def optimal_guidance_watt2(R, theta, start, *, rtol=1e-2, sweep=721):
     >>> best.passes, bool(best.pose_error < 0.01)
     (True, True)
     """
-    R = orientation_set("R", R, task=True)
-    n = R.shape[0]
-    if n < 5:
-        raise ValueError(f"Expected at least 5 orientations in `R`, got {n}")
-    theta = finite_array("theta", theta)
-    if theta.shape != (n,):
-        raise ValueError(f"Expected `theta` of shape ({n},) (one input angle per orientation), got shape {theta.shape}")
-    if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < 2.0 * np.pi):
-        raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
+    R, theta, rtol, sweep = _optimal_task(R, theta, rtol, sweep)
     if not isinstance(start, (SphericalGuidanceSixBar, SphericalOptimalSixBar)):
         raise InputTypeError(f"Expected `start` to be a SphericalGuidanceSixBar or SphericalOptimalSixBar, "
                              f"got {_show(start)}")
-    rtol = nonnegative_number("rtol", rtol)
-    sweep = integer("sweep", sweep, minimum=2)
+    n = R.shape[0]
     from scipy.optimize import least_squares
 
     P0 = {k: np.asarray(v, float) for k, v in start.points.items()}

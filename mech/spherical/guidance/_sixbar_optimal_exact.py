@@ -15,15 +15,15 @@ imported when a design runs.
 import numpy as np
 
 from mech._geometry import cross3 as _cross
-from mech._validate import InputTypeError, _show, finite_array, integer, nonnegative_number
+from mech._validate import InputTypeError, _show, finite_array
 from mech.spherical._rigid_body import angle_at
 from mech.spherical.guidance._fourbar import _rotation_gap
 from mech.spherical.guidance._optimal import _point, _tangents
-from mech.spherical.guidance._orientations import orientation_set
 from mech.spherical.guidance._sixbar import _frame
 from mech.spherical.guidance._sixbar_exact import SphericalExactSixBar, _linkage_of
 from mech.spherical.guidance._sixbar_optimal import (_FD_STEP, _GUARD, _HEIGHT, _MAX_NFEV, _TOL,
-                                                      SphericalOptimalSixBar, _heights, _joint, _rotvec, _turn)
+                                                      SphericalOptimalSixBar, _heights, _joint, _optimal_task,
+                                                      _rotvec, _turn)
 
 __all__ = ["optimal_guidance_sixbar"]
 
@@ -121,22 +121,13 @@ def optimal_guidance_sixbar(R, theta, start, *, rtol=1e-2, sweep=721):
     >>> best.kind, best.passes, bool(best.pose_error < 0.01)
     ('watt1', True, True)
     """
-    R = orientation_set("R", R)
+    R, theta, rtol, sweep = _optimal_task(R, theta, rtol, sweep)
     n = R.shape[0]
-    if n < 5:
-        raise ValueError(f"Expected at least 5 orientations in `R`, got {n}")
-    theta = finite_array("theta", theta)
-    if theta.shape != (n,):
-        raise ValueError(f"Expected `theta` of shape ({n},) (one input angle per orientation), got shape {theta.shape}")
-    if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < 2.0 * np.pi):
-        raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
     kind = getattr(start, "kind", None)
     if not isinstance(start, (SphericalExactSixBar, SphericalOptimalSixBar)) or kind not in (
             "stephenson1", "stephenson2", "watt1"):
         raise InputTypeError(f"Expected `start` to be a Stephenson-1, Stephenson-2 or Watt-1 design "
                              f"(SphericalExactSixBar or SphericalOptimalSixBar), got {_show(start)}")
-    rtol = nonnegative_number("rtol", rtol)
-    sweep = integer("sweep", sweep, minimum=2)
     from scipy.optimize import least_squares
 
     # the start's joints at the first prescribed orientation, and its body axes

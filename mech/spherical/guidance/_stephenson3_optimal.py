@@ -19,11 +19,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._geometry import cross3 as _cross
-from mech._validate import InputTypeError, _show, finite_array, integer, nonnegative_number
+from mech._validate import InputTypeError, _show, finite_array
 from mech.spherical.guidance._fourbar import _rotation_gap
 from mech.spherical.guidance._optimal import _point, _tangents
-from mech.spherical.guidance._orientations import orientation_set
-from mech.spherical.guidance._sixbar_optimal import _FD_STEP, _MAX_NFEV, _TOL, _rotvec, _turn
+from mech.spherical.guidance._sixbar_optimal import _FD_STEP, _MAX_NFEV, _TOL, _optimal_task, _rotvec, _turn
 from mech.spherical.guidance._stephenson3 import SphericalGuidanceStephenson3
 from mech.spherical.linkage._stephenson3 import SphericalStephenson3
 
@@ -182,20 +181,11 @@ def optimal_guidance_stephenson3(R, theta, start, *, rtol=1e-2, sweep=721):
     (The search takes tens of seconds, so the last two lines are run by the slow test
     ``tests/spherical/guidance/test_stephenson3_optimal.py``, not as a doctest.)
     """
-    R = orientation_set("R", R)
+    R, theta, rtol, sweep = _optimal_task(R, theta, rtol, sweep)
     n = R.shape[0]
-    if n < 5:
-        raise ValueError(f"Expected at least 5 orientations in `R`, got {n}")
-    theta = finite_array("theta", theta)
-    if theta.shape != (n,):
-        raise ValueError(f"Expected `theta` of shape ({n},) (one input angle per orientation), got shape {theta.shape}")
-    if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < 2.0 * np.pi):
-        raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
     if not isinstance(start, (SphericalGuidanceStephenson3, SphericalOptimalStephenson3)):
         raise InputTypeError(f"Expected `start` to be a SphericalGuidanceStephenson3 or SphericalOptimalStephenson3, "
                              f"got {_show(start)}")
-    rtol = nonnegative_number("rtol", rtol)
-    sweep = integer("sweep", sweep, minimum=2)
     from scipy.optimize import least_squares
 
     # the start's joints and body at the first prescribed input

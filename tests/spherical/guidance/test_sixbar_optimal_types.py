@@ -66,4 +66,13 @@ def test_optimum_beats_the_best_exact_design_on_eight_orientations(kind):
 
 def test_a_watt2_start_is_refused_by_name():
     with pytest.raises(TypeError, match="`start`"):
-        optimal_guidance_sixbar(np.stack([np.eye(3)] * 6), np.arange(6.0), "a design")
+        optimal_guidance_sixbar(_turns_about_z(6), np.arange(6.0) / 10, "a design")
+
+
+def _turns_about_z(n):
+    """n distinct orientations: turns of 0.1 rad steps about the z axis."""
+    a = 0.1 * np.arange(n)
+    c, s = np.cos(a), np.sin(a)
+    R = np.zeros((n, 3, 3))
+    R[:, 0, 0], R[:, 0, 1], R[:, 1, 0], R[:, 1, 1], R[:, 2, 2] = c, -s, s, c, 1.0
+    return R

@@ -57,4 +57,13 @@ def test_optimum_beats_every_exact_design_on_eight_orientations():
 
 def test_a_start_of_another_kind_is_refused_by_name():
     with pytest.raises(TypeError, match="`start`"):
-        optimal_guidance_stephenson3(np.stack([np.eye(3)] * 6), np.arange(6.0), object())
+        optimal_guidance_stephenson3(_turns_about_z(6), np.arange(6.0) / 10, object())
+
+
+def _turns_about_z(n):
+    """n distinct orientations: turns of 0.1 rad steps about the z axis."""
+    a = 0.1 * np.arange(n)
+    c, s = np.cos(a), np.sin(a)
+    R = np.zeros((n, 3, 3))
+    R[:, 0, 0], R[:, 0, 1], R[:, 1, 0], R[:, 1, 1], R[:, 2, 2] = c, -s, s, c, 1.0
+    return R
