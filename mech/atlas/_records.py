@@ -59,6 +59,9 @@ def _box(name, value, size):
 
 #: The largest ratio of a link to the ground `sample_fourbars` draws.
 _MAX_RATIO = 1e150
+#: The largest coupler point (times the longest link) drawn: coupler curves are points, not
+#: squares, so only their own size must stay finite (the signature scales them first).
+_MAX_COUPLER = 1e306
 #: The largest seed: an atlas keeps each row's seed in a 64-bit signed integer column.
 _MAX_SEED = 2**63 - 1
 
@@ -68,6 +71,11 @@ def _check_sizes(*ranges):
     ratios to the ground) may exceed `_MAX_RATIO`: the type, input range and transmission
     angle use their squares and sums of squares, which must stay finite."""
     for name, given, size in ranges:
+        if name == "coupler":
+            if not size <= _MAX_COUPLER:
+                raise ValueError(f"Expected `coupler` that keeps every coupler point within {_MAX_COUPLER:g} times "
+                                 f"the ground, got {_show(given)}")
+            continue
         if not size <= _MAX_RATIO:
             raise ValueError(f"Expected `{name}` that keeps every drawn length within {_MAX_RATIO:g} times the "
                              f"ground (their squares must stay finite), got {_show(given)}")

@@ -13,7 +13,7 @@ import pytest
 
 from mech.planar.synthesis import freudenstein_coefficients, least_squares, precision_pairs
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 DEG = np.pi / 180.0
 
 
