@@ -176,7 +176,8 @@ def test_linkage_prp_and_rpp_agree_with_mpmath():
           .prp(("b1", "b2"), guides=(Guide("guide", 5 + 4j, 0.0), Guide("ground", 100j, 0.3)), joint="P")
           .rpp(("pinned", "yoke"), pin="B", guide=Guide("guide", -6 + 1j, 0.2), angle=1.2, point="J",
                offset=0.5))
-    theta = RNG.uniform(-math.pi, math.pi, 8)
+    # its own draws, so that deselecting another test (make test-fast) does not change them
+    theta = np.random.default_rng(2).uniform(-math.pi, math.pi, 8)
     sol = lk.solve(theta, order=2)
     assert sol.valid.all()
 
