@@ -281,14 +281,41 @@ def _tree(path):
     return _TREES[path]
 
 
-def _all_names(tree):
+def _reexported(root, module, tree):
+    """The modules a package re-exports with ``__all__ = reexport(globals(), ...)``
+    (``mech._exports``): their names are the package's public names."""
+    path = _module_file(root, module)
+    imported = {}
+    for node in tree.body:
+        if isinstance(node, ast.ImportFrom):
+            source = _absolute(module, node, path is not None and path.name == "__init__.py")
+            for alias in node.names:
+                imported[alias.asname or alias.name] = f"{source}.{alias.name}"
+    for node in tree.body:
+        if isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "__all__" for t in node.targets):
+            # `__all__ = reexport(...)` or `__all__ = ["Name", *reexport(...)]`
+            for call in ast.walk(node.value):
+                if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and call.func.id == "reexport":
+                    return [imported[a.id] for a in call.args[1:] if isinstance(a, ast.Name) and a.id in imported]
+    return []
+
+
+def _all_names(tree, root=None, module=None):
     for node in tree.body:
         if isinstance(node, ast.Assign) and any(
                 isinstance(t, ast.Name) and t.id == "__all__" for t in node.targets):
             try:
                 return list(ast.literal_eval(node.value))
             except ValueError:
-                return []
+                if root is None:
+                    return []
+                names = [e.value for e in getattr(node.value, "elts", ())
+                         if isinstance(e, ast.Constant) and isinstance(e.value, str)]
+                for sub in _reexported(root, module, tree):
+                    sub_path = _module_file(root, sub)
+                    if sub_path is not None:
+                        names += [n for n in _all_names(_tree(sub_path), root, sub) if n not in names]
+                return names
     return []
 
 
@@ -321,6 +348,10 @@ def _definition(root, module, name, depth=0):
                     if _module_file(root, f"{source}.{alias.name}") is not None:
                         return None          # a submodule, not a function
                     return _definition(root, source, alias.name, depth + 1)
+    for sub in _reexported(root, module, tree):
+        sub_path = _module_file(root, sub)
+        if sub_path is not None and name in _all_names(_tree(sub_path), root, sub):
+            return _definition(root, sub, name, depth + 1)
     return None
 
 
@@ -338,7 +369,7 @@ def _public_objects(root):
                 packages.append(f"{top}.{sub.parent.name}")
     for package in packages:
         tree = _tree(_module_file(root, package))
-        for name in _all_names(tree):
+        for name in _all_names(tree, root, package):
             found = _definition(root, package, name)
             if found is None:
                 continue
