@@ -6,12 +6,12 @@
 >>> round(teaching.parse_answer("0.5 rad", "deg"), 3)
 28.648
 
-- :func:`build_class` draws and solves every student's variant (with its figure);
-  :func:`write_markdown`, :func:`write_pdf`, :func:`write_moodle` and :func:`write_qti`
-  write sheets, keys and quizzes; :func:`write_class_list` the students' seeds;
-- :func:`read_answers`, :func:`grade_class` and :func:`write_gradebook` grade a class;
-  :func:`parse_answer` reads one answer with its unit;
-- :data:`ANSWER_KEYS` is the vocabulary of answer names, :func:`key_table` its rows.
+- ``build_class`` draws and solves every student's variant (with its figure);
+  ``write_markdown``, ``write_pdf``, ``write_moodle`` and ``write_qti``
+  write sheets, keys and quizzes; ``write_class_list`` the students' seeds;
+- ``read_answers``, ``grade_class`` and ``write_gradebook`` grade a class;
+  ``parse_answer`` reads one answer with its unit;
+- ``ANSWER_KEYS`` is the vocabulary of answer names, ``key_table`` its rows.
 
 The command line ``python -m mech.exercises sheet ... --format md html pdf moodle qti`` and
 ``python -m mech.exercises check --answers class.csv --gradebook grades.csv`` call these.

@@ -98,12 +98,19 @@ def _label(key):
 class Entry:
     """One number and every place that covers it.
 
-    key : (kind, number), e.g. ("eq", "2-19")
-    places : tuple of :class:`Place`
-    catalogued : bool, whether the textbook data (``mech/index/data``) lists the number
-    not_covered : the reason from ``NOT_COVERED``, or None
-    item : the number's :class:`~mech.index._catalog.CatalogItem` (its short title, section,
-        part or page), or None when the data does not list it
+    Attributes
+    ----------
+    key : tuple
+        ``(kind, number)``, e.g. ``("eq", "2-19")``.
+    places : tuple
+        The `Place` records that cover it.
+    catalogued : bool or None
+        Whether the textbook data (``mech/index/data``) lists the number.
+    not_covered : str or None
+        The reason from ``NOT_COVERED``, or None.
+    item : CatalogItem or None
+        The number's catalogue record (its short title, section, part or page), or None
+        when the data does not list it.
     """
 
     key: tuple
@@ -151,7 +158,7 @@ class Index:
     def __init__(self, root, places, catalog, items=None):
         self.root = Path(root)
         self.catalog = None if catalog is None else tuple(catalog)
-        #: {(kind, number): CatalogItem} with the title, section and page of each number.
+        # (kind, number) -> its catalogue record: title, section and page
         self.items = dict(items or {})
         grouped = {}
         for key, place in places:

@@ -67,7 +67,7 @@ def catalog_items(directory=None):
     """Every catalogued number with its data, as ``{(kind, number): CatalogItem}``.
 
     ``directory`` holds ``planar.toml`` and ``spherical.toml`` (default: the package's
-    :data:`DATA_DIR`).
+    ``DATA_DIR``).
 
     >>> items = catalog_items()
     >>> items[("eq", "2-19")].section, items[("section", "1.3.1")].page
