@@ -311,3 +311,22 @@ def test_png_palette_shrinks_a_figure_faithfully(tmp_path):
     Image.new("RGBA", (8, 8), (255, 0, 0, 10)).save(transparent)
     raw = transparent.read_bytes()
     assert not module.palette_png(transparent) and transparent.read_bytes() == raw
+
+
+def test_module_kernels_are_not_page_scripts():
+    """Jupyter Book puts every .js under book/_static on every page; the ES-module kernels
+    and their layer must not be (they throw on `export` as classic scripts)."""
+    import importlib.util
+    from types import SimpleNamespace
+
+    spec = importlib.util.spec_from_file_location("module_scripts", ROOT / "book" / "_ext" / "module_scripts.py")
+    ext = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(ext)
+    config = SimpleNamespace(html_js_files=["kernels/fourbar_position.js", ("mech/planar.js", {}), "mech_anim.js",
+                                            "other.js"])
+    ext._drop_module_scripts(None, config)
+    assert config.html_js_files == ["mech_anim.js", "other.js"]
+    built = ROOT / "book" / "_build" / "html" / "structure" / "index.html"
+    if built.is_file():
+        html = built.read_text(encoding="utf-8")
+        assert "_static/kernels/" not in html and "_static/mech/" not in html
