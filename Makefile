@@ -22,7 +22,11 @@ setup: $(STAMP)
 
 ## Set everything up and build the book (fails on any warning or failing cell).
 book: $(STAMP) browser-deps
-	set -o pipefail; PYTHONPATH=$(CURDIR) $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
+	# The derivation pages run in check mode: a stale generated module fails the build (it is
+	# never rewritten by it), and each passed check goes to a record the slow freshness test reads.
+	mkdir -p book/_build
+	set -o pipefail; MECH_CODEGEN=check MECH_CODEGEN_RECORD=$(CURDIR)/book/_build/codegen-checks.jsonl \
+	  PYTHONPATH=$(CURDIR) $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
 	$(BIN)/python book/_check_offline.py book/_build/html
 	# the whole book as one PDF, printed offline by Chromium (book/_pdf.py), linked from the landing page
 	$(BIN)/python book/_pdf.py book/_build/html
@@ -65,17 +69,20 @@ browser-deps:
 	       "the browser test will skip (and fail with MECH_BROWSER_TEST=required)"; \
 	fi
 
-## The test suite (doctests included), the browser test of the built book among them.
+## The test suite (doctests included), the browser test of the built book among them, on every
+## core (pytest-xdist); a file's tests stay in one process, so a file's session fixture (the
+## crawl of the built book) runs once.
+XDIST := -n auto --dist loadfile
 test: $(STAMP) browser-deps node-deps
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest $(XDIST)
 
 test-fast: $(STAMP) node-deps
-	$(BIN)/python -m pytest -m "not slow and not exhaustive"
+	$(BIN)/python -m pytest $(XDIST) -m "not slow and not exhaustive"
 
 ## The acceptance sweeps left out of `make test` (a whole class of 30 for every exercise,
 ## 1,000 seeds of every exercise): tens of minutes.
 test-exhaustive: $(STAMP) browser-deps node-deps
-	$(BIN)/python -m pytest -m exhaustive
+	$(BIN)/python -m pytest $(XDIST) -m exhaustive
 
 ## Benchmarks need pylinkage and numba (not in requirements.txt); results go to benchmarks/results.
 bench: $(STAMP)

@@ -310,4 +310,11 @@ def write(stem, notebook, equations, functions, *, samples=25, rtol=1e-11):
             if not target.exists() or target.read_text() != text:
                 target.parent.mkdir(parents=True, exist_ok=True)
                 target.write_text(text)
-    return check_fresh(stem, notebook, equations, functions, samples=samples, rtol=rtol)
+    path = check_fresh(stem, notebook, equations, functions, samples=samples, rtol=rtol)
+    if os.environ.get("MECH_CODEGEN") == "check":
+        # the book build runs every notebook in check mode; the slow freshness test then
+        # reads this record instead of running the same notebooks a second time
+        from derivations import _manifest
+
+        _manifest.note_checked(notebook)
+    return path

@@ -13,10 +13,17 @@ same thing by hashes alone: for each notebook that writes code it records
 ``python -m derivations`` (which runs the notebooks and rewrites stale modules) refreshes the
 entries of the notebooks it ran; ``--check`` writes nothing. A fast test compares the manifest
 with the files on disk; the slow test re-runs the notebooks and then asks the same question.
+
+The check record. ``make book`` executes every derivation notebook with ``MECH_CODEGEN=check``
+and ``MECH_CODEGEN_RECORD`` naming a file: each ``_codegen.write`` that passed its check there
+appends the notebook's entry as it stood then (one JSON line). A notebook whose recorded entry
+equals its entry now was checked, numbers against mpmath included, on exactly this code, this
+generator and these modules, so the slow test does not run it again (``checked``).
 """
 
 import hashlib
 import json
+import os
 import re
 from pathlib import Path
 
@@ -24,7 +31,10 @@ HERE = Path(__file__).resolve().parent
 MANIFEST = HERE / "manifest.json"
 GENERATED_DIR = HERE.parent / "mech" / "_generated"
 
-__all__ = ["MANIFEST", "written_stems", "entry", "read", "record", "stale"]
+__all__ = ["MANIFEST", "RECORD_ENV", "written_stems", "entry", "read", "record", "stale",
+           "note_checked", "checked"]
+
+RECORD_ENV = "MECH_CODEGEN_RECORD"
 
 
 def _sha(data):
@@ -104,3 +114,36 @@ def stale(path):
         return ""
     return (f"{_key(path)}: " + "; ".join(reasons)
             + " since the manifest was recorded: run `python -m derivations " + _key(path) + "`")
+
+
+def note_checked(notebook):
+    """Append the entry of ``notebook`` (relative to the repository) to the check record.
+
+    Called by ``_codegen.write`` after a check passed in check mode; does nothing unless the
+    environment variable ``MECH_CODEGEN_RECORD`` names the record file.
+    """
+    target = os.environ.get(RECORD_ENV)
+    if not target:
+        return
+    path = HERE.parent / notebook
+    line = json.dumps({"notebook": _key(path), "entry": entry(path)}, sort_keys=True)
+    # one short line in append mode: notebooks executed side by side do not interleave
+    with open(target, "a") as f:
+        f.write(line + "\n")
+
+
+def checked(path, record_file):
+    """Whether ``record_file`` holds a passed check of the notebook at ``path`` with the
+    entry that its code, the generator and its modules call for now."""
+    record_file = Path(record_file)
+    if not record_file.exists():
+        return False
+    key, now = _key(path), entry(path)
+    for line in record_file.read_text().splitlines():
+        try:
+            item = json.loads(line)
+        except json.JSONDecodeError:
+            continue
+        if item.get("notebook") == key and item.get("entry") == now:
+            return True
+    return False

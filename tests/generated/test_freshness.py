@@ -3,12 +3,14 @@ agree with mpmath at 50 digits (``_codegen.check_fresh``, run by each notebook's
 ``write`` call under ``MECH_CODEGEN=check``). Text is never compared: SymPy's CSE output
 differs between machines.
 
-Re-running the notebooks takes minutes, so it is marked ``slow``; the fast run checks the
-manifest instead (``derivations/_manifest.py``): the notebooks' code cells, the generator's
+Re-running the notebooks takes minutes, so it is marked ``slow``, and a notebook that
+``make book`` already ran in check mode on the same inputs (its check record) is not run
+twice; the fast run checks the manifest instead (``derivations/_manifest.py``): the notebooks' code cells, the generator's
 source and the generated files must hash to what ``python -m derivations`` recorded when it
 last ran them."""
 
 import importlib
+import json
 import importlib.util
 import re
 from pathlib import Path
@@ -20,6 +22,8 @@ from derivations import __main__ as runner
 from derivations import _codegen, _manifest
 
 NOTEBOOKS = runner.notebooks()
+# written by `make book`, which executes every derivation notebook in check mode
+BOOK_CHECK_RECORD = runner.HERE.parent / "book" / "_build" / "codegen-checks.jsonl"
 
 
 def _written_stems(path):
@@ -37,6 +41,11 @@ def test_generated_module_is_fresh(notebook):
     stems = _written_stems(notebook)
     if not stems:
         pytest.skip(f"{notebook.name} generates no code")
+    if _manifest.checked(notebook, BOOK_CHECK_RECORD):
+        # the book build of this very tree ran the notebook in check mode on the same code,
+        # generator and modules (numbers against mpmath included); running it again
+        # would repeat the same work
+        return
     before = {s: (_codegen.GENERATED_DIR / f"{s}.py").read_bytes() for s in stems if (_codegen.GENERATED_DIR / f"{s}.py").exists()}
     runner.run(notebook)
     after = {s: (_codegen.GENERATED_DIR / f"{s}.py").read_bytes() for s in stems}
@@ -248,3 +257,19 @@ def test_kernels_of_complex_outputs(tmp_path, monkeypatch):
                                         .replace("out[9]", "out[1]"))
     with pytest.raises(AssertionError, match="cprobe_into.w disagrees with mpmath"):
         _codegen.check_fresh("cprobe", "derivations/cprobe.md", "(0-0)", [f])
+
+
+def test_check_record_names_exact_inputs(tmp_path, monkeypatch):
+    """A check recorded by the book build counts only for the very entry it recorded: a
+    record of other code (or no record at all) sends the notebook to be run again."""
+    notebook = WRITERS[0]
+    record = tmp_path / "checks.jsonl"
+    assert not _manifest.checked(notebook, record)
+    monkeypatch.setenv(_manifest.RECORD_ENV, str(record))
+    _manifest.note_checked(notebook.relative_to(runner.HERE.parent).as_posix())
+    assert _manifest.checked(notebook, record)
+    assert not _manifest.checked(WRITERS[1], record)
+    line = json.loads(record.read_text())
+    line["entry"]["code"] = "sha256:" + "0" * 64
+    record.write_text(json.dumps(line) + "\n")
+    assert not _manifest.checked(notebook, record)
