@@ -20,13 +20,14 @@ $(STAMP): requirements.txt pyproject.toml
 
 setup: $(STAMP)
 
-## Set everything up and build the book (fails on any warning or failing cell).
+## Set everything up and build the book (fails on any warning or failing cell): `jupyter-book
+## build` with Sphinx's parallel jobs (book/_build_book.py), pages read and executed on every core.
 book: $(STAMP) browser-deps
 	# The derivation pages run in check mode: a stale generated module fails the build (it is
 	# never rewritten by it), and each passed check goes to a record the slow freshness test reads.
 	mkdir -p book/_build
 	set -o pipefail; MECH_CODEGEN=check MECH_CODEGEN_RECORD=$(CURDIR)/book/_build/codegen-checks.jsonl \
-	  PYTHONPATH=$(CURDIR) $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
+	  PYTHONPATH=$(CURDIR) $(BIN)/python book/_build_book.py book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
 	$(BIN)/python book/_check_offline.py book/_build/html
 	# the whole book as one PDF, printed offline by Chromium (book/_pdf.py), linked from the landing page
 	$(BIN)/python book/_pdf.py book/_build/html

@@ -330,3 +330,32 @@ def test_module_kernels_are_not_page_scripts():
     if built.is_file():
         html = built.read_text(encoding="utf-8")
         assert "_static/kernels/" not in html and "_static/mech/" not in html
+
+
+def test_book_is_read_on_every_core(tmp_path):
+    """`make book` (book/_build_book.py) passes Sphinx the number of jobs, and every extension
+    the book loads allows a parallel read: one extension without the flag makes the whole
+    build read, and execute its notebooks, one page after another. The build is stopped at
+    the moment Sphinx chooses."""
+    import subprocess
+    import sys
+
+    probe = f"""
+import functools, sys
+sys.path.insert(0, {str(BOOK)!r})
+import _build_book
+from sphinx import builders
+
+def stop(label):
+    def method(self, docnames, *args, **kwargs):
+        print(label, self.app.parallel, flush=True)
+        raise SystemExit(0)
+    return method
+
+builders.Builder._read_serial = stop("serial")
+builders.Builder._read_parallel = stop("parallel")
+_build_book.main([{str(BOOK)!r}, "--path-output", {str(tmp_path)!r}])
+"""
+    env = dict(__import__("os").environ, MECH_BOOK_JOBS="2", PYTHONPATH=str(ROOT))
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, env=env, timeout=600)
+    assert "parallel 2" in out.stdout, out.stdout[-2000:] + out.stderr[-2000:]
