@@ -32,13 +32,16 @@ book: $(STAMP) browser-deps
 	# the whole book as one PDF, printed offline by Chromium (book/_pdf.py), linked from the landing page
 	$(BIN)/python book/_pdf.py book/_build/html
 
-## Regenerate mech/_generated from the derivation notebooks.
+## Regenerate mech/_generated from the derivation notebooks whose inputs changed (a hash of each
+## notebook's code, the generator and its modules; ARGS=--all runs every one).
 ## (and book/_static/kernels, the JavaScript backend, checked under Node when installed)
 generate: $(STAMP) node-deps
-	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations
+	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations $(ARGS)
 
+## Check every generated module against its notebook, writing nothing: only the notebooks not
+## yet checked on this checkout with the same inputs and imported modules (ARGS=--all: all).
 check-generated: $(STAMP) node-deps
-	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check
+	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check $(ARGS)
 
 ## Debian's nodejs: runs the generated JavaScript kernels in tests/generated/test_js_kernels.py
 ## and in the generator's numeric check; installed with apt-get only when missing.

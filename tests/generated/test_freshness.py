@@ -273,3 +273,33 @@ def test_check_record_names_exact_inputs(tmp_path, monkeypatch):
     line["entry"]["code"] = "sha256:" + "0" * 64
     record.write_text(json.dumps(line) + "\n")
     assert not _manifest.checked(notebook, record)
+
+
+def test_check_runs_only_notebooks_not_checked_on_these_inputs(tmp_path, monkeypatch, capsys):
+    """`python -m derivations --check` runs a notebook once; a second check of the same
+    inputs skips it, `--all` runs it again, and a changed imported module sends it back."""
+    notebook = runner.HERE / "planar" / "grashof.md"
+    record = tmp_path / "checked.jsonl"
+    monkeypatch.setattr(runner, "notebooks", lambda: [notebook])
+    monkeypatch.setenv(_manifest.RECORD_ENV, str(record))
+    runner.main(["--check"])
+    assert "grashof.md: ok" in capsys.readouterr().out
+    runner.main(["--check"])
+    assert "grashof.md: unchanged since its last check" in capsys.readouterr().out
+    runner.main(["--check", "--all"])
+    assert "grashof.md: ok" in capsys.readouterr().out
+    imported = _manifest.imported_files(notebook)
+    assert any(f.name == "_codegen.py" for f in imported)
+    real = _manifest.check_entry(notebook)
+    monkeypatch.setattr(_manifest, "check_entry", lambda path: {**real, "imports": "sha256:changed"})
+    runner.main(["--check"])
+    assert "grashof.md: ok" in capsys.readouterr().out
+
+
+def test_imported_files_follow_the_project_imports():
+    """The import walk reaches the package modules a notebook's checks call."""
+    files = {f.relative_to(runner.HERE.parent).as_posix()
+             for f in _manifest.imported_files(runner.HERE / "spherical" / "fourbar.md")}
+    assert "mech/__init__.py" in files
+    assert "mech/planar/__init__.py" in files
+    assert "derivations/_codegen.py" in files
