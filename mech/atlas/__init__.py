@@ -32,7 +32,9 @@ from mech.atlas._signature import curve_signature, read_points, resample
 from mech.atlas._sampling import FourBarSamples, sample_fourbars
 from mech.atlas._store import ATLAS_VERSION, Atlas
 from mech.atlas._build import build_atlas
-from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query, refine
+from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query
+from mech.atlas._constraints import Constraints
+from mech.atlas._refine import refine
 from mech.atlas._slider import SliderCrankSamples, sample_slider_cranks
 from mech.atlas._multistart import find_linkages
 from mech.atlas._sphere_signature import sphere_signature
@@ -45,6 +47,7 @@ from mech.atlas._sphere_search import find_sphere_linkages, query_sphere, refine
 __all__ = [
     "ATLAS_VERSION",
     "Atlas",
+    "Constraints",
     "FourBarSamples",
     "Match",
     "PlacedLinkage",
