@@ -27,6 +27,8 @@ _Links = namedtuple("_Links", "a b c d")
 _SAME = 1e-3
 #: Refinements tried, at most, per start asked for, when the first ones end infeasible.
 _TRIES = 3
+#: Best matches refined without constraints, whose results (and cognates) start constrained refinements.
+_FREE = 2
 
 
 def _candidates(matches, constraints):
@@ -48,7 +50,7 @@ def _candidates(matches, constraints):
     return kept
 
 
-def find_linkages(atlas, target, *, starts=6, goal=None, samples=128, iterations=100, constraints=None):
+def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations=100, constraints=None):
     """Find four-bars tracing a closed target curve: query an atlas, then refine from several starts.
 
     The best matches of `query` and their cognates give the starts, those satisfying the
@@ -118,14 +120,30 @@ def find_linkages(atlas, target, *, starts=6, goal=None, samples=128, iterations
     t = _resample_rows(z, samples, True)[0]
     s = float(scale[0])
     out = []
+
+    def run(unit, m, rules):
+        results = [r for r in _refine_closed(unit, t, s, rules, samples, iterations, m.rank, m.index, m.distance)
+                   if r is not None and _placed_ok(r, rules)]
+        return min(results, key=lambda r: r.relative_error) if results else None
+
     for tried, (unit, m) in enumerate(_candidates(matches, constraints)):
         if tried >= starts and (out or tried >= _TRIES * starts):
             break
-        results = [r for r in _refine_closed(unit, t, s, constraints, samples, iterations, m.rank, m.index,
-                                             m.distance) if r is not None and _placed_ok(r, constraints)]
-        if results:
-            out.append(min(results, key=lambda r: r.relative_error))
-            if goal is not None and out[-1].relative_error <= goal:
+        found = run(unit, m, constraints)
+        if found is not None:
+            out.append(found)
+            if goal is not None and found.relative_error <= goal:
                 break
+    if constraints != Constraints.none() and not (goal is not None and out and
+                                                  min(r.relative_error for r in out) <= goal):
+        # the constrained optimum often lies on a constraint near the unconstrained one: the
+        # best matches are refined freely, and the results and their cognates (other
+        # proportions, the same curve) start constrained refinements
+        for m in matches[:_FREE]:
+            free = run(_unit(m.linkage.fourbar), m, Constraints.none())
+            for placed in () if free is None else (free.linkage, *free.cognates):
+                found = run(_unit(placed.fourbar), m, constraints)
+                if found is not None:
+                    out.append(found)
     out.sort(key=lambda m: m.relative_error)
     return [dataclasses.replace(m, rank=r) for r, m in enumerate(out)]

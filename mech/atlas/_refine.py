@@ -34,6 +34,8 @@ _MU_MARGIN = 1e-5
 _RATIO_MARGIN = 1e-6
 #: The objective where a linkage does not assemble (SLSQP needs a finite number).
 _BIG = 1e6
+#: SLSQP's stopping tolerance on the objective, the squared error over the start's (1 at the start).
+_FTOL = 1e-9
 _PAIRS = [(i, j) for i in range(4) for j in range(4) if i != j]
 
 
@@ -47,6 +49,20 @@ def _rows(X, branch):
     return describe(a, b, c, np.ones_like(a), b * X[:, 3], b * X[:, 4], np.full(a.shape, branch))
 
 
+def _columns(X, branch):
+    """The columns `coupler_points` reads, and the movable rows, for rows of x (the inner loop:
+    `describe` without the Grashof type and transmission angle, which it does not need)."""
+    from mech.atlas._sampling import _input_ranges
+
+    a, b, c = np.exp(X[:, 0]), np.exp(X[:, 1]), np.exp(X[:, 2])
+    one = np.ones_like(a)
+    signs = np.full(a.shape, branch, dtype=np.int8)
+    full, lo, hi, movable = _input_ranges(a, b, c, one, signs)
+    cols = {"a": a, "b": b, "c": c, "d": one, "p": b * X[:, 3], "q": b * X[:, 4], "branch": signs,
+            "full_turn": full, "theta_lo": lo, "theta_hi": hi}
+    return cols, movable
+
+
 def _closed_evaluator(t, branch, direction, dense_samples):
     """Relative RMS error and placed pivots (A, D) for rows of x = (log a, log b, log c, u, v, s)."""
     centre = t.mean()
@@ -54,10 +70,10 @@ def _closed_evaluator(t, branch, direction, dense_samples):
     def evaluate(X):
         X = np.atleast_2d(X)
         rel, piv = np.full(X.shape[0], np.nan), np.full((X.shape[0], 2), np.nan + 0j)
-        rows = _rows(X, branch)
-        ok = np.flatnonzero(rows.movable)
+        cols, movable = _columns(X, branch)
+        ok = np.flatnonzero(movable)
         if ok.size:
-            dense = coupler_curves(rows.take(ok).columns(), dense_samples)
+            dense = coupler_curves({k: v[ok] for k, v in cols.items()}, dense_samples)
             fine = np.all(np.isfinite(dense), axis=1)
             ok, dense = ok[fine], dense[fine]
         if ok.size:
@@ -82,10 +98,10 @@ def _open_evaluator(t, branch, direction, size):
     def evaluate(X):
         X = np.atleast_2d(X)
         rel, piv = np.full(X.shape[0], np.nan), np.full((X.shape[0], 2), np.nan + 0j)
-        rows = _rows(X, branch)
-        ok = np.flatnonzero(rows.movable & (X[:, 6] - X[:, 5] > 1e-6) & (X[:, 6] - X[:, 5] <= 1.0))
+        cols, movable = _columns(X, branch)
+        ok = np.flatnonzero(movable & (X[:, 6] - X[:, 5] > 1e-6) & (X[:, 6] - X[:, 5] <= 1.0))
         if ok.size:
-            _, table, _, fine = curve_tables(rows.take(ok).columns(), size, with_u=False)
+            _, table, _, fine = curve_tables({k: v[ok] for k, v in cols.items()}, size, with_u=False)
             e, w, centroid, _ = _fit_tables(np.broadcast_to(target, (ok.size, t.size)), table, np.arange(ok.size),
                                             X[ok, 5], X[ok, 6])
             good = fine & np.isfinite(e)
@@ -162,7 +178,7 @@ def _minimise(evaluate, x0, lower, upper, constraints, box, iterations, linear=(
         cons.append({"type": "ineq", "fun": lambda x: inside(at(x)[1]),
                      "jac": lambda x: (lambda g: (g[1:] - g[0]).T / _STEP)(inside(batch(x)[1]))})
     result = minimize(f, x0, jac=grad, method="SLSQP", bounds=list(zip(lower, upper)), constraints=cons,
-                      options={"maxiter": iterations, "ftol": 1e-12})
+                      options={"maxiter": iterations, "ftol": _FTOL})
     return np.asarray(result.x, dtype=float)
 
 
