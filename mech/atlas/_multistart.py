@@ -27,7 +27,8 @@ _Links = namedtuple("_Links", "a b c d")
 _SAME = 1e-3
 #: Refinements tried, at most, per start asked for, when the first ones end infeasible.
 _TRIES = 3
-#: Best matches refined without constraints, whose results (and cognates) start constrained refinements.
+#: Free refinements (of the best match and its cognates) whose results, and their cognates,
+#: start constrained refinements.
 _FREE = 2
 
 
@@ -55,8 +56,11 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
 
     The best matches of `query` and their cognates give the starts, those satisfying the
     constraints first (a rocker-crank relabelled with the motor at its fully turning link);
-    each of `starts` of them is refined by SLSQP under the constraints (`refine`), and every
-    result is checked against them: a linkage that fails is not returned. By default the
+    each of `starts` of them is refined by SLSQP under the constraints (`refine`). Then the
+    best match and its cognates are refined without constraints, and the two best results,
+    with their cognates, start constrained refinements too (the constrained optimum often
+    lies on a constraint near a free one). Every result is checked against the constraints:
+    a linkage that fails is not returned. By default the
     answer is a linkage a motor can drive: its input (the crank ``a``) turns fully, with a
     transmission angle of at least 30 degrees, and its longest link is at most ten times its
     shortest (`Constraints`).
@@ -136,12 +140,14 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
                 break
     if constraints != Constraints.none() and not (goal is not None and out and
                                                   min(r.relative_error for r in out) <= goal):
-        # the constrained optimum often lies on a constraint near the unconstrained one: the
-        # best matches are refined freely, and the results and their cognates (other
-        # proportions, the same curve) start constrained refinements
-        for m in matches[:_FREE]:
-            free = run(_unit(m.linkage.fourbar), m, Constraints.none())
-            for placed in () if free is None else (free.linkage, *free.cognates):
+        # the constrained optimum often lies on a constraint near an unconstrained one: the
+        # best match and its cognates are refined freely, and the best results and their
+        # cognates (other proportions, the same curve) start constrained refinements
+        m = matches[0]
+        free = [run(_unit(placed.fourbar), m, Constraints.none()) for placed in (m.linkage, *m.cognates)]
+        free = sorted((f for f in free if f is not None), key=lambda f: f.relative_error)
+        for f in free[:_FREE]:
+            for placed in (f.linkage, *f.cognates):
                 found = run(_unit(placed.fourbar), m, constraints)
                 if found is not None:
                     out.append(found)
