@@ -30,6 +30,9 @@ _TRIES = 3
 #: Free refinements (of the best match and its cognates) whose results, and their cognates,
 #: start constrained refinements.
 _FREE = 2
+#: A relative error at which the second stage (free refinements, then constrained ones from
+#: their results) is skipped: the target is then a driven four-bar's curve, found already.
+_CLOSE = 1e-4
 
 
 def _candidates(matches, constraints):
@@ -59,7 +62,8 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
     each of `starts` of them is refined by SLSQP under the constraints (`refine`). Then the
     best match and its cognates are refined without constraints, and the two best results,
     with their cognates, start constrained refinements too (the constrained optimum often
-    lies on a constraint near a free one). Every result is checked against the constraints:
+    lies on a constraint near a free one); this second stage is skipped when the first has
+    reached a relative error of 1e-4 (or `goal`). Every result is checked against the constraints:
     a linkage that fails is not returned. By default the
     answer is a linkage a motor can drive: its input (the crank ``a``) turns fully, with a
     transmission angle of at least 30 degrees, and its longest link is at most ten times its
@@ -138,8 +142,8 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
             out.append(found)
             if goal is not None and found.relative_error <= goal:
                 break
-    if constraints != Constraints.none() and not (goal is not None and out and
-                                                  min(r.relative_error for r in out) <= goal):
+    enough = _CLOSE if goal is None else max(goal, _CLOSE)
+    if constraints != Constraints.none() and not (out and min(r.relative_error for r in out) <= enough):
         # the constrained optimum often lies on a constraint near an unconstrained one: the
         # best match and its cognates are refined freely, and the best results and their
         # cognates (other proportions, the same curve) start constrained refinements
