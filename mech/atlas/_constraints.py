@@ -65,9 +65,9 @@ class Constraints:
     >>> c = Constraints()
     >>> round(math.degrees(c.min_transmission)), c.max_ratio
     (30, 10.0)
-    >>> c.violations(FourBar(10, 40, 30, 35))          # a crank-rocker, gamma_min 39.2 deg
+    >>> c.violations(FourBar(10, 40, 30, 35))          # a crank-rocker, gamma_min 38.6 deg
     ()
-    >>> c.violations(FourBar(10, 40, 30, 35 * 3))      # the crank can no longer turn
+    >>> c.violations(FourBar(32, 40, 35, 45))          # not Grashof: the crank rocks
     ('the input link does not turn fully',)
     """
 

@@ -113,7 +113,7 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
     >>> t = np.linspace(0, 2 * np.pi, 300, endpoint=False)
     >>> target = FourBar(10, 40, 30, 35, coupler=(20, 15)).solve(t).P     # example 2-1's linkage
     >>> best = find_linkages(build_atlas(2000, seed=3), target, starts=3, goal=0.01)[0]
-    >>> best.refined, best.relative_error < 0.01, best.full_turn, np.degrees(best.gamma_min) >= 30
+    >>> best.refined, best.relative_error < 0.01, best.full_turn, bool(np.degrees(best.gamma_min) >= 30)
     (True, True, True, True)
     """
     starts = integer("starts", starts, minimum=1, maximum=64)
