@@ -14,10 +14,13 @@ Layers, each usable alone:
 - the atlas itself (`build_atlas`, `Atlas`, stored as Parquet through pyarrow) and its
   search (`query`, returning `Match` records placed on the target, with the two
   Roberts-Chebyshev cognates of each match; an open arc is matched against parts of
-  the closed curves), `refine`, which improves a match by optimisation on the real curve
-  error, and `find_linkages`, which refines the best few matches and keeps the best;
+  the closed curves), `refine`, which improves a match by constrained optimisation on the
+  real curve error (an open match as an open arc), and `find_linkages`, which refines the
+  best few matches and their cognates and keeps the best that satisfy the `Constraints` (by
+  default a crank that turns fully, a transmission angle of at least 30 degrees, links
+  within a ratio of 10);
 - builds in blocks (`build_atlas`), on a Dask cluster if asked, written part by part to a
-  folder and resumable;
+  folder and resumable; the index of open-arc windows is stored in that folder on first use;
 - on the sphere: `sphere_signature` (invariant to rotations of the sphere, start and
   direction; :ref:`deriv-sphere-signature`), `sample_sphere_fourbars` (full-turn and
   rocking inputs, type, branch, minimum transmission angle), `build_sphere_atlas` (blocks,
@@ -32,7 +35,9 @@ from mech.atlas._signature import curve_signature, read_points, resample
 from mech.atlas._sampling import FourBarSamples, sample_fourbars
 from mech.atlas._store import ATLAS_VERSION, Atlas
 from mech.atlas._build import build_atlas
-from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query, refine
+from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query
+from mech.atlas._constraints import Constraints
+from mech.atlas._refine import refine
 from mech.atlas._slider import SliderCrankSamples, sample_slider_cranks
 from mech.atlas._multistart import find_linkages
 from mech.atlas._sphere_signature import sphere_signature
@@ -45,6 +50,7 @@ from mech.atlas._sphere_search import find_sphere_linkages, query_sphere, refine
 __all__ = [
     "ATLAS_VERSION",
     "Atlas",
+    "Constraints",
     "FourBarSamples",
     "Match",
     "PlacedLinkage",

@@ -11,7 +11,8 @@ adds one part built with another seed to an atlas); ``--dask`` computes the bloc
 Dask cluster, with the same result; ``--mechanism slider-crank`` samples slider-cranks with
 a coupler point on the rod instead. ``query`` reads a target curve (closed, or an open arc
 with ``--open``) from a CSV file of ``x, y`` rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
-draws them over the target (Matplotlib).
+draws them over the target (Matplotlib). The first open query of an atlas stores its index of
+windows in ``ATLAS_DIR/arcs/`` (minutes at 10^5 linkages); later queries load it.
 """
 
 import argparse

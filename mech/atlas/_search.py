@@ -18,7 +18,7 @@ from mech.atlas._signature import _close_arc, _curves, _resample_rows, _samples,
 from mech.atlas._store import Atlas
 from mech.planar.kinematics._fourbar import FourBar
 
-__all__ = ["Match", "PlacedLinkage", "PlacedSliderCrank", "query", "refine"]
+__all__ = ["Match", "PlacedLinkage", "PlacedSliderCrank", "query"]
 
 _BLOCK = 1 << 15
 _UPSAMPLE = 16
@@ -551,102 +551,3 @@ def _match(rank, index, row, t, w, centroid, err, radius, direction, distance, c
     return Match(rank, index, placed, cognates, int(direction), float(err), float(err / radius), distance,
                  str(row.kind[0]), float(row.gamma_min[0]), bool(row.full_turn[0]),
                  (float(row.theta_lo[0]), float(row.theta_hi[0])), origin + w * curve, refined, arc)
-
-
-
-
-def _refine_objective(t, branch, dense_samples):
-    """Relative RMS error of the best-aligned curve for x = (log a, log b, log c, u, v), rows of X."""
-    from mech.atlas._sampling import coupler_curves, describe
-
-    def objective(X):
-        X = np.asarray(X, dtype=float)
-        flat = X.reshape(-1, 5)
-        out = np.full(flat.shape[0], np.inf)
-        a, b, c = np.exp(flat[:, 0]), np.exp(flat[:, 1]), np.exp(flat[:, 2])
-        rows = describe(a, b, c, np.ones_like(a), b * flat[:, 3], b * flat[:, 4], np.full(a.shape, branch))
-        ok = np.flatnonzero(rows.movable)
-        if ok.size:
-            dense = coupler_curves(rows.take(ok).columns(), dense_samples)
-            fine = np.all(np.isfinite(dense), axis=1)
-            if fine.any():
-                err, *_, radius, _, _ = _best_fits(t, dense[fine], ok.size, levels=3)
-                out[ok[fine]] = err / radius
-        return out.reshape(X.shape[:-1])
-
-    return objective
-
-
-def refine(match, target, *, samples=128, iterations=400):
-    """Refine a match by optimisation on the real curve error (the path synthesis of chapter 2).
-
-    Starting from the matched linkage, the crank, coupler and rocker (as ratios to the ground)
-    and the coupler point are moved by a Nelder-Mead search (`mech.planar.synthesis`'s
-    `penalty_method` on a `DesignModel`) to reduce the RMS distance between the target and
-    the coupler curve, best aligned (placement, scale, start and direction) at every step.
-
-    Parameters
-    ----------
-    match : Match
-        A result of `query` (its branch is kept).
-    target : array_like, complex, shape (m,)
-        The closed target curve given to `query`.
-    samples : int, optional
-        Equal arc-length steps at which the curves are compared.
-    iterations : int, optional
-        Largest number of simplex iterations.
-
-    Returns
-    -------
-    Match
-        With ``refined=True``, the refined linkage placed on the target, its error, type,
-        minimum transmission angle and cognates; the starting match if no better one was
-        found.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from mech.atlas import build_atlas, query, refine
-    >>> from mech.planar import FourBar
-    >>> t = np.linspace(0, 2 * np.pi, 400, endpoint=False)
-    >>> target = FourBar(1.0, 2.7, 2.4, 3.1, coupler=(1.5, 0.8)).solve(t).P   # not in the atlas
-    >>> first = query(build_atlas(2000, seed=3), target, k=1)[0]
-    >>> better = refine(first, target, iterations=150)
-    >>> better.refined, better.relative_error < first.relative_error
-    (True, True)
-    """
-    from mech.planar.synthesis import DesignModel, penalty_method
-
-    instance("match", match, Match)
-    if not isinstance(match.linkage, PlacedLinkage):
-        raise ValueError(f"Expected `match` of a four-bar (refine does not move slider-cranks), got a match "
-                         f"of a {match.linkage.name}")
-    samples = _samples(samples, harmonics=1)
-    iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
-    z, lead, scale = _curves(target, True, "target", scaled=True)
-    if lead not in ((), (1,)):
-        raise ValueError(f"Expected one curve in `target`, got shape {np.shape(target)}")
-    # the search runs on the target divided by a power of two, as in `query`
-    t = _resample_rows(z, samples, True)[0]
-    s = float(scale[0])
-    f = match.linkage.fourbar
-    branch = f.branch
-    x0 = np.array([np.log(f.a / f.d), np.log(f.b / f.d), np.log(f.c / f.d), f.coupler[0] / f.b, f.coupler[1] / f.b])
-    width = np.array([1.5, 1.5, 1.5, 1.0, 1.0])
-    model = DesignModel(_refine_objective(t, branch, _DENSE * samples), np.stack([x0 - width, x0 + width], axis=1),
-                        names=("log a", "log b", "log c", "u", "v"))
-    start = float(model.f(x0))
-    if not np.isfinite(start):
-        return match
-    result = penalty_method(model, x0, r0=1e-12, stages=1, iterations=iterations, step=0.05, ftol=1e-10)
-    if not result.fun < start:
-        return match
-    from mech.atlas._sampling import coupler_curves, describe
-
-    x = result.x
-    a, b, c = np.exp(x[:3])
-    row = describe([a], [b], [c], [1.0], [b * x[3]], [b * x[4]], [branch])
-    dense = coupler_curves(row.columns(), _DENSE * samples)
-    err, w, centroid, radius, curves, direction = _best_fits(t, dense, 1)
-    return _rescaled(_match(match.rank, match.index, row, t, w[0], centroid[0], err[0], radius, direction[0],
-                            match.distance, curves[0], refined=True), s)

@@ -10,7 +10,7 @@ the parts. pyarrow is imported only here, inside the functions that read or writ
 
 import json
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 
@@ -89,6 +89,8 @@ class Atlas:
     signatures: np.ndarray
     seeds: np.ndarray
     settings: dict
+    #: The folder the atlas was read from (`from_parquet`), where the open-arc index is kept.
+    path: object = field(default=None, compare=False, repr=False)
 
     def __len__(self):
         return len(self.linkages)
@@ -161,7 +163,7 @@ class Atlas:
         names, record = columns_of(mechanism_of(settings))
         cols, sig, seeds = _table_columns(tables, names)
         width = 4 * int(settings["harmonics"])
-        return cls(record(**cols), sig.reshape(-1, width), seeds, settings)
+        return cls(record(**cols), sig.reshape(-1, width), seeds, settings, Path(path))
 
 
 def write_part(target, linkages, signatures, seeds, settings, chunk=None):
@@ -299,3 +301,59 @@ def _check_settings(have, new, where):
     if diff:
         shown = ", ".join(f"{k}: {have.get(k)!r} vs {new.get(k)!r}" for k in diff)
         raise ValueError(f"Expected atlas parts with the same settings in `path`, got {shown} in {where!r}")
+
+
+#: Folder, inside an atlas folder, of the stored open-arc indexes (window signatures).
+ARC_FOLDER = "arcs"
+
+
+def _fingerprint(atlas):
+    """A digest of the rows of `atlas` (count, settings, a sample of signatures and seeds): an
+    index stored beside the Parquet parts belongs to this atlas only if the digests agree."""
+    import hashlib
+
+    n = len(atlas)
+    step = max(1, n // 65536)
+    digest = hashlib.sha256(json.dumps([n, atlas.settings], sort_keys=True).encode())
+    for part in (atlas.signatures[::step], atlas.signatures[-1:], atlas.seeds[::step]):
+        digest.update(np.ascontiguousarray(part).tobytes())
+    return digest.hexdigest()
+
+
+def _arc_file(atlas, key):
+    return Path(atlas.path) / ARC_FOLDER / ("arcs-" + "-".join(f"{k:g}" for k in key) + ".npz")
+
+
+def load_arc_index(atlas, key):
+    """The stored open-arc index `key` of an atlas read from a folder, or None (none stored,
+    or stored for other rows)."""
+    if atlas.path is None:
+        return None
+    name = _arc_file(atlas, key)
+    if not name.is_file():
+        return None
+    try:
+        with np.load(name, allow_pickle=False) as data:
+            if str(data["fingerprint"]) != _fingerprint(atlas):
+                return None
+            return data["sigs"], data["norms"], data["gaps"]
+    except (OSError, ValueError, KeyError):
+        return None                   # unreadable or half-written: built again
+
+
+def save_arc_index(atlas, key, arrays):
+    """Store an open-arc index beside the Parquet parts (atomically; skipped where the folder
+    cannot be written, the index then being built again by the next process)."""
+    if atlas.path is None:
+        return None
+    name = _arc_file(atlas, key)
+    scratch = name.with_name(name.name + ".partial")
+    try:
+        name.parent.mkdir(exist_ok=True)
+        sigs, norms, gaps = arrays
+        with open(scratch, "wb") as out:
+            np.savez(out, sigs=sigs, norms=norms, gaps=gaps, fingerprint=np.array(_fingerprint(atlas)))
+        os.replace(scratch, name)
+    except OSError:
+        return None
+    return name

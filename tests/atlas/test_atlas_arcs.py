@@ -238,3 +238,36 @@ def test_query_open_arc_benchmark_misses():
         best = query(big, target, closed=False, k=1)[0]
         assert _found(big, i, best), (i, best.index, best.relative_error)
         assert best.relative_error < 1e-3
+
+
+def test_open_arc_index_is_stored_with_the_atlas_and_loaded(tmp_path, monkeypatch):
+    """Issue 28: the window signatures were built again in every process (minutes at 10^5).
+    An atlas read from a folder stores them there; a new reading loads them (building them
+    is made to fail here), and an appended part makes them be built anew."""
+    import mech.atlas._arcs as arcs
+    from mech.atlas import Atlas
+
+    build_atlas(300, seed=4).to_parquet(tmp_path)
+    first = Atlas.from_parquet(tmp_path)
+    target = _arc(first, 17, 0.5, np.random.default_rng(3), noise=0.0)
+    before = query(first, target, closed=False, k=2)
+    stored = sorted((tmp_path / "arcs").glob("*.npz"))
+    assert [p.name for p in stored] == ["arcs-0.5-64.npz"]
+
+    def no_build(*args, **kwargs):
+        raise AssertionError("the window signatures were built again")
+
+    with monkeypatch.context() as m:
+        m.setattr(arcs, "normal_form", no_build)
+        again = Atlas.from_parquet(tmp_path)
+        after = query(again, target, closed=False, k=2)
+        assert [x.index for x in after] == [x.index for x in before]
+        assert [x.error for x in after] == [x.error for x in before]
+        assert np.array_equal(again._arc_cache[(0.5, 64)][0], first._arc_cache[(0.5, 64)][0])
+        build_atlas(50, seed=5).to_parquet(tmp_path, append=True)
+        grown = Atlas.from_parquet(tmp_path)
+        with pytest.raises(AssertionError, match="built again"):
+            query(grown, target, closed=False, k=2)
+    grown = Atlas.from_parquet(tmp_path)
+    query(grown, target, closed=False, k=2)
+    assert grown._arc_cache[(0.5, 64)][0].shape[0] == 350

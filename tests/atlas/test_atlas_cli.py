@@ -66,3 +66,5 @@ def test_cli_query_open_arc(tmp_path, capsys):
     assert main(["query", str(folder), str(tmp_path / "arc.csv"), "-k", "1", "--open"]) == 0
     out = capsys.readouterr().out
     assert "curve parameter u from" in out
+    # issue 28: the open-arc index is kept beside the parts, so the next process loads it
+    assert (folder / "arcs" / "arcs-0.5-64.npz").is_file()
