@@ -65,6 +65,13 @@ _CSS = """<style>
 .mf-axis{fill:none;stroke:#555;stroke-width:1;stroke-dasharray:8 3 2 3}
 .mf-curve{fill:none;stroke:#2e86c1;stroke-width:1.5}
 .mf-fixed{fill:none;stroke:#000;stroke-width:3}
+.mech-live{margin-top:.3em}
+.mech-live-fields{display:flex;flex-wrap:wrap;gap:.2em .9em;align-items:center}
+.mech-live-field input[type=number]{width:5.5em;font:inherit}
+.mech-live-field input[type=range]{width:6.5em;vertical-align:middle}
+.mech-live-msg{color:#a00}
+.mech-live-none{color:#555;font-style:italic}
+.mf-handle{fill:#e67e22;fill-opacity:.2;stroke:#e67e22;stroke-width:1.2;cursor:move}
 </style>"""
 
 #: Styles a still curve of `view3d` can take (CSS classes above).
@@ -126,8 +133,13 @@ def _controls(n, label, marks):
             f'aria-label="{html.escape(label)}"><span class="mech-value"></span>{jumps}</div>')
 
 
-def _wrap(classes, attrs, svg, controls, data, title=""):
+def _wrap(classes, attrs, svg, controls, data, title="", live=None):
     heading = f'<div class="mech-title">{html.escape(title)}</div>' if title else ""
+    if live is not None:  # controls of a live figure, in their first state (figures/live.py)
+        from figures.live import controls as live_controls
+
+        data["live"] = live
+        controls += live_controls(live)
     return (f'{_CSS}<div class="mech-fig {classes}" {attrs}>{heading}{svg}{controls}'
             f'<script type="application/json" class="mech-data">{_json(data)}</script></div>'
             f"<script>{_script()}</script>")
@@ -140,7 +152,8 @@ def _display(text):
 
 
 def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches=None, marks=(),
-            inputs=None, input_label="\u03b8 (deg)", labels=True, fps=30, width=560, caption="", title=""):
+            inputs=None, input_label="\u03b8 (deg)", labels=True, fps=30, width=560, caption="", title="",
+            live=None):
     """Animate a planar linkage from its solved poses.
 
     Parameters
@@ -180,6 +193,9 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         Text for screen readers (``aria-label`` of the SVG).
     title : str
         A visible title above the figure (which linkage it is, when a page shows several).
+    live : dict, optional
+        From `figures.live` (``fourbar``, ``slider_crank``, ``none``): the reader may change
+        the linkage in the page, which recomputes it with the JavaScript kernels.
 
     Returns
     -------
@@ -246,7 +262,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
     font = round(0.034 * max(w, h), 1)
     svg = (f'<svg viewBox="{x0} {y0} {w} {h}" style="max-width:{int(width)}px;font-size:{font}px" role="img" '
            f'aria-label="{html.escape(caption)}"></svg>')
-    return _display(_wrap("mech-anim", 'data-frame="0"', svg, _controls(n, input_label, marks), data, title))
+    return _display(_wrap("mech-anim", 'data-frame="0"', svg, _controls(n, input_label, marks), data, title, live))
 
 
 def animate_linkage(linkage, solution, *, trace=(), inputs=None, **options):
@@ -323,7 +339,8 @@ def great_circle(pole, n=97):
 
 
 def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), inputs=None,
-           input_label="\u03b8 (deg)", labels=True, yaw=30.0, pitch=20.0, fps=20, width=460, caption="", title=""):
+           input_label="\u03b8 (deg)", labels=True, yaw=30.0, pitch=20.0, fps=20, width=460, caption="", title="",
+           live=None):
     """A 3-D figure the reader turns by dragging; moving when its points have several poses.
 
     Parameters
@@ -345,6 +362,8 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
         As in `animate`.
     yaw, pitch : float
         The initial view, degrees: turn about the z axis, then tilt towards the reader.
+    live : dict, optional
+        From `figures.live` (``spherical_fourbar``, ``none``), as in `animate`.
 
     Returns
     -------
@@ -397,4 +416,4 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
     moving = n > 1
     attrs = f'data-yaw="{float(yaw):.1f}" data-pitch="{float(pitch):.1f}"' + (' data-frame="0"' if moving else "")
     return _display(_wrap("mech-view3d mech-anim" if moving else "mech-view3d", attrs, svg,
-                          _controls(n, input_label, ()) if moving else "", data, title))
+                          _controls(n, input_label, ()) if moving else "", data, title, live))

@@ -85,7 +85,6 @@
   function planar(div, d) {
     var svg = div.querySelector("svg"), u = d.unit, layer = {};
     ["fix", "mark", "ghost", "path", "link", "top"].forEach(function (k) { layer[k] = el(svg, "g", {}); });
-    d.lines.forEach(function (l) { el(layer.fix, "path", {d: pathD(l), class: "mf-guide"}); });
     function pts(P, f) { return d.names.map(function (_, i) { return at(P[i], f, 2); }); }
     function body(g, P, f, cls) {
       var p = pts(P, f);
@@ -95,12 +94,21 @@
       });
       return p;
     }
-    // Still parts: the whole path of each traced point (faint) and the marked poses.
-    d.trace.forEach(function (i) {
-      var all = []; for (var f = 0; f < d.n; f++) all.push(at(d.P[i], f, 2));
-      el(layer.path, "path", {d: pathD(all), class: "mf-path-all"});
-    });
-    d.marks.forEach(function (m) {
+    // Still parts: the guides, the whole path of each traced point (faint) and the marked
+    // poses; drawn again when a live figure changes its linkage (d.curves: a finer path).
+    var trace = [];
+    function stills() {
+      ["fix", "path", "mark"].forEach(function (k) { layer[k].textContent = ""; });
+      d.lines.forEach(function (l) { el(layer.fix, "path", {d: pathD(l), class: "mf-guide"}); });
+      d.trace.forEach(function (i, k) {
+        var all = d.curves && d.curves[k];
+        if (!all) { all = []; for (var f = 0; f < d.n; f++) all.push(at(d.P[i], f, 2)); }
+        el(layer.path, "path", {d: pathD(all), class: "mf-path-all"});
+      });
+      d.marks.forEach(mark);
+      trace = d.trace.map(function () { return el(layer.path, "path", {class: "mf-path"}); });
+    }
+    function mark(m) {
       // A mark without a point is only a button (many dotted poses would hide the figure).
       if (m[2] === null) return;
       var p = body(layer.mark, d.P, m[0], "mf-marked"), q = p[m[2]];
@@ -108,8 +116,10 @@
       var box = svg.viewBox.baseVal, left = q && q[0] > box.x + box.width / 2;
       if (q) el(layer.mark, "text", {x: q[0] + (left ? -u : u), y: q[1] - u, class: "mf-marktext",
                                      "text-anchor": left ? "end" : "start"}).textContent = m[1];
-    });
-    var trace = d.trace.map(function () { return el(layer.path, "path", {class: "mf-path"}); });
+    }
+    stills();
+    var api = {data: d, svg: svg, after: null, frame: function () { return +div.getAttribute("data-frame") || 0; },
+               redraw: function () { stills(); draw(api.frame()); }};
     function draw(f) {
       ["ghost", "link", "top"].forEach(function (k) { layer[k].textContent = ""; });
       if (d.ghost) body(layer.ghost, d.ghost, f, "mf-ghost");
@@ -142,8 +152,10 @@
           place(t, q, 0.7 * u, placed);
         }
       });
+      if (api.after) api.after(f);
     }
     controls(div, d, draw);
+    live(div, d, api);
   }
 
   // 3-D figure: orthographic view turned by yaw (about z) and pitch; drag to turn.
@@ -193,9 +205,11 @@
         line(pts, c.c);
       });
       var p = d.names.map(function (_, i) { return xyz(d.P[i], f); });
-      d.trace.forEach(function (i) {
+      d.trace.forEach(function (i, k) {
         var all = [], done = [];
         for (var h = 0; h < d.n; h++) { all.push(xyz(d.P[i], h)); if (h <= f) done.push(all[h]); }
+        // a live figure's finer curve (unit vectors times the grid step, as d.P)
+        if (d.curves && d.curves[k]) all = d.curves[k].map(function (q) { return q && [q[0] * s, q[1] * s, q[2] * s]; });
         line(all, "mf-path-all");
         line(done, "mf-path");
       });
@@ -214,7 +228,19 @@
           place(t, r, 30, placed);
         }
       });
+      if (api.after) api.after(f);
     }
+    var api = {data: d, svg: svg, after: null, project: project, frame: function () { return frame; },
+               redraw: function () { draw(frame); },
+               // the point of the unit sphere under a screen point (user units), nearest the reader
+               unproject: function (x, y) {
+                 var X = x / K, Y = -y / K, w = Math.sqrt(Math.max(0, 1 - X * X - Y * Y)), n = Math.hypot(X, Y, w);
+                 X /= n; Y /= n; w /= n;
+                 var cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
+                 // invert project: X = x', Y = sp y' + cp z, w = -(cp y' - sp z) with y' = -sy p0 + cy p1
+                 var yv = sp * Y - cp * w, z = cp * Y + sp * w;
+                 return [cy * X - sy * yv, sy * X + cy * yv, z];
+               }};
     var drag = null;
     svg.addEventListener("pointerdown", function (e) {
       drag = [e.clientX, e.clientY];
@@ -233,6 +259,16 @@
     });
     ["pointerup", "pointercancel"].forEach(function (t) { svg.addEventListener(t, function () { drag = null; }); });
     if (d.n > 1) controls(div, d, draw); else draw(0);
+    live(div, d, api);
+  }
+
+  // A live figure (d.live) loads the page's kernels and their controls as ES modules, once
+  // per page and only on pages that have one; the drawing above is the build's own state.
+  function live(div, d, api) {
+    if (!d.live || d.live.type === "none") return;
+    var root = document.documentElement.getAttribute("data-content_root");
+    if (root === null) return; // not a page of the book (a notebook): stays a recording
+    import(root + "_static/mech/live.js").then(function (m) { m.attach(div, d, api); });
   }
 
   function scan() {
