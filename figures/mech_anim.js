@@ -47,6 +47,17 @@
     t.setAttribute("text-anchor", s0[2]);
     placed.push(first[1]);
   }
+  // While a live figure is dragged (api.quick), a label keeps the place it took last time
+  // around its point: measuring text boxes forces a layout, too slow for every move.
+  function placeAgain(api, key, t, q, off, placed) {
+    var s = api.spots[key];
+    if (api.quick && s) {
+      t.setAttribute("x", q[0] + s[0]); t.setAttribute("y", q[1] + s[1]); t.setAttribute("text-anchor", s[2]);
+      return;
+    }
+    place(t, q, off, placed);
+    api.spots[key] = [+t.getAttribute("x") - q[0], +t.getAttribute("y") - q[1], t.getAttribute("text-anchor")];
+  }
   // The point of frame f in a flat array with `dim` numbers per frame (null: no pose).
   function at(arr, f, dim) {
     // A fixed point is stored once, not once per frame.
@@ -118,7 +129,7 @@
                                      "text-anchor": left ? "end" : "start"}).textContent = m[1];
     }
     stills();
-    var api = {data: d, svg: svg, after: null, frame: function () { return +div.getAttribute("data-frame") || 0; },
+    var api = {data: d, svg: svg, after: null, quick: false, spots: {}, frame: function () { return +div.getAttribute("data-frame") || 0; },
                redraw: function () { stills(); draw(api.frame()); }};
     function draw(f) {
       ["ghost", "link", "top"].forEach(function (k) { layer[k].textContent = ""; });
@@ -137,7 +148,7 @@
                                transform: "rotate(" + deg.toFixed(1) + " " + q[0] + " " + q[1] + ")"});
       });
       var placed = [];
-      layer.mark.querySelectorAll("text").forEach(function (t) { var b = t.getBBox(); if (b.width) placed.push(b); });
+      if (!api.quick) layer.mark.querySelectorAll("text").forEach(function (t) { var b = t.getBBox(); if (b.width) placed.push(b); });
       p.forEach(function (q, i) {
         if (!q) return;
         // Names starting with "_" are helper points (a block's direction): not drawn.
@@ -149,7 +160,7 @@
         if (d.labels) {
           var t = el(layer.top, "text", {x: q[0] + 0.7 * u, y: q[1] - 0.7 * u, class: "mf-label"});
           t.textContent = d.names[i];
-          place(t, q, 0.7 * u, placed);
+          placeAgain(api, i, t, q, 0.7 * u, placed);
         }
       });
       if (api.after) api.after(f);
@@ -225,12 +236,12 @@
         if (d.labels) {
           var t = el(g, "text", {x: r[0] + 30, y: r[1] - 30, class: "mf-label3"});
           t.textContent = d.names[i];
-          place(t, r, 30, placed);
+          placeAgain(api, i, t, r, 30, placed);
         }
       });
       if (api.after) api.after(f);
     }
-    var api = {data: d, svg: svg, after: null, project: project, frame: function () { return frame; },
+    var api = {data: d, svg: svg, after: null, quick: false, spots: {}, project: project, frame: function () { return frame; },
                redraw: function () { draw(frame); },
                // the point of the unit sphere under a screen point (user units), nearest the reader
                unproject: function (x, y) {

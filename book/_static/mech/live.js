@@ -19,7 +19,7 @@ export async function attach(div, d, api) {
   const fig = kind(div, d, api, spec, layer);
   const box = div.querySelector(".mech-live");
   const msg = box.querySelector(".mech-live-msg");
-  const stats = { times: [], updates: 0 };
+  const stats = { times: [], updates: 0, parts: [] };
   div.mechLive = stats;
   let good = Object.assign({}, fig.state);
 
@@ -37,9 +37,12 @@ export async function attach(div, d, api) {
     let text = "";
     try {
       fig.compute();
+      const t1 = performance.now();
       good = Object.assign({}, fig.state);
       text = fig.message(api.frame());
       api.redraw();
+      const t2 = performance.now();
+      stats.parts.push([t1 - t0, t2 - t1]);
       const out = fig.readout();
       box.querySelector(".mech-live-type").textContent = out.kind;
       box.querySelector(".mech-live-limits").textContent = out.limits;
@@ -56,6 +59,11 @@ export async function attach(div, d, api) {
     if (stats.times.length > 2000) stats.times.shift();
   }
   stats.update = update;
+  stats.data = d;
+  stats.api = api;
+  // Several values at once, in the units of the fields (the browser test resets with it).
+  stats.set = (values) => update(Object.assign({}, ...Object.entries(values).map(([k, v]) =>
+    (k in fig.shown() ? fig.fromField(k, v) : { [k]: v }))));
 
   box.querySelectorAll("input[data-k]").forEach((input) => {
     input.addEventListener("input", () => {
@@ -84,7 +92,7 @@ export async function attach(div, d, api) {
   });
   let last = -1;
   api.after = (f) => {
-    svg.appendChild(handles); // above the drawing
+    if (svg.lastChild !== handles) svg.appendChild(handles); // above the drawing
     fig.handles.forEach((h, k) => {
       const q = fig.where(h, f);
       dots[k].style.display = q ? "" : "none";
@@ -96,20 +104,24 @@ export async function attach(div, d, api) {
   dots.forEach((dot, k) => {
     dot.addEventListener("pointerdown", (e) => {
       held = fig.handles[k];
+      api.quick = true;
       e.stopPropagation(); // not a turn of a 3-D view
       e.preventDefault();
-      try { dot.setPointerCapture(e.pointerId); } catch (err) { /* synthetic events have no capture */ }
+      try { svg.setPointerCapture(e.pointerId); } catch (err) { /* a synthetic event has no pointer to capture */ }
     });
-    dot.addEventListener("pointermove", (e) => {
-      if (held !== fig.handles[k]) return;
-      e.stopPropagation();
-      const m = svg.getScreenCTM().inverse();
-      const p = new DOMPoint(e.clientX, e.clientY).matrixTransform(m);
-      const change = fig.fromDrag(held, p.x, p.y, api.frame());
-      if (change) update(change);
-    });
-    ["pointerup", "pointercancel"].forEach((t) => dot.addEventListener(t, () => { held = null; }));
   });
+  // the moves of a held handle, wherever the pointer is (captured by the svg)
+  svg.addEventListener("pointermove", (e) => {
+    if (!held) return;
+    e.stopPropagation();
+    const p = new DOMPoint(e.clientX, e.clientY).matrixTransform(svg.getScreenCTM().inverse());
+    const change = fig.fromDrag(held, p.x, p.y, api.frame());
+    if (change) update(change);
+  }, true);
+  // the drag ends: labels placed afresh around their points
+  ["pointerup", "pointercancel"].forEach((t) => window.addEventListener(t, () => {
+    if (held) { held = null; api.quick = false; api.redraw(); }
+  }));
   api.after(api.frame());
 }
 
@@ -135,7 +147,7 @@ function planarFourBar(div, d, api, spec, L) {
   const theta = Float64Array.from(spec.theta);
   const curveTheta = Float64Array.from({ length: spec.curve }, (_, i) => (2 * Math.PI * i) / spec.curve);
   const fig = { state, handleSize: 1.1 * d.unit };
-  let pose = null, first = true;
+  let pose = null, first = true, solved = {};
   fig.handles = [nA, nD, nB, nC].concat(couplers.map((c) => c.i)).filter((i) => i >= 0).map((i) => d.names[i]);
   fig.shown = () => ({ a: state.a, b: state.b, c: state.c, d: state.d, p: state.p, q: state.q });
   fig.fromField = (k, v) => ({ [k]: v });
@@ -172,12 +184,18 @@ function planarFourBar(div, d, api, spec, L) {
   }
   fig.compute = () => {
     if (couplers.length) { couplers[0].p = state.p; couplers[0].q = state.q; }
-    const linkage = new L.FourBar(state.a, state.b, state.c, state.d, { branch: state.branch });
-    pose = linkage.solve(theta);
+    // the joints depend on the lengths and the branch only: a moved coupler point reuses them
+    const key = [state.a, state.b, state.c, state.d, state.branch].join();
+    if (key !== solved.key) {
+      const linkage = new L.FourBar(state.a, state.b, state.c, state.d, { branch: state.branch });
+      solved = { key, pose: linkage.solve(theta), run: linkage.solve(curveTheta),
+        ghost: d.ghost ? new L.FourBar(state.a, state.b, state.c, state.d, { branch: -state.branch }).solve(theta) : null };
+    }
+    pose = solved.pose;
     fill(d.P, pose);
-    if (d.ghost) fill(d.ghost, new L.FourBar(state.a, state.b, state.c, state.d, { branch: -state.branch }).solve(theta));
+    if (d.ghost) fill(d.ghost, solved.ghost);
     // the path of each traced point over a whole turn of the crank, finer than the frames
-    const run = linkage.solve(curveTheta);
+    const run = solved.run;
     d.curves = d.trace.map((i) => {
       const pts = new Array(curveTheta.length);
       const k = couplers.findIndex((c) => c.i === i);
