@@ -21,9 +21,11 @@ svg changes both attributes (degrees) and redraws. A moving 3-D view has both cl
 Weight, measured on the crank-rocker (10, 40, 30, 35) with a coupler point, 180 poses
 (the table is on the book's page *How to read this book*): Matplotlib's
 ``FuncAnimation.to_jshtml`` (one PNG per pose, 5 x 4 in) stores 2441 kB at 72 dpi and
-3655 kB at 100 dpi, and took about 13 s to render; this module stores 17.3 kB (6.8 kB of
+3655 kB at 100 dpi, and took about 13 s to render; this module stores 18.4 kB (6.8 kB of
 data, the poses rounded to 4 significant digits on an integer grid and the input values;
-8.5 kB of script (with the placing of labels that never collide), 1.5 kB of style). Plotly would add its own script of about 3.5 MB to every page that uses it.
+9.6 kB of script (with the placing of labels that never collide and the hooks of live
+figures), 1.6 kB of style). A live figure (``live=``, `figures.live`) adds its controls
+and loads the kernels it needs as shared ES modules. Plotly would add its own script of about 3.5 MB to every page that uses it.
 """
 
 import html
@@ -65,13 +67,6 @@ _CSS = """<style>
 .mf-axis{fill:none;stroke:#555;stroke-width:1;stroke-dasharray:8 3 2 3}
 .mf-curve{fill:none;stroke:#2e86c1;stroke-width:1.5}
 .mf-fixed{fill:none;stroke:#000;stroke-width:3}
-.mech-live{margin-top:.3em}
-.mech-live-fields{display:flex;flex-wrap:wrap;gap:.2em .9em;align-items:center}
-.mech-live-field input[type=number]{width:5.5em;font:inherit}
-.mech-live-field input[type=range]{width:6.5em;vertical-align:middle}
-.mech-live-msg{color:#a00}
-.mech-live-none{color:#555;font-style:italic}
-.mf-handle{fill:#e67e22;fill-opacity:.2;stroke:#e67e22;stroke-width:1.2;cursor:move}
 </style>"""
 
 #: Styles a still curve of `view3d` can take (CSS classes above).

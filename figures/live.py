@@ -187,6 +187,14 @@ def _sphere_transmission(B, C, D):
     return float(np.nanmin(mu))
 
 
+# The style of the controls, written only with a live figure.
+_CSS = ("<style>.mech-live{margin-top:.3em}"
+        ".mech-live-fields{display:flex;flex-wrap:wrap;gap:.2em .9em;align-items:center}"
+        ".mech-live-field input[type=number]{width:5.5em;font:inherit}"
+        ".mech-live-field input[type=range]{width:6.5em;vertical-align:middle}"
+        ".mech-live-msg{color:#a00}.mech-live-none{color:#555;font-style:italic}"
+        ".mf-handle{fill:#e67e22;fill-opacity:.2;stroke:#e67e22;stroke-width:1.2;cursor:move}</style>")
+
 _FIELDS = {
     "fourbar": [("a", "crank a"), ("b", "coupler b"), ("c", "rocker c"), ("d", "ground d"), ("p", "coupler p"), ("q", "coupler q")],
     "slidercrank": [("a", "crank a"), ("b", "rod b"), ("e", "offset e")],
@@ -217,7 +225,7 @@ def _values(spec):
 def controls(spec):
     """The HTML of a live figure's controls and read-out, in their first state."""
     if spec["type"] == "none":
-        return f'<div class="mech-live mech-live-none">{html.escape(spec["why"])}</div>'
+        return f'{_CSS}<div class="mech-live mech-live-none">{html.escape(spec["why"])}</div>'
     values, ranges, step = _values(spec)
     out = readout(spec)
     rows = []
@@ -234,5 +242,5 @@ def controls(spec):
     text = (f'<span class="mech-live-type">{html.escape(out["kind"])}</span> \u00b7 '
             f'<span class="mech-live-limits">{html.escape(out["limits"])}</span> \u00b7 '
             f'<span class="mech-live-gamma">{html.escape(out["transmission"])}</span>')
-    return (f'<div class="mech-live"><div class="mech-live-fields">{"".join(rows)}{branch}</div>'
+    return (f'{_CSS}<div class="mech-live"><div class="mech-live-fields">{"".join(rows)}{branch}</div>'
             f'<div class="mech-live-out">{text}</div><div class="mech-live-msg" role="status"></div></div>')

@@ -47,17 +47,6 @@
     t.setAttribute("text-anchor", s0[2]);
     placed.push(first[1]);
   }
-  // While a live figure is dragged (api.quick), a label keeps the place it took last time
-  // around its point: measuring text boxes forces a layout, too slow for every move.
-  function placeAgain(api, key, t, q, off, placed) {
-    var s = api.spots[key];
-    if (api.quick && s) {
-      t.setAttribute("x", q[0] + s[0]); t.setAttribute("y", q[1] + s[1]); t.setAttribute("text-anchor", s[2]);
-      return;
-    }
-    place(t, q, off, placed);
-    api.spots[key] = [+t.getAttribute("x") - q[0], +t.getAttribute("y") - q[1], t.getAttribute("text-anchor")];
-  }
   // The point of frame f in a flat array with `dim` numbers per frame (null: no pose).
   function at(arr, f, dim) {
     // A fixed point is stored once, not once per frame.
@@ -129,7 +118,8 @@
                                      "text-anchor": left ? "end" : "start"}).textContent = m[1];
     }
     stills();
-    var api = {data: d, svg: svg, after: null, quick: false, spots: {}, frame: function () { return +div.getAttribute("data-frame") || 0; },
+    // api: the hooks of a live figure (book/_static/mech/live.js)
+    var api = {data: d, svg: svg, place: place, frame: function () { return +div.getAttribute("data-frame") || 0; },
                redraw: function () { stills(); draw(api.frame()); }};
     function draw(f) {
       ["ghost", "link", "top"].forEach(function (k) { layer[k].textContent = ""; });
@@ -160,7 +150,7 @@
         if (d.labels) {
           var t = el(layer.top, "text", {x: q[0] + 0.7 * u, y: q[1] - 0.7 * u, class: "mf-label"});
           t.textContent = d.names[i];
-          placeAgain(api, i, t, q, 0.7 * u, placed);
+          api.place(t, q, 0.7 * u, placed, i);
         }
       });
       if (api.after) api.after(f);
@@ -219,8 +209,8 @@
       d.trace.forEach(function (i, k) {
         var all = [], done = [];
         for (var h = 0; h < d.n; h++) { all.push(xyz(d.P[i], h)); if (h <= f) done.push(all[h]); }
-        // a live figure's finer curve (unit vectors times the grid step, as d.P)
-        if (d.curves && d.curves[k]) all = d.curves[k].map(function (q) { return q && [q[0] * s, q[1] * s, q[2] * s]; });
+        // a live figure's finer curve (grid units, as d.P)
+        if (d.curves && d.curves[k]) all = d.curves[k].map(function (q) { return q && q.map(function (v) { return v * s; }); });
         line(all, "mf-path-all");
         line(done, "mf-path");
       });
@@ -236,22 +226,13 @@
         if (d.labels) {
           var t = el(g, "text", {x: r[0] + 30, y: r[1] - 30, class: "mf-label3"});
           t.textContent = d.names[i];
-          placeAgain(api, i, t, r, 30, placed);
+          api.place(t, r, 30, placed, i);
         }
       });
       if (api.after) api.after(f);
     }
-    var api = {data: d, svg: svg, after: null, quick: false, spots: {}, project: project, frame: function () { return frame; },
-               redraw: function () { draw(frame); },
-               // the point of the unit sphere under a screen point (user units), nearest the reader
-               unproject: function (x, y) {
-                 var X = x / K, Y = -y / K, w = Math.sqrt(Math.max(0, 1 - X * X - Y * Y)), n = Math.hypot(X, Y, w);
-                 X /= n; Y /= n; w /= n;
-                 var cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
-                 // invert project: X = x', Y = sp y' + cp z, w = -(cp y' - sp z) with y' = -sy p0 + cy p1
-                 var yv = sp * Y - cp * w, z = cp * Y + sp * w;
-                 return [cy * X - sy * yv, sy * X + cy * yv, z];
-               }};
+    var api = {data: d, svg: svg, place: place, project: project, frame: function () { return frame; },
+               redraw: function () { draw(frame); }, view: function () { return [yaw, pitch, K]; }};
     var drag = null;
     svg.addEventListener("pointerdown", function (e) {
       drag = [e.clientX, e.clientY];
@@ -278,7 +259,8 @@
   function live(div, d, api) {
     if (!d.live || d.live.type === "none") return;
     var root = document.documentElement.getAttribute("data-content_root");
-    if (root === null) return; // not a page of the book (a notebook): stays a recording
+    // not a page of the book (a notebook): the figure stays a recording
+    if (root === null) return;
     import(root + "_static/mech/live.js").then(function (m) { m.attach(div, d, api); });
   }
 

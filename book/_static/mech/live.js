@@ -100,6 +100,18 @@ export async function attach(div, d, api) {
     });
     if (f !== last) { last = f; if (!msg.textContent.startsWith("Cannot take")) msg.textContent = fig.message(f); }
   };
+  // While a handle is held, a label keeps the place it took last time around its point:
+  // measuring text boxes forces a layout, too slow for every move.
+  const place = api.place, spots = {};
+  api.place = (t, q, off, placed, key) => {
+    const s = spots[key];
+    if (api.quick && s) {
+      t.setAttribute("x", q[0] + s[0]); t.setAttribute("y", q[1] + s[1]); t.setAttribute("text-anchor", s[2]);
+      return;
+    }
+    place(t, q, off, placed);
+    spots[key] = [+t.getAttribute("x") - q[0], +t.getAttribute("y") - q[1], t.getAttribute("text-anchor")];
+  };
   let held = null;
   dots.forEach((dot, k) => {
     dot.addEventListener("pointerdown", (e) => {
@@ -334,6 +346,18 @@ const cross = (u, v) => [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u
 const angleOf = (u, v) => Math.atan2(Math.hypot(...cross(u, v)), dot(u, v));
 const tangent = (at, to) => { const k = dot(at, to); return [to[0] - k * at[0], to[1] - k * at[1], to[2] - k * at[2]]; };
 
+/** The point of the unit sphere under the user point (x, y) of a 3-D view, on the reader's
+ *  side: the inverse of the player's projection with its yaw, pitch and scale K. */
+function unproject([yaw, pitch, K], x, y) {
+  let X = x / K, Y = -y / K, w = Math.sqrt(Math.max(0, 1 - X * X - Y * Y));
+  const n = Math.hypot(X, Y, w);
+  X /= n; Y /= n; w /= n;
+  const cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
+  // the projection: X = x', Y = sp y' + cp z, w = sp z - cp y', with x' = cy p0 + sy p1, y' = -sy p0 + cy p1
+  const yv = sp * Y - cp * w, z = cp * Y + sp * w;
+  return [cy * X - sy * yv, sy * X + cy * yv, z];
+}
+
 function sphericalFourBar(div, d, api, spec, S) {
   const [nA, nB, nC, nD, nP] = spec.names.map((n) => d.names.indexOf(n));
   const state = { a: spec.a, b: spec.b, c: spec.c, d: spec.d, branch: spec.branch, r: spec.coupler[0], g: spec.coupler[1] };
@@ -394,7 +418,7 @@ function sphericalFourBar(div, d, api, spec, S) {
     return q[2] < 0 ? null : q; // only handles on the near side of the sphere
   };
   fig.fromDrag = (name, x, y, f) => {
-    const w = api.unproject(x, y), i = d.names.indexOf(name);
+    const w = unproject(api.view(), x, y), i = d.names.indexOf(name);
     const a0 = A();
     if (i === nD) return { d: angleOf(a0, w) };
     if (i === nB) return { a: angleOf(a0, w) };
