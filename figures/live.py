@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-__all__ = ["fourbar", "slider_crank", "spherical_fourbar", "none", "readout", "controls"]
+__all__ = ["fourbar", "slider_crank", "guide_bar", "spherical_fourbar", "none", "readout", "controls"]
 
 CURVE_POINTS = 720  # poses of the coupler curve drawn by a live figure
 
@@ -91,12 +91,28 @@ def slider_crank(a, b, e, theta, *, branch=1, names="ABC"):
             "theta": _angles(theta), "names": list(names), "curve": CURVE_POINTS}
 
 
+def guide_bar(a, d, theta, *, reach=1.1, names="ABDE"):
+    """A live guide-bar: crank AB about A = 0, the block B sliding on the guide through
+    D = (d, 0); the guide drawn to E at `reach` times its shortest length a + d.
+
+    Examples
+    --------
+    >>> readout(guide_bar(150, 300, [0.0]))["limits"]
+    'limit positions: swing 60.0°, K = 2.000'
+    """
+    from mech.planar import GuideBar
+
+    GuideBar(a, d)
+    return {"type": "guidebar", "a": float(a), "d": float(d), "theta": _angles(theta), "names": list(names),
+            "reach": float(reach), "branch": 1}
+
+
 def spherical_fourbar(linkage, theta, *, names="ABCDP", curve=False):
     """A live spherical four-bar from a `mech.spherical.SphericalFourBar`.
 
     `theta`: the input angle of each frame (one angle for a still view). `names`: the
-    view's names of A, B, C, D and the coupler point. `curve`: draw the coupler curve in a
-    view that does not trace it.
+    view's names of A, B, C, D and the coupler point (four names: no coupler point).
+    `curve`: draw the coupler curve in a view that does not trace it.
 
     Examples
     --------
@@ -111,9 +127,17 @@ def spherical_fourbar(linkage, theta, *, names="ABCDP", curve=False):
             "names": list(names), "curve": CURVE_POINTS, "drawCurve": bool(curve)}
 
 
-def none(why):
-    """A figure that stays a recording, with `why` (e.g. no kernel in the page for a six-bar)."""
-    return {"type": "none", "why": str(why)}
+def none(what):
+    """A figure that stays a recording because the page has no kernel for `what` (a six-bar,
+    Jansen's linkage, ...); the figure says so under its controls.
+
+    Examples
+    --------
+    >>> none("six-bar linkages")["why"]
+    'Recorded poses: the page has no kernel for six-bar linkages yet, so this figure cannot be changed here.'
+    """
+    return {"type": "none", "why": f"Recorded poses: the page has no kernel for {what} yet, so this figure cannot be "
+                                   "changed here."}
 
 
 def _deg(x):
@@ -148,6 +172,13 @@ def readout(spec):
                 "limits": (f"limit positions \u03b8 = {_deg(lim.theta_extended)}, {_deg(lim.theta_folded)} "
                            f"(stroke {lim.stroke:.2f}, K = {lim.time_ratio:.3f})"),
                 "transmission": f"smallest transmission angle {_deg(S.min_transmission_angle()[0])}"}
+    if kind == "guidebar":
+        from mech.planar import GuideBar
+
+        G = GuideBar(spec["a"], spec["d"])
+        right = "transmission angle 90.0\u00b0 throughout (the block pushes at right angles to the guide)"
+        return {"kind": "oscillating guide-bar (the guide swings)",
+                "limits": f"limit positions: swing {_deg(G.swing())}, K = {G.time_ratio():.3f}", "transmission": right}
     if kind == "sphfourbar":
         from mech.spherical import SphericalFourBar, classify
 
@@ -198,6 +229,7 @@ _CSS = ("<style>.mech-live{margin-top:.3em}"
 _FIELDS = {
     "fourbar": [("a", "crank a"), ("b", "coupler b"), ("c", "rocker c"), ("d", "ground d"), ("p", "coupler p"), ("q", "coupler q")],
     "slidercrank": [("a", "crank a"), ("b", "rod b"), ("e", "offset e")],
+    "guidebar": [("a", "crank a"), ("d", "ground d")],
     "sphfourbar": [("a", "a (\u00b0)"), ("b", "b (\u00b0)"), ("c", "c (\u00b0)"), ("d", "d (\u00b0)"),
                    ("r", "coupler r (\u00b0)"), ("g", "coupler \u03b3 (\u00b0)")],
 }
@@ -217,6 +249,9 @@ def _values(spec):
         longest = max(spec["a"], spec["b"], abs(spec["e"]))
         return ({"a": spec["a"], "b": spec["b"], "e": spec["e"]},
                 {"a": (0.0, 2 * longest), "b": (0.0, 2 * longest), "e": (-2 * longest, 2 * longest)}, longest / 400)
+    if kind == "guidebar":
+        longest = max(spec["a"], spec["d"])
+        return {"a": spec["a"], "d": spec["d"]}, {"a": (0.0, 2 * longest), "d": (0.0, 2 * longest)}, longest / 400
     r, g = spec["coupler"]
     values = {k: math.degrees(spec[k]) for k in "abcd"} | {"r": math.degrees(r), "g": math.degrees(g)}
     return values, {k: (0.0, 180.0) for k in "abcdr"} | {"g": (-180.0, 180.0)}, 0.1

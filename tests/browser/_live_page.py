@@ -1,7 +1,7 @@
 """A page of live figures for the browser test, written from the figure functions themselves.
 
 The page holds a four-bar with its coupler point (the player of the book's first moving
-figure), a crank-rocker with both branches, an offset slider-crank and a spherical four-bar
+figure), an offset slider-crank, a guide-bar and a spherical four-bar
 on its sphere; next to it, ``_static/mech`` and ``_static/kernels`` as the book ships them.
 ``data-content_root`` is set as Sphinx sets it, so the player finds the modules as in the book.
 """
@@ -19,7 +19,7 @@ def figures():
     """The HTML of each live figure on the page, by name."""
     from figures import live
     from figures.animate import animate, great_circle, view3d
-    from mech.planar import FourBar, SliderCrank
+    from mech.planar import FourBar, GuideBar, SliderCrank
     from mech.spherical import SphericalFourBar
 
     theta = np.radians(np.arange(0.0, 360.0, 3.0))
@@ -33,6 +33,11 @@ def figures():
     out["slidercrank"] = animate({"A": 0, "B": 30.0 * np.exp(1j * turn), "C": sc.x + 20j}, [("A", "B"), ("B", "C")],
                                  ground=["A"], blocks=["C"], lines=[[-10 + 20j, 150 + 20j]], trace=["C"],
                                  inputs=np.degrees(turn), live=live.slider_crank(30, 100, 20, turn)).data
+    gb = GuideBar(150.0, 300.0).solve(turn)
+    out["guidebar"] = animate({"A": 0, "D": 300.0, "B": gb.B, "E": 300.0 + 495.0 * np.exp(1j * gb.psi)},
+                              [("A", "B"), ("D", "E")], ground=["A", "D"], blocks=[("B", "E")], trace=["E"],
+                              inputs=np.degrees(turn), live=live.guide_bar(150.0, 300.0, turn))
+    out["guidebar"] = out["guidebar"].data
     sph = SphericalFourBar(0.3, 0.9, 0.7, 1.0, coupler=(0.4, 0.6))
     go = sph.solve(np.radians(np.arange(0.0, 360.0, 3.0)))
     out["spherical"] = view3d({"A": sph.A, "D": sph.D, "B": go.B, "C": go.C, "P": go.P},

@@ -12,10 +12,11 @@ const DEG = Math.PI / 180;
 /** Wire the live figure `div` (data `d`, player hooks `api`). */
 export async function attach(div, d, api) {
   const spec = d.live;
-  const kind = { fourbar: planarFourBar, slidercrank: sliderCrank, sphfourbar: sphericalFourBar }[spec.type];
+  const kind = { fourbar: planarFourBar, slidercrank: sliderCrank, guidebar: guideBar, sphfourbar: sphericalFourBar }[spec.type];
   if (!kind) return;
   const layer = Object.assign({}, await import(spec.type === "sphfourbar" ? "./spherical.js" : "./planar.js"));
-  if (spec.type === "slidercrank") layer.kernel = await import("../kernels/slider_crank.js");
+  if (spec.type === "slidercrank" || spec.type === "guidebar") layer.kernel = await import("../kernels/slider_crank.js");
+  if (spec.type === "guidebar") layer.core = await import("./core.js");
   const fig = kind(div, d, api, spec, layer);
   const box = div.querySelector(".mech-live");
   const msg = box.querySelector(".mech-live-msg");
@@ -339,6 +340,55 @@ function sliderCrank(div, d, api, spec, L) {
   return fig;
 }
 
+// --- oscillating or rotating guide-bar -------------------------------------------------------
+
+function guideBar(div, d, api, spec, L) {
+  const [nA, nB, nD, nE] = spec.names.map((n) => d.names.indexOf(n));
+  const state = { a: spec.a, d: spec.d, branch: 1 };
+  const theta = Float64Array.from(spec.theta);
+  const g = (x, y) => [x / d.grid, -y / d.grid];
+  const fig = { state, handleSize: 1.1 * d.unit, handles: [nB, nD].filter((i) => i >= 0).map((i) => d.names[i]) };
+  let first = true;
+  fig.shown = () => ({ a: state.a, d: state.d });
+  fig.fromField = (k, v) => ({ [k]: v });
+  fig.compute = () => {
+    const a = L.core.positiveLength("a", state.a), dd = L.core.positiveLength("d", state.d);
+    // as mech.planar.GuideBar: an oscillating guide only
+    if (!(a < dd)) throw new L.LinkageInputError(`Expected \`a\` < \`d\` = ${dd} for an oscillating guide, got ${a}`);
+    const reach = spec.reach * (a + dd), n = theta.length, B = new Array(2 * n), E = new Array(2 * n);
+    for (let f = 0; f < n; f++) {
+      const [psi, , Bx, By] = L.kernel.guide_bar_position(a, dd, theta[f]);
+      [B[2 * f], B[2 * f + 1]] = g(Bx, By);
+      [E[2 * f], E[2 * f + 1]] = g(dd + reach * Math.cos(psi), reach * Math.sin(psi));
+    }
+    d.P[nB] = B;
+    if (nE >= 0) d.P[nE] = E;
+    if (nA >= 0) d.P[nA] = g(0, 0);
+    if (nD >= 0) d.P[nD] = g(dd, 0);
+    // a helper point on the guide sets the block's direction: the guide's end E serves
+    if (first) { d.marks = []; div.querySelectorAll(".mech-mark").forEach((b) => { b.disabled = true; }); first = false; }
+  };
+  fig.message = () => "";
+  fig.readout = () => {
+    const { a, d: dd } = state;
+    const [swing] = L.kernel.guide_bar_swing(a, dd);
+    return { kind: "oscillating guide-bar (the guide swings)",
+      limits: `limit positions: swing ${deg(swing)}, K = ${((Math.PI + swing) / (Math.PI - swing)).toFixed(3)}`,
+      transmission: "transmission angle 90.0\u00b0 throughout (the block pushes at right angles to the guide)" };
+  };
+  fig.where = (name, f) => {
+    const arr = d.P[d.names.indexOf(name)], j = arr.length === 2 ? 0 : 2 * f;
+    return arr[j] === null ? null : [arr[j], arr[j + 1]];
+  };
+  fig.fromDrag = (name, gx, gy) => {
+    const x = gx * d.grid, y = -gy * d.grid, i = d.names.indexOf(name);
+    if (i === nB) return { a: Math.hypot(x, y) || state.a };
+    if (i === nD) return { d: Math.hypot(x, y) || state.d };
+    return null;
+  };
+  return fig;
+}
+
 // --- spherical four-bar -----------------------------------------------------------------------
 
 const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
@@ -365,7 +415,7 @@ function sphericalFourBar(div, d, api, spec, S) {
   const s = d.step;
   const grid = (p) => (p[0] === p[0] ? [p[0] / s, p[1] / s, p[2] / s] : [null, null, null]);
   const fig = { state, handleSize: 26, handles: [nB, nC, nD, nP].filter((i) => i >= 0).map((i) => d.names[i]) };
-  let pose = null, linkage = null, curve = null, first = true;
+  let pose = null, linkage = null, curve = null, first = true, hadGround = false, grids = 0;
   if (spec.drawCurve && nP >= 0 && d.trace.indexOf(nP) < 0) d.trace = d.trace.concat([nP]);
   fig.shown = () => ({ a: state.a / DEG, b: state.b / DEG, c: state.c / DEG, d: state.d / DEG, r: state.r / DEG, g: state.g / DEG });
   fig.fromField = (k, v) => ({ [k]: v * DEG });
@@ -384,9 +434,21 @@ function sphericalFourBar(div, d, api, spec, S) {
     curve = linkage.couplerCurve(spec.curve);
     d.curves = d.trace.map((i) => (i === nP ? curve.P.map((p) => (p[0] === p[0] ? grid(p) : null)) : null));
     if (first) {
-      // still curves drawn for the first linkage (its coupler curves, its ground arc) are stale now
-      d.still = d.still.filter((c) => c.c === "mf-grid" || c.c === "mf-axis");
+      // still curves of the first linkage (its coupler curves, their twins) are stale now
+      hadGround = d.still.some((c) => c.c === "mf-fixed");
+      d.still = d.still.filter((c) => c.c === "mf-grid");
+      grids = d.still.length;
       first = false;
+    }
+    if (hadGround) {
+      // the ground arc A D, as a still curve in grid units
+      const a0 = A(), D = frameD(), w = angleOf(a0, D), p = [];
+      for (let k = 0; k <= 24; k++) {
+        const t = k / 24, fa = Math.sin((1 - t) * w) / Math.sin(w), fb = Math.sin(t * w) / Math.sin(w);
+        p.push(...grid([fa * a0[0] + fb * D[0], fa * a0[1] + fb * D[1], fa * a0[2] + fb * D[2]]));
+      }
+      d.still.length = grids;
+      d.still.push({ p, c: "mf-fixed" });
     }
   };
   function frameD() {
