@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-__all__ = ["fourbar", "slider_crank", "guide_bar", "spherical_fourbar", "none", "readout", "controls"]
+__all__ = ["fourbar", "slider_crank", "guide_bar", "hooke", "spherical_fourbar", "none", "readout", "controls"]
 
 CURVE_POINTS = 720  # poses of the coupler curve drawn by a live figure
 
@@ -107,6 +107,23 @@ def guide_bar(a, d, theta, *, reach=1.1, names="ABDE"):
             "reach": float(reach), "branch": 1}
 
 
+def hooke(alpha, theta, *, arm=0.45, shaft=1.75):
+    """A live Hooke's joint (universal joint) of shaft angle `alpha`, in the view of
+    ``book/spatial/universal-joint.md``: input yoke at ``-arm`` on the z axis, output shaft
+    ``shaft`` long along (0, sin alpha, cos alpha), the output yoke at ``arm`` on it.
+
+    Examples
+    --------
+    >>> readout(hooke(0.5, [0.0]))["limits"]
+    'speed ratio ω₃/ω₁ from 0.878 to 1.139'
+    """
+    from mech.spatial import hooke_output
+
+    hooke_output(0.0, alpha)
+    return {"type": "hooke", "alpha": float(alpha), "theta": _angles(theta), "arm": float(arm), "shaft": float(shaft),
+            "branch": 1}
+
+
 def spherical_fourbar(linkage, theta, *, names="ABCDP", curve=False):
     """A live spherical four-bar from a `mech.spherical.SphericalFourBar`.
 
@@ -179,6 +196,15 @@ def readout(spec):
         right = "transmission angle 90.0\u00b0 throughout (the block pushes at right angles to the guide)"
         return {"kind": "oscillating guide-bar (the guide swings)",
                 "limits": f"limit positions: swing {_deg(G.swing())}, K = {G.time_ratio():.3f}", "transmission": right}
+    if kind == "hooke":
+        from mech.spatial import hooke_output, hooke_ratio
+
+        alpha, t1 = spec["alpha"], np.asarray(spec["theta"])
+        lo, hi = float(hooke_ratio(np.pi / 2, alpha)), float(hooke_ratio(0.0, alpha))
+        lead = float(np.max(np.abs(hooke_output(t1, alpha) - t1)))
+        return {"kind": f"Hooke's joint, shafts at {_deg(alpha)}",
+                "limits": f"speed ratio \u03c9\u2083/\u03c9\u2081 from {lo:.3f} to {hi:.3f}",
+                "transmission": f"the output leads or lags by up to {_deg(lead)}"}
     if kind == "sphfourbar":
         from mech.spherical import SphericalFourBar, classify
 
@@ -230,6 +256,7 @@ _FIELDS = {
     "fourbar": [("a", "crank a"), ("b", "coupler b"), ("c", "rocker c"), ("d", "ground d"), ("p", "coupler p"), ("q", "coupler q")],
     "slidercrank": [("a", "crank a"), ("b", "rod b"), ("e", "offset e")],
     "guidebar": [("a", "crank a"), ("d", "ground d")],
+    "hooke": [("alpha", "shaft angle \u03b1 (\u00b0)")],
     "sphfourbar": [("a", "a (\u00b0)"), ("b", "b (\u00b0)"), ("c", "c (\u00b0)"), ("d", "d (\u00b0)"),
                    ("r", "coupler r (\u00b0)"), ("g", "coupler \u03b3 (\u00b0)")],
 }
@@ -249,6 +276,8 @@ def _values(spec):
         longest = max(spec["a"], spec["b"], abs(spec["e"]))
         return ({"a": spec["a"], "b": spec["b"], "e": spec["e"]},
                 {"a": (0.0, 2 * longest), "b": (0.0, 2 * longest), "e": (-2 * longest, 2 * longest)}, longest / 400)
+    if kind == "hooke":
+        return {"alpha": math.degrees(spec["alpha"])}, {"alpha": (0.0, 89.0)}, 0.1
     if kind == "guidebar":
         longest = max(spec["a"], spec["d"])
         return {"a": spec["a"], "d": spec["d"]}, {"a": (0.0, 2 * longest), "d": (0.0, 2 * longest)}, longest / 400

@@ -45,6 +45,19 @@ def figures():
                               still=[(great_circle([0, 0, 1]), "grid")], sphere=True, trace=["P"],
                               inputs=np.degrees(np.arange(0.0, 360.0, 3.0)), yaw=20.0, pitch=50.0,
                               live=live.spherical_fourbar(sph, np.radians(np.arange(0.0, 360.0, 3.0)))).data
+    alpha, t1 = np.radians(30.0), np.radians(np.arange(0.0, 360.0, 3.0))
+    from mech.spatial import hooke_output
+
+    t3 = hooke_output(t1, alpha)
+    z_out = np.array([0.0, np.sin(alpha), np.cos(alpha)])
+    e1 = np.stack([-np.sin(t1), np.cos(t1), np.zeros_like(t1)], -1)
+    e3 = np.stack([np.cos(t3), np.cos(alpha) * np.sin(t3), -np.sin(alpha) * np.sin(t3)], -1)
+    k1, k3 = np.array([0.0, 0.0, -0.45]), 0.45 * z_out
+    out["hooke"] = view3d({"in": [0.0, 0.0, -1.75], "k1": k1, "a1": k1 + e1, "b1": k1 - e1, "e1": e1, "-e1": -e1,
+                           "out": 1.75 * z_out, "k3": k3, "a3": k3 + e3, "b3": k3 - e3, "e3": e3, "-e3": -e3},
+                          links=[("in", "k1"), ("k1", "a1"), ("a1", "e1"), ("k1", "b1"), ("b1", "-e1"), ("e1", "-e1"),
+                                 ("out", "k3"), ("k3", "a3"), ("a3", "e3"), ("k3", "b3"), ("b3", "-e3"), ("e3", "-e3")],
+                          trace=["e3"], labels=False, inputs=np.degrees(t1), live=live.hooke(alpha, t1)).data
     return out
 
 

@@ -87,6 +87,7 @@ CHANGES = [
     ("fourbar", FOURBAR, "d", 10, True), ("fourbar", FOURBAR, "p", -15, False), ("fourbar", FOURBAR, "q", 25, False),
     ("slidercrank", SLIDER, "a", 90, True), ("slidercrank", SLIDER, "b", 45, True), ("slidercrank", SLIDER, "e", 80, True),
     ("guidebar", GUIDE, "a", 200, False), ("guidebar", GUIDE, "d", 250, False),
+    ("hooke", {"alpha": 30.0}, "alpha", 60, True),
     ("spherical", SPHERE, "a", 60, True), ("spherical", SPHERE, "b", 25, True), ("spherical", SPHERE, "c", 10, True),
     ("spherical", SPHERE, "d", 20, True), ("spherical", SPHERE, "r", 50, False), ("spherical", SPHERE, "g", -90, False),
 ]

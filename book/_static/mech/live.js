@@ -12,9 +12,12 @@ const DEG = Math.PI / 180;
 /** Wire the live figure `div` (data `d`, player hooks `api`). */
 export async function attach(div, d, api) {
   const spec = d.live;
-  const kind = { fourbar: planarFourBar, slidercrank: sliderCrank, guidebar: guideBar, sphfourbar: sphericalFourBar }[spec.type];
+  const kind = { fourbar: planarFourBar, slidercrank: sliderCrank, guidebar: guideBar, sphfourbar: sphericalFourBar,
+    hooke: hookeJoint }[spec.type];
   if (!kind) return;
-  const layer = Object.assign({}, await import(spec.type === "sphfourbar" ? "./spherical.js" : "./planar.js"));
+  const layer = Object.assign({}, await import(spec.type === "sphfourbar" ? "./spherical.js"
+    : spec.type === "hooke" ? "./core.js" : "./planar.js"));
+  if (spec.type === "hooke") layer.kernel = await import("../kernels/hooke.js");
   if (spec.type === "slidercrank" || spec.type === "guidebar") layer.kernel = await import("../kernels/slider_crank.js");
   if (spec.type === "guidebar") layer.core = await import("./core.js");
   const fig = kind(div, d, api, spec, layer);
@@ -386,6 +389,54 @@ function guideBar(div, d, api, spec, L) {
     if (i === nD) return { d: Math.hypot(x, y) || state.d };
     return null;
   };
+  return fig;
+}
+
+// --- Hooke's joint ------------------------------------------------------------------------
+
+function hookeJoint(div, d, api, spec, L) {
+  const state = { alpha: spec.alpha, branch: 1 };
+  const t1 = Float64Array.from(spec.theta);
+  const idx = Object.fromEntries(d.names.map((n, i) => [n, i]));
+  const c0 = d.c0, s = d.step;
+  const grid = (p) => [(p[0] - c0[0]) / s, (p[1] - c0[1]) / s, (p[2] - c0[2]) / s];
+  const fig = { state, handleSize: 0, handles: [] };
+  let lead = 0;
+  fig.shown = () => ({ alpha: state.alpha / DEG });
+  fig.fromField = (k, v) => ({ alpha: v * DEG });
+  fig.compute = () => {
+    const alpha = L.finiteNumber("alpha", state.alpha);
+    // as mech.spatial.hooke_output: a shaft angle in [0, pi/2)
+    if (!(alpha >= 0 && alpha < Math.PI / 2)) {
+      throw new L.LinkageInputError(`Expected \`alpha\` in [0, pi/2) (0 to 90 degrees), got ${alpha}`);
+    }
+    const ca = Math.cos(alpha), sa = Math.sin(alpha), r = spec.arm, z = [0, sa, ca];
+    const put = (name, fn) => { if (name in idx) d.P[idx[name]] = fn; };
+    const moving = { e3: [], "-e3": [], a3: [], b3: [] };
+    lead = 0;
+    for (let f = 0; f < t1.length; f++) {
+      const t3 = L.kernel.hooke_output_angle(t1[f], alpha);
+      lead = Math.max(lead, Math.abs(t3 - t1[f]));
+      const e3 = [Math.cos(t3), ca * Math.sin(t3), -sa * Math.sin(t3)];
+      const k3 = z.map((v) => r * v);
+      moving.e3.push(...grid(e3));
+      moving["-e3"].push(...grid(e3.map((v) => -v)));
+      moving.a3.push(...grid(k3.map((v, k) => v + e3[k])));
+      moving.b3.push(...grid(k3.map((v, k) => v - e3[k])));
+    }
+    Object.entries(moving).forEach(([name, arr]) => put(name, arr));
+    put("out", grid(z.map((v) => spec.shaft * v)));
+    put("k3", grid(z.map((v) => r * v)));
+  };
+  fig.message = () => "";
+  fig.readout = () => {
+    const lo = L.kernel.hooke_ratio_terms(Math.PI / 2, state.alpha)[0], hi = L.kernel.hooke_ratio_terms(0.0, state.alpha)[0];
+    return { kind: `Hooke's joint, shafts at ${deg(state.alpha)}`,
+      limits: `speed ratio \u03c9\u2083/\u03c9\u2081 from ${lo.toFixed(3)} to ${hi.toFixed(3)}`,
+      transmission: `the output leads or lags by up to ${deg(lead)}` };
+  };
+  fig.where = () => null;
+  fig.fromDrag = () => null;
   return fig;
 }
 
