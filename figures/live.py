@@ -145,15 +145,16 @@ def spherical_fourbar(linkage, theta, *, names="ABCDP", curve=False):
 
 
 def none(what):
-    """A figure that stays a recording because the page has no kernel for `what` (a six-bar,
-    Jansen's linkage, ...); the figure says so under its controls.
+    """A figure that stays a recording because the page cannot solve `what` yet (six-bars,
+    Jansen's linkage, ...: no hand-written layer composes their kernels in the page); the
+    figure says so under its controls.
 
     Examples
     --------
     >>> none("six-bar linkages")["why"]
-    'Recorded poses: the page has no kernel for six-bar linkages yet, so this figure cannot be changed here.'
+    'Recorded poses: the page cannot solve six-bar linkages yet, so this figure cannot be changed here.'
     """
-    return {"type": "none", "why": f"Recorded poses: the page has no kernel for {what} yet, so this figure cannot be "
+    return {"type": "none", "why": f"Recorded poses: the page cannot solve {what} yet, so this figure cannot be "
                                    "changed here."}
 
 

@@ -39,7 +39,7 @@ def test_fourbar_player_carries_spec_controls_and_readout():
 
 def test_none_says_why_and_loads_nothing():
     out = view3d({"P": [0.0, 0.0, 1.0]}, live=live.none("six-bar linkages")).data
-    assert "the page has no kernel for six-bar linkages yet" in out
+    assert "the page cannot solve six-bar linkages yet" in out
     assert _data(out)["live"]["type"] == "none"
 
 
