@@ -291,3 +291,78 @@ def test_drag_frame_time(page, name, handle, record_property):
 
 def test_nothing_from_outside_and_no_errors(page):
     assert page.problems == []
+
+
+def _point(page, name, point, frame):
+    """The drawn position of `point` at `frame` after a change (the page's own numbers)."""
+    return page.evaluate("""([name, point, f]) => {
+      const d = document.querySelector('#' + name + ' .mech-fig').mechLive.data;
+      const arr = d.P[d.names.indexOf(point)];
+      if (d.kind === '3d') return [0, 1, 2].map((k) => arr[3 * f + k] * d.step + d.c0[k]);
+      return [arr[2 * f] * d.grid, -arr[2 * f + 1] * d.grid];
+    }""", [name, point, frame])
+
+
+def test_changed_poses_agree_with_the_package(page):
+    """After a change, the page's poses (JS kernels) are the package's (NumPy) at the frame's angle."""
+    from mech.planar import FourBar, GuideBar, SliderCrank
+    from mech.spatial import hooke_output
+    from mech.spherical import SphericalFourBar
+
+    f = 17
+    # the frames' angles as the page has them (7 decimals of a radian)
+    angle = lambda name: page.evaluate(  # noqa: E731
+        "([name, f]) => document.querySelector('#' + name + ' .mech-fig').mechLive.data.live.theta[f]", [name, f])
+    theta = angle("fourbar")
+    reset(page, "fourbar", dict(FOURBAR, a=12.5, d=33.0, p=-5.0, q=8.0))
+    ref = FourBar(12.5, 40, 30, 33.0, coupler=(-5.0, 8.0)).solve(theta)
+    for point, z in (("B", ref.B), ("C", ref.C), ("P", ref.P)):
+        assert abs(complex(*_point(page, "fourbar", point, f)) - complex(z)) < 1e-12 * 40
+    turn = angle("slidercrank")
+    reset(page, "slidercrank", dict(SLIDER, a=35.0, e=-10.0))
+    ref = SliderCrank(35.0, 100, -10.0).solve(turn)
+    assert abs(complex(*_point(page, "slidercrank", "C", f)) - complex(ref.C)) < 1e-12 * 100
+    reset(page, "guidebar", {"a": 120.0, "d": 300.0})
+    ref = GuideBar(120.0, 300.0).solve(turn)
+    assert abs(complex(*_point(page, "guidebar", "B", f)) - complex(ref.B)) < 1e-12 * 300
+    E = complex(*_point(page, "guidebar", "E", f))
+    assert abs(np.angle(E - 300.0) - float(ref.psi)) < 1e-12
+    reset(page, "spherical", dict(SPHERE, a=20.0, r=30.0, g=-40.0, branch=-1))
+    ref = SphericalFourBar(np.radians(20.0), 0.9, 0.7, 1.0, branch=-1,
+                           coupler=(np.radians(30.0), np.radians(-40.0))).solve(angle("spherical"))
+    for point, v in (("B", ref.B), ("C", ref.C), ("P", ref.P)):
+        assert np.abs(np.array(_point(page, "spherical", point, f)) - v).max() < 1e-12
+    reset(page, "hooke", {"alpha": 50.0})
+    t3 = float(hooke_output(angle("hooke"), np.radians(50.0)))
+    e3 = [np.cos(t3), np.cos(np.radians(50.0)) * np.sin(t3), -np.sin(np.radians(50.0)) * np.sin(t3)]
+    assert np.abs(np.array(_point(page, "hooke", "e3", f)) - e3).max() < 1e-12
+    for name, start in (("fourbar", FOURBAR), ("slidercrank", SLIDER), ("guidebar", GUIDE), ("spherical", SPHERE),
+                        ("hooke", {"alpha": 30.0})):
+        reset(page, name, start)
+
+
+def test_spherical_drag_through_change_point_keeps_branch(page):
+    """d from 57 to 20 degrees passes the change point a + b = c + d (d = 0.5 rad): C moves on
+    smoothly on mech.spherical.SphericalFourBar's branch +1; at the change point itself the
+    page says it does not solve it yet and keeps the last linkage."""
+    from mech.spherical import SphericalFourBar
+
+    reset(page, "spherical", SPHERE)
+    page.locator("#spherical input.mech-slider").evaluate(
+        "(s) => { s.value = '20'; s.dispatchEvent(new Event('input', {bubbles: true})); }")   # 60 degrees
+    at = page.evaluate("() => document.querySelector('#spherical .mech-fig').mechLive.data.live.theta[20]")
+    path = []
+    for d in np.linspace(57.0, 20.0, 149):
+        set_field(page, "spherical", "d", round(float(d), 6), "number")
+        s = state(page, "spherical")
+        assert s["branch"] == "branch +1" and "NaN" not in s["msg"] + s["out"]
+        C = np.array(_point(page, "spherical", "C", 20))
+        ref = SphericalFourBar(0.3, 0.9, 0.7, np.radians(round(float(d), 6)), branch=1,
+                               coupler=(0.4, 0.6)).solve(at).C
+        assert np.abs(C - ref).max() < 1e-12, (d, C, ref)
+        path.append(C)
+    steps = np.linalg.norm(np.diff(path, axis=0), axis=1)
+    assert steps.max() < 5 * np.median(steps)
+    set_field(page, "spherical", "d", float(np.degrees(0.5)), "number")   # a + b = c + d: a change point
+    assert "not solved in the page yet" in state(page, "spherical")["msg"]
+    reset(page, "spherical", SPHERE)
