@@ -6,10 +6,12 @@ limit positions); `view3d` draws points, links, great arcs and curves in space, 
 orthographic view the reader turns by dragging, optionally moving too. `animate_linkage`
 and `great_circle` are shortcuts for a `mech.planar.Linkage` and for the sphere.
 
-Every pose is computed by `mech` in the notebook; the browser only draws. The output is
+Every pose is computed by `mech` in the notebook; the browser draws them (and a live
+figure, ``live=`` from `figures.live`, re-solves its linkage in the page). The output is
 an `IPython.display.HTML` object holding an inline SVG, the poses as compact JSON and a
-small script of our own (``figures/mech_anim.js``, inlined; no file is fetched, so the page
-works offline and as a plain notebook).
+small script of our own (``figures/mech_anim.js``, inlined; a recording fetches no file, so
+it works offline and as a plain notebook; a live figure imports its kernels from the book's
+own ``_static`` folder, and stays a recording in a plain notebook).
 
 Contract with the browser test of the book: an animation is ``<div class="mech-anim"
 data-frame="K">`` with an ``<svg>``, a ``<button class="mech-play">`` and an ``<input

@@ -1,5 +1,6 @@
 // Player for the book's moving figures (figures/animate.py writes the data).
-// Every pose is computed by `mech` when the book is built; this script only draws them.
+// Every pose is computed by `mech` when the book is built; this script draws them. A live
+// figure (data.live) also loads book/_static/mech/live.js, which re-solves it on a change.
 // It is inlined once per figure (the guard below defines it once per page), so a page
 // works offline and as a plain notebook output. Comment lines are stripped when inlined.
 (function () {
