@@ -70,6 +70,20 @@ def drag(page, name, handle, dx, dy, steps=12):
     page.mouse.up()
 
 
+def to_frame(page, name, frame):
+    page.locator(f"#{name} input.mech-slider").evaluate(
+        "(s, f) => { s.value = String(f); s.dispatchEvent(new Event('input', {bubbles: true})); }", frame)
+
+
+def assert_changed(before, after, retypes, why):
+    """The drawing and the coupler curve changed, no NaN is shown, and the type changed when it should."""
+    assert after["svg"] != before["svg"], why
+    assert after["curve"] != before["curve"], why
+    assert "NaN" not in after["out"] + after["msg"], why
+    if retypes:
+        assert after["kind"] != before["kind"], (why, after["out"], after["msg"])
+
+
 def reset(page, name, values):
     page.evaluate("([name, values]) => document.querySelector('#' + name + ' .mech-fig').mechLive.set(values)",
                   [name, values])
@@ -98,12 +112,7 @@ def test_each_slider_changes_drawing_curve_and_type(page, name, start, key, valu
     reset(page, name, start)
     before = state(page, name)
     set_field(page, name, key, value)
-    after = state(page, name)
-    assert after["svg"] != before["svg"]
-    assert after["curve"] != before["curve"]
-    assert "NaN" not in after["out"] + after["msg"]
-    if retypes:
-        assert after["kind"] != before["kind"], (key, value, after["kind"])
+    assert_changed(before, state(page, name), retypes, (key, value))
     reset(page, name, start)
     assert state(page, name)["kind"] == before["kind"]
 
@@ -177,18 +186,13 @@ def _stated_type(name, values):
 def test_each_handle_changes_drawing_curve_and_type(page, name, handle, target, retypes):
     start = {"fourbar": FOURBAR, "slidercrank": SLIDER, "guidebar": GUIDE, "spherical": SPHERE}[name]
     reset(page, name, start)
-    page.locator(f"#{name} input.mech-slider").evaluate(
-        "(s) => { s.value = '0'; s.dispatchEvent(new Event('input', {bubbles: true})); }")
+    to_frame(page, name, 0)
     before = state(page, name)
     drag_to(page, name, handle, target)
     after = state(page, name)
-    assert after["svg"] != before["svg"]
-    assert after["curve"] != before["curve"]
-    assert "NaN" not in after["out"] + after["msg"]
+    assert_changed(before, after, retypes, handle)
     # fields shown to 6 digits: far enough from a Grashof boundary for these targets
     assert after["kind"] == _stated_type(name, fields(page, name)), (after, fields(page, name))
-    if retypes:
-        assert after["kind"] != before["kind"], (handle, after["out"], after["msg"])
     reset(page, name, start)
 
 
@@ -217,8 +221,7 @@ def test_drag_through_change_point_keeps_branch(page):
     from mech.planar import FourBar
 
     reset(page, "fourbar", FOURBAR)
-    slider = page.locator("#fourbar input.mech-slider")
-    slider.evaluate("(s) => { s.value = '20'; s.dispatchEvent(new Event('input', {bubbles: true})); }")  # 60 degrees
+    to_frame(page, "fourbar", 20)  # 60 degrees
     kinds, path = set(), []
     for d in np.linspace(35.0, 15.0, 201):
         set_field(page, "fourbar", "d", round(float(d), 6), "number")
@@ -240,8 +243,7 @@ def test_unassemblable_input_gives_a_message(page):
     s = state(page, "fourbar")
     assert "Expected `a` shorter than the other three links together" in s["msg"]
     assert "crank-rocker" in s["kind"]                   # the last linkage that assembles is kept
-    page.locator("#fourbar input.mech-slider").evaluate(
-        "(s) => { s.value = '0'; s.dispatchEvent(new Event('input', {bubbles: true})); }")
+    to_frame(page, "fourbar", 0)
     set_field(page, "fourbar", "a", 30, "number")        # a triple-rocker: frame 0 does not assemble
     s = state(page, "fourbar")
     assert s["kind"] == "triple-rocker" and "cannot be assembled" in s["msg"] and "NaN" not in s["msg"]
@@ -348,8 +350,7 @@ def test_spherical_drag_through_change_point_keeps_branch(page):
     from mech.spherical import SphericalFourBar
 
     reset(page, "spherical", SPHERE)
-    page.locator("#spherical input.mech-slider").evaluate(
-        "(s) => { s.value = '20'; s.dispatchEvent(new Event('input', {bubbles: true})); }")   # 60 degrees
+    to_frame(page, "spherical", 20)   # 60 degrees
     at = page.evaluate("() => document.querySelector('#spherical .mech-fig').mechLive.data.live.theta[20]")
     path = []
     for d in np.linspace(57.0, 20.0, 149):
