@@ -196,6 +196,22 @@ def test_each_handle_changes_drawing_curve_and_type(page, name, handle, target, 
     reset(page, name, start)
 
 
+def test_first_drag_on_a_fresh_page(page):
+    """Before any other change the drawing is the build's: a first drag of a coupler point or
+    a joint works on it (the page solves the pose it shows)."""
+    page.reload()
+    page.wait_for_function("[...document.querySelectorAll('.mech-fig')].every((d) => d.mechLive)", timeout=30000)
+    sph = _sphere()
+    B, C = sph.solve(0.0).B, sph.solve(0.0).C
+    for name, handle, target in (("fourbar", "P", (5.0, 30.0)), ("slidercrank", "C", (60.0, 90.0)),
+                                 ("spherical", "C", _towards(sph.D, C, np.radians(12.0))),
+                                 ("spherical", "P", _towards(B, sph.D, 0.5))):
+        before = state(page, name)
+        drag_to(page, name, handle, target)
+        assert_changed(before, state(page, name), False, (name, handle))
+        reset(page, name, {"fourbar": FOURBAR, "slidercrank": SLIDER, "spherical": SPHERE}[name])
+
+
 def test_branch_switch(page):
     reset(page, "fourbar", FOURBAR)
     before = state(page, "fourbar")

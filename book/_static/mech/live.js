@@ -262,7 +262,9 @@ function planarFourBar(div, d, api, spec, L) {
     }
     const [lx, ly] = local(x, y);
     if (i === nB) return { a: Math.hypot(lx, ly) || state.a };
-    if (!pose || !pose.assembled[f]) return null;
+    // before any change the drawing is the build's: solve the pose it shows
+    pose = pose || new L.FourBar(state.a, state.b, state.c, state.d, { branch: state.branch }).solve(theta);
+    if (!pose.assembled[f]) return null;
     const Bx = pose.Bx[f], By = pose.By[f];
     if (i === nC) {
       // C dragged: new coupler and rocker lengths; the branch is the side of B->D it is on
@@ -336,7 +338,7 @@ function sliderCrank(div, d, api, spec, L) {
   fig.fromDrag = (name, gx, gy, f) => {
     const x = gx * d.grid, y = -gy * d.grid, i = d.names.indexOf(name);
     if (i === nB) return { a: Math.hypot(x, y) || state.a };
-    if (!pose) return null;
+    pose = pose || new L.SliderCrank(state.a, state.b, state.e, { branch: state.branch }).solve(theta);
     const Bx = pose.Bx[f], By = pose.By[f];
     return { e: y, b: Math.hypot(x - Bx, y - By), branch: x >= Bx ? 1 : -1 };
   };
@@ -535,7 +537,9 @@ function sphericalFourBar(div, d, api, spec, S) {
     const a0 = A();
     if (i === nD) return { d: angleOf(a0, w) };
     if (i === nB) return { a: angleOf(a0, w) };
-    if (!pose || !pose.valid[f]) return null;
+    pose = pose || new S.SphericalFourBar(state.a, state.b, state.c, state.d,
+      { branch: state.branch, coupler: [state.r, state.g], frame: spec.frame }).solve(theta);
+    if (!pose.valid[f]) return null;
     const B = pose.B[f], C = pose.C[f];
     if (i === nC) {
       const D = frameD();
