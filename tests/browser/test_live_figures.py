@@ -212,6 +212,19 @@ def test_first_drag_on_a_fresh_page(page):
         reset(page, name, {"fourbar": FOURBAR, "slidercrank": SLIDER, "spherical": SPHERE}[name])
 
 
+def test_page_readout_is_the_build_readout(page):
+    """The read-out the page computes (JS kernels) for the first linkage is, word for word and
+    digit for digit, the one the build wrote (figures.live with mech, NumPy)."""
+    got = page.evaluate("""() => [...document.querySelectorAll('.mech-fig')].map((div) => {
+      const out = div.querySelector('.mech-live-out'), built = out.textContent;
+      div.mechLive.update({});
+      return [div.parentNode.id, built, out.textContent];
+    })""")
+    assert len(got) == 5
+    for name, built, live in got:
+        assert live == built, name
+
+
 def test_branch_switch(page):
     reset(page, "fourbar", FOURBAR)
     before = state(page, "fourbar")

@@ -461,6 +461,21 @@ function unproject([yaw, pitch, K], x, y) {
   return [cy * X - sy * yv, sy * X + cy * yv, z];
 }
 
+/** The input angles of SphericalFourBar.couplerCurve(n): n over the full turn, or spread
+ *  over the assembly intervals with a NaN between intervals. */
+function curveAngles(rng, n) {
+  if (rng.fullTurn) return Array.from({ length: n }, (_, i) => -Math.PI + (2 * Math.PI * i) / (n - 1));
+  const theta = [];
+  const total = rng.intervals.reduce((acc, [lo, hi]) => acc + (hi - lo), 0) || 1.0;
+  rng.intervals.forEach(([lo, hi], k) => {
+    const count = Math.max(2, Math.round((n * (hi - lo)) / total));
+    const inset = 1e-10 * (hi - lo);
+    if (k > 0) theta.push(NaN);
+    for (let j = 0; j < count; j++) theta.push(lo + inset + ((hi - inset - (lo + inset)) * j) / (count - 1));
+  });
+  return theta;
+}
+
 function sphericalFourBar(div, d, api, spec, S) {
   const [nA, nB, nC, nD, nP] = spec.names.map((n) => d.names.indexOf(n));
   const state = { a: spec.a, b: spec.b, c: spec.c, d: spec.d, branch: spec.branch, r: spec.coupler[0], g: spec.coupler[1] };
@@ -484,8 +499,14 @@ function sphericalFourBar(div, d, api, spec, S) {
     if (nC >= 0) d.P[nC] = flat(pose.C);
     if (nP >= 0) d.P[nP] = flat(pose.P);
     if (nD >= 0) d.P[nD] = grid(frameD());
-    curve = linkage.couplerCurve(spec.curve);
-    d.curves = d.trace.map((i) => (i === nP ? curve.P.map((p) => (p[0] === p[0] ? grid(p) : null)) : null));
+    // the coupler curve over the assembly range, sampled as couplerCurve samples it; one
+    // solve gives the curve and the poses of the smallest transmission angle
+    const angles = curveAngles(linkage.assemblyRange(), spec.curve);
+    const run = linkage.solve(angles.filter((t) => t === t));
+    let j = 0;
+    const P = angles.map((t) => (t === t ? run.P[j++] : null));
+    curve = run;
+    d.curves = d.trace.map((i) => (i === nP ? P.map((p) => (p && p[0] === p[0] ? grid(p) : null)) : null));
     if (first) {
       // still curves of the first linkage (its coupler curves, their twins) are stale now
       hadGround = d.still.some((c) => c.c === "mf-fixed");
@@ -516,10 +537,9 @@ function sphericalFourBar(div, d, api, spec, S) {
     const limits = rng.fullTurn ? "the input turns fully"
       : "input between " + rng.intervals.map(([lo, hi]) => `${deg(lo)} and ${deg(hi)}`).join(", ");
     // the smallest angle at C between the arcs to B and D over the curve's poses
-    const ok = curve.theta.filter((t) => t === t);
-    const run = linkage.solve(ok), D = frameD();
+    const run = curve, D = frameD();
     let least = Infinity;
-    for (let i = 0; i < ok.length; i++) {
+    for (let i = 0; i < run.theta.length; i++) {
       if (!run.valid[i]) continue;
       const mu = angleOf(tangent(run.C[i], run.B[i]), tangent(run.C[i], D));
       least = Math.min(least, mu, Math.PI - mu);
