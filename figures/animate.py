@@ -6,10 +6,12 @@ limit positions); `view3d` draws points, links, great arcs and curves in space, 
 orthographic view the reader turns by dragging, optionally moving too. `animate_linkage`
 and `great_circle` are shortcuts for a `mech.planar.Linkage` and for the sphere.
 
-Every pose is computed by `mech` in the notebook; the browser only draws. The output is
+Every pose is computed by `mech` in the notebook; the browser draws them (and a live
+figure, ``live=`` from `figures.live`, re-solves its linkage in the page). The output is
 an `IPython.display.HTML` object holding an inline SVG, the poses as compact JSON and a
-small script of our own (``figures/mech_anim.js``, inlined; no file is fetched, so the page
-works offline and as a plain notebook).
+small script of our own (``figures/mech_anim.js``, inlined; a recording fetches no file, so
+it works offline and as a plain notebook; a live figure imports its kernels from the book's
+own ``_static`` folder, and stays a recording in a plain notebook).
 
 Contract with the browser test of the book: an animation is ``<div class="mech-anim"
 data-frame="K">`` with an ``<svg>``, a ``<button class="mech-play">`` and an ``<input
@@ -21,9 +23,11 @@ svg changes both attributes (degrees) and redraws. A moving 3-D view has both cl
 Weight, measured on the crank-rocker (10, 40, 30, 35) with a coupler point, 180 poses
 (the table is on the book's page *How to read this book*): Matplotlib's
 ``FuncAnimation.to_jshtml`` (one PNG per pose, 5 x 4 in) stores 2441 kB at 72 dpi and
-3655 kB at 100 dpi, and took about 13 s to render; this module stores 17.3 kB (6.8 kB of
+3655 kB at 100 dpi, and took about 13 s to render; this module stores 18.4 kB (6.8 kB of
 data, the poses rounded to 4 significant digits on an integer grid and the input values;
-8.5 kB of script (with the placing of labels that never collide), 1.5 kB of style). Plotly would add its own script of about 3.5 MB to every page that uses it.
+9.6 kB of script (with the placing of labels that never collide and the hooks of live
+figures), 1.6 kB of style). A live figure (``live=``, `figures.live`) adds its controls
+and loads the kernels it needs as shared ES modules. Plotly would add its own script of about 3.5 MB to every page that uses it.
 """
 
 import html
@@ -126,8 +130,13 @@ def _controls(n, label, marks):
             f'aria-label="{html.escape(label)}"><span class="mech-value"></span>{jumps}</div>')
 
 
-def _wrap(classes, attrs, svg, controls, data, title=""):
+def _wrap(classes, attrs, svg, controls, data, title="", live=None):
     heading = f'<div class="mech-title">{html.escape(title)}</div>' if title else ""
+    if live is not None:  # controls of a live figure, in their first state (figures/live.py)
+        from figures.live import controls as live_controls
+
+        data["live"] = live
+        controls += live_controls(live)
     return (f'{_CSS}<div class="mech-fig {classes}" {attrs}>{heading}{svg}{controls}'
             f'<script type="application/json" class="mech-data">{_json(data)}</script></div>'
             f"<script>{_script()}</script>")
@@ -140,7 +149,8 @@ def _display(text):
 
 
 def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches=None, marks=(),
-            inputs=None, input_label="\u03b8 (deg)", labels=True, fps=30, width=560, caption="", title=""):
+            inputs=None, input_label="\u03b8 (deg)", labels=True, fps=30, width=560, caption="", title="",
+            live=None):
     """Animate a planar linkage from its solved poses.
 
     Parameters
@@ -180,6 +190,9 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
         Text for screen readers (``aria-label`` of the SVG).
     title : str
         A visible title above the figure (which linkage it is, when a page shows several).
+    live : dict, optional
+        From `figures.live` (``fourbar``, ``slider_crank``, ``none``): the reader may change
+        the linkage in the page, which recomputes it with the JavaScript kernels.
 
     Returns
     -------
@@ -246,7 +259,7 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
     font = round(0.034 * max(w, h), 1)
     svg = (f'<svg viewBox="{x0} {y0} {w} {h}" style="max-width:{int(width)}px;font-size:{font}px" role="img" '
            f'aria-label="{html.escape(caption)}"></svg>')
-    return _display(_wrap("mech-anim", 'data-frame="0"', svg, _controls(n, input_label, marks), data, title))
+    return _display(_wrap("mech-anim", 'data-frame="0"', svg, _controls(n, input_label, marks), data, title, live))
 
 
 def animate_linkage(linkage, solution, *, trace=(), inputs=None, **options):
@@ -323,7 +336,8 @@ def great_circle(pole, n=97):
 
 
 def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), inputs=None,
-           input_label="\u03b8 (deg)", labels=True, yaw=30.0, pitch=20.0, fps=20, width=460, caption="", title=""):
+           input_label="\u03b8 (deg)", labels=True, yaw=30.0, pitch=20.0, fps=20, width=460, caption="", title="",
+           live=None):
     """A 3-D figure the reader turns by dragging; moving when its points have several poses.
 
     Parameters
@@ -345,6 +359,8 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
         As in `animate`.
     yaw, pitch : float
         The initial view, degrees: turn about the z axis, then tilt towards the reader.
+    live : dict, optional
+        From `figures.live` (``spherical_fourbar``, ``none``), as in `animate`.
 
     Returns
     -------
@@ -397,4 +413,4 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
     moving = n > 1
     attrs = f'data-yaw="{float(yaw):.1f}" data-pitch="{float(pitch):.1f}"' + (' data-frame="0"' if moving else "")
     return _display(_wrap("mech-view3d mech-anim" if moving else "mech-view3d", attrs, svg,
-                          _controls(n, input_label, ()) if moving else "", data, title))
+                          _controls(n, input_label, ()) if moving else "", data, title, live))

@@ -1,5 +1,6 @@
 // Player for the book's moving figures (figures/animate.py writes the data).
-// Every pose is computed by `mech` when the book is built; this script only draws them.
+// Every pose is computed by `mech` when the book is built; this script draws them. A live
+// figure (data.live) also loads book/_static/mech/live.js, which re-solves it on a change.
 // It is inlined once per figure (the guard below defines it once per page), so a page
 // works offline and as a plain notebook output. Comment lines are stripped when inlined.
 (function () {
@@ -85,7 +86,6 @@
   function planar(div, d) {
     var svg = div.querySelector("svg"), u = d.unit, layer = {};
     ["fix", "mark", "ghost", "path", "link", "top"].forEach(function (k) { layer[k] = el(svg, "g", {}); });
-    d.lines.forEach(function (l) { el(layer.fix, "path", {d: pathD(l), class: "mf-guide"}); });
     function pts(P, f) { return d.names.map(function (_, i) { return at(P[i], f, 2); }); }
     function body(g, P, f, cls) {
       var p = pts(P, f);
@@ -95,12 +95,21 @@
       });
       return p;
     }
-    // Still parts: the whole path of each traced point (faint) and the marked poses.
-    d.trace.forEach(function (i) {
-      var all = []; for (var f = 0; f < d.n; f++) all.push(at(d.P[i], f, 2));
-      el(layer.path, "path", {d: pathD(all), class: "mf-path-all"});
-    });
-    d.marks.forEach(function (m) {
+    // Still parts: the guides, the whole path of each traced point (faint) and the marked
+    // poses; drawn again when a live figure changes its linkage (d.curves: a finer path).
+    var trace = [];
+    function stills() {
+      ["fix", "path", "mark"].forEach(function (k) { layer[k].textContent = ""; });
+      d.lines.forEach(function (l) { el(layer.fix, "path", {d: pathD(l), class: "mf-guide"}); });
+      d.trace.forEach(function (i, k) {
+        var all = d.curves && d.curves[k];
+        if (!all) { all = []; for (var f = 0; f < d.n; f++) all.push(at(d.P[i], f, 2)); }
+        el(layer.path, "path", {d: pathD(all), class: "mf-path-all"});
+      });
+      d.marks.forEach(mark);
+      trace = d.trace.map(function () { return el(layer.path, "path", {class: "mf-path"}); });
+    }
+    function mark(m) {
       // A mark without a point is only a button (many dotted poses would hide the figure).
       if (m[2] === null) return;
       var p = body(layer.mark, d.P, m[0], "mf-marked"), q = p[m[2]];
@@ -108,8 +117,11 @@
       var box = svg.viewBox.baseVal, left = q && q[0] > box.x + box.width / 2;
       if (q) el(layer.mark, "text", {x: q[0] + (left ? -u : u), y: q[1] - u, class: "mf-marktext",
                                      "text-anchor": left ? "end" : "start"}).textContent = m[1];
-    });
-    var trace = d.trace.map(function () { return el(layer.path, "path", {class: "mf-path"}); });
+    }
+    stills();
+    // api: the hooks of a live figure (book/_static/mech/live.js)
+    var api = {data: d, svg: svg, place: place, frame: function () { return +div.getAttribute("data-frame") || 0; },
+               redraw: function () { stills(); draw(api.frame()); }};
     function draw(f) {
       ["ghost", "link", "top"].forEach(function (k) { layer[k].textContent = ""; });
       if (d.ghost) body(layer.ghost, d.ghost, f, "mf-ghost");
@@ -127,7 +139,7 @@
                                transform: "rotate(" + deg.toFixed(1) + " " + q[0] + " " + q[1] + ")"});
       });
       var placed = [];
-      layer.mark.querySelectorAll("text").forEach(function (t) { var b = t.getBBox(); if (b.width) placed.push(b); });
+      if (!api.quick) layer.mark.querySelectorAll("text").forEach(function (t) { var b = t.getBBox(); if (b.width) placed.push(b); });
       p.forEach(function (q, i) {
         if (!q) return;
         // Names starting with "_" are helper points (a block's direction): not drawn.
@@ -139,11 +151,13 @@
         if (d.labels) {
           var t = el(layer.top, "text", {x: q[0] + 0.7 * u, y: q[1] - 0.7 * u, class: "mf-label"});
           t.textContent = d.names[i];
-          place(t, q, 0.7 * u, placed);
+          api.place(t, q, 0.7 * u, placed, i);
         }
       });
+      if (api.after) api.after(f);
     }
     controls(div, d, draw);
+    live(div, d, api);
   }
 
   // 3-D figure: orthographic view turned by yaw (about z) and pitch; drag to turn.
@@ -193,9 +207,11 @@
         line(pts, c.c);
       });
       var p = d.names.map(function (_, i) { return xyz(d.P[i], f); });
-      d.trace.forEach(function (i) {
+      d.trace.forEach(function (i, k) {
         var all = [], done = [];
         for (var h = 0; h < d.n; h++) { all.push(xyz(d.P[i], h)); if (h <= f) done.push(all[h]); }
+        // a live figure's finer curve (grid units, as d.P)
+        if (d.curves && d.curves[k]) all = d.curves[k].map(function (q) { return q && q.map(function (v) { return v * s; }); });
         line(all, "mf-path-all");
         line(done, "mf-path");
       });
@@ -211,10 +227,13 @@
         if (d.labels) {
           var t = el(g, "text", {x: r[0] + 30, y: r[1] - 30, class: "mf-label3"});
           t.textContent = d.names[i];
-          place(t, r, 30, placed);
+          api.place(t, r, 30, placed, i);
         }
       });
+      if (api.after) api.after(f);
     }
+    var api = {data: d, svg: svg, place: place, project: project, frame: function () { return frame; },
+               redraw: function () { draw(frame); }, view: function () { return [yaw, pitch, K]; }};
     var drag = null;
     svg.addEventListener("pointerdown", function (e) {
       drag = [e.clientX, e.clientY];
@@ -233,6 +252,17 @@
     });
     ["pointerup", "pointercancel"].forEach(function (t) { svg.addEventListener(t, function () { drag = null; }); });
     if (d.n > 1) controls(div, d, draw); else draw(0);
+    live(div, d, api);
+  }
+
+  // A live figure (d.live) loads the page's kernels and their controls as ES modules, once
+  // per page and only on pages that have one; the drawing above is the build's own state.
+  function live(div, d, api) {
+    if (!d.live || d.live.type === "none") return;
+    var root = document.documentElement.getAttribute("data-content_root");
+    // not a page of the book (a notebook): the figure stays a recording
+    if (root === null) return;
+    import(root + "_static/mech/live.js").then(function (m) { m.attach(div, d, api); });
   }
 
   function scan() {

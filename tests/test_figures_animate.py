@@ -76,7 +76,7 @@ def test_animate_weight_per_frame():
     poses = len(json.dumps(d["P"], separators=(",", ":")))
     assert poses / len(theta) < 3 * 2 * 6 + 10      # three moving points, two ints of <= 5 digits
     script = html.split("<script>")[1]
-    assert len(script) < 9000
+    assert len(script) < 9800      # with the hooks of live figures (issue 25)
     assert len(html) < 40_000
 
 

@@ -3,6 +3,7 @@
 // frame). Written by hand; the formulas are only in the kernels.
 
 import * as sf from "../kernels/spherical_fourbar.js";
+import * as st from "../kernels/spherical_types.js";
 import { LinkageInputError, finiteArray, finiteNumber, keepPromise, number, show } from "./core.js";
 
 export { LinkageInputError };
@@ -166,4 +167,50 @@ export class SphericalFourBar {
     const P = theta.map((t) => (t === t ? pose.P[j++] : [NaN, NaN, NaN]));
     return { theta, P };
   }
+}
+
+// --- classification ----------------------------------------------------------------------
+
+/** The acute normal form of the arcs by antipode moves (as mech.spherical antipode_reduction). */
+function reducedArcs(arcs) {
+  const target = arcs.map((x) => (x <= Math.PI / 2 ? x : Math.PI - x));
+  const obtuse = arcs.filter((x) => x > Math.PI / 2).length;
+  if (obtuse % 2) {
+    const keep = target.indexOf(Math.max(...target)); // nearest to pi/2
+    target[keep] = Math.PI - target[keep];
+  }
+  return target;
+}
+
+/**
+ * Classify a spherical four-bar by its fully rotatable joints, ground d (as
+ * mech.spherical.classify): {kind, grashof, changePoint, revolving}. Throws a
+ * LinkageInputError when it cannot be assembled at any input angle.
+ */
+export function classify(a, b, c, d, { tol = 1e-12 } = {}) {
+  const arcs = [a, b, c, d].map((x, k) => arc(NAMES[k], x));
+  const reduced = reducedArcs(arcs);
+  const total = reduced[0] + reduced[1] + reduced[2] + reduced[3];
+  for (let k = 0; k < 4; k++) {
+    if (reduced[k] >= total - reduced[k]) {
+      throw new LinkageInputError(`Expected every arc below the sum of the other three after the antipode ` +
+        `reduction, got reduced arc \`${NAMES[k]}\` = ${reduced[k]} >= ${total - reduced[k]}: the linkage cannot be assembled`);
+    }
+  }
+  const t = finiteNumber("tol", tol);
+  const [ab, ac, ad, n] = st.spherical_type_slacks(...arcs).map((s) => (Math.abs(s) <= t ? 0 : Math.sign(s)));
+  const joints = {
+    A: ab * ac >= 0 && ad * n >= 0,
+    B: ac * ad >= 0 && ab * n >= 0,
+    C: ab * ac <= 0 && ad * n <= 0,
+    D: ac * ad <= 0 && ab * n <= 0,
+  };
+  const revolving = Object.keys(joints).filter((j) => joints[j]);
+  let kind;
+  if (!revolving.length) kind = "triple-rocker";
+  else if (joints.A && joints.D) kind = "double-crank";
+  else if (joints.A) kind = "crank-rocker";
+  else if (joints.D) kind = "rocker-crank";
+  else kind = "double-rocker";
+  return { kind, grashof: revolving.length > 0, changePoint: [ab, ac, ad, n].includes(0), revolving };
 }
