@@ -29,6 +29,8 @@ _STYLE = """<style>
 .mech-live-design .mech-centre-curve{stroke:#8172b3}
 .mech-live-design .mech-circle-curve{stroke:#937860}
 .mech-live-design .mech-error-curve{fill:none;stroke:#c44e52;stroke-width:2;vector-effect:non-scaling-stroke}
+.mech-live-design .mech-fg-ghost{stroke:#4c72b0;stroke-opacity:.5;vector-effect:non-scaling-stroke}
+.mech-live-design .mech-fg-axis,.mech-live-design .mech-fg-at{stroke:#999;vector-effect:non-scaling-stroke}
 .mech-live-design table{font-size:.85em;margin:.4em 0}
 .mech-live-design input[type=number]{width:6.5em}
 .mech-live-design label{margin-right:.8em;white-space:nowrap}
@@ -59,14 +61,15 @@ def _node_render(module, state):
     return done.stdout
 
 
-def live_figure(module, state, *, depth=1, note=""):
+def live_figure(module, state, *, depth=1, note="", kind=""):
     """The HTML of a live figure: its initial drawing (by `module`'s ``render`` under Node),
     its state, and the module script that makes it live. `depth` is the page's folder depth
-    under the book's root (the script path is relative)."""
+    under the book's root (the script path is relative); `kind` is an extra class of the
+    figure's element (``mech-live-fg`` for function generation)."""
     from html import escape
 
     body = _node_render(module, state)
     src = "../" * depth + f"_static/mech/{module}"
     note = f'<p class="mech-live-note">{note}</p>' if note else ""
-    return (f"{_STYLE}\n<div class=\"mech-live-design\" data-state=\"{escape(json.dumps(state))}\">{body}</div>"
+    return (f"{_STYLE}\n<div class=\"mech-live-design{' ' + kind if kind else ''}\" data-state=\"{escape(json.dumps(state))}\">{body}</div>"
             f"{note}\n<script type=\"module\" src=\"{src}\"></script>")

@@ -372,5 +372,5 @@ export function mount(root) {
 }
 
 if (typeof document !== "undefined") {
-  for (const root of document.querySelectorAll(".mech-live-design[data-state]")) mount(root);
+  for (const root of document.querySelectorAll(".mech-live-design:not(.mech-live-fg)[data-state]")) mount(root);
 }
