@@ -33,7 +33,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _source_hash():
-    digest = hashlib.sha256()
+    digest = hashlib.sha256(Path(__file__).read_bytes())     # this file's table format too
     for path in sorted((ROOT / "mech").rglob("*.py")):
         digest.update(path.relative_to(ROOT).as_posix().encode())
         digest.update(path.read_bytes())
@@ -47,22 +47,25 @@ def exercise_table(number):
     from mech.exercises._sheet import answer_quantities, solved_variant
 
     ex = get(number)
-    quantities, seeds = {}, []
+    names = [p.name for p in ex.parameters]
+    quantities, solved, units = {}, [], {}
     for seed in SEEDS:
         try:
             params, solution = solved_variant(ex, seed)
         except ValueError:
-            seeds.append(None)         # no valid variant for this seed: the page says so
+            solved.append(None)        # no valid variant for this seed: the page says so
             continue
         answers = {}
         for q in answer_quantities(solution):
-            quantities.setdefault(q.key, {"key": q.key, "name": q.name, "unit": q.unit, "what": q.what,
-                                          "aliases": list(q.aliases)})
+            quantities.setdefault(q.key, {"key": q.key, "name": q.name, "unit": q.unit, "what": q.what})
             answers[q.key] = float(q.value)
-        seeds.append({"givens": {k: _fmt_number(v) for k, v in params.items()},
-                      "units": {k: solution.units.get(k, "") for k in params}, "answers": answers})
-    return {"number": ex.number, "title": ex.title, "statement": ex.statement,
-            "quantities": list(quantities.values()), "seeds": seeds}
+        units.update({k: solution.units.get(k, "") for k in params})
+        solved.append(([_fmt_number(params[k]) for k in names], answers))
+    keys = list(quantities)
+    # per seed: the givens in the order of `givens`, the answers in the order of `quantities`
+    seeds = [None if s is None else [s[0], [s[1].get(k) for k in keys]] for s in solved]
+    return {"number": ex.number, "title": ex.title, "statement": ex.statement, "givens": names,
+            "units": {k: units.get(k, "") for k in names}, "quantities": list(quantities.values()), "seeds": seeds}
 
 
 def _cached_tables(app, numbers):

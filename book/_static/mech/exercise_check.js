@@ -97,7 +97,12 @@ export function mount(root) {
       body.dataset.number = number;
     }
     const valid = Number.isInteger(seed) && seed >= d.seeds[0] && seed <= d.seeds[1];
-    const variant = valid ? table.seeds[seed - d.seeds[0]] : null;
+    const row = valid ? table.seeds[seed - d.seeds[0]] : null;
+    // a row is [givens in the order of table.givens, answers in the order of table.quantities]
+    const variant = row && {
+      givens: Object.fromEntries(table.givens.map((name, i) => [name, row[0][i]])),
+      answers: Object.fromEntries(table.quantities.map((qt, i) => [qt.key, row[1][i]]).filter(([, v]) => v !== null)),
+    };
     q("[data-part=givens]").textContent = !valid
       ? `Seeds ${d.seeds[0]} to ${d.seeds[1]} are checked here; for another, use python -m mech.exercises check.`
       : variant === null ? "This seed gives no valid variant."
