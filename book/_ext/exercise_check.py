@@ -112,6 +112,9 @@ def _form(docname, tables):
         f'<td>{escape(q["name"])}</td><td><input type="text" id="ans-{escape(first["number"])}-{escape(q["key"])}" '
         f'data-key="{escape(q["key"])}" size="12"> {escape(q["unit"])}</td><td class="verdict" data-key="{escape(q["key"])}"></td></tr>'
         for q in first["quantities"])
+    seed0 = first["seeds"][0]
+    givens = ("" if seed0 is None else
+              "Variant 0: " + first["statement"].format(**dict(zip(first["givens"], seed0[0]))))
     return (
         f'<div class="mech-exercise-check" data-table="{up}{OUT_DIR}/{_slug(docname)}.json">'
         "<p>Check your own answers here. Choose an exercise and a variant (seed 0 to 99; "
@@ -121,10 +124,10 @@ def _form(docname, tables):
         "0.01 in the quantity's unit, as <code>python -m mech.exercises check</code> decides. The answers were "
         "computed when the book was built, for seeds 0 to 99 only, and are read from a small file of this page; "
         "the comparison and the unit conversion run in your browser (with scripts off, use the command line).</p>"
-        f'<p><label>Exercise <select data-control="exercise">{options}</select></label> '
+        f'<p><label>Exercise <select data-control="exercise" style="max-width:19em">{options}</select></label> '
         f'<label>Seed <input type="number" min="{SEEDS.start}" max="{SEEDS.stop - 1}" step="1" value="0" '
         'data-control="seed"></label> <button type="button" data-control="check">Check</button></p>'
-        '<p class="givens" data-part="givens"></p>'
+        f'<p class="givens" data-part="givens">{escape(givens)}</p>'
         f'<table><thead><tr><th>key</th><th>quantity</th><th>your answer</th><th>verdict</th></tr></thead>'
         f'<tbody data-part="answers">{rows}</tbody></table><p data-part="summary" aria-live="polite"></p></div>'
         f'<script type="module" src="{up}_static/mech/exercise_check.js"></script>'

@@ -140,14 +140,34 @@ def test_drag_a_pose(chromium):
         await page.mouse.up()
         after = (await root.get_attribute("data-dyads"), await root.locator("svg").inner_html(),
                  await root.locator("input[data-pose='2'][data-field='1']").input_value())
+        # the time of one drag step (solve and redraw, five poses: Burmester and twelve
+        # four-bars), measured in the page over 60 synthetic moves
+        times = await root.evaluate("""(root) => {
+          const svg = root.querySelector('svg');
+          const h = svg.querySelector('circle[data-handle=move][data-pose="4"]');
+          const r = h.getBoundingClientRect();
+          const x = r.x + r.width / 2, y = r.y + r.height / 2;
+          h.dispatchEvent(new PointerEvent('pointerdown', {bubbles: true, clientX: x, clientY: y, pointerId: 1}));
+          const out = [];
+          for (let k = 1; k <= 60; k++) {
+            const t0 = performance.now();
+            svg.dispatchEvent(new PointerEvent('pointermove', {bubbles: true, clientX: x + k, clientY: y - k / 2, pointerId: 1}));
+            out.push(performance.now() - t0);
+          }
+          svg.dispatchEvent(new PointerEvent('pointerup', {bubbles: true, pointerId: 1}));
+          return out;
+        }""")
         # four poses: the curves are drawn
         await root.locator("[data-control=n]").select_option("4")
         curves = await root.locator("path.mech-centre-curve").count()
         await page.close()
-        return before, after, curves
+        return before, after, curves, times
 
-    before, after, curves = _run(chromium, job)
+    before, after, curves, times = _run(chromium, job)
     assert not problems, problems
+    p95 = float(np.percentile(times, 95))
+    print(f"drag step with five poses: median {np.median(times):.1f} ms, 95th percentile {p95:.1f} ms")
+    assert p95 < 500        # a loose bound: the figure stays interactive on a loaded 2-core machine
     assert after[0] != before[0] and after[1] != before[1]
     assert float(after[2]) != -51.64
     assert curves == 1

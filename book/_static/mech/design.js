@@ -194,8 +194,9 @@ export function renderFigure(state, sol) {
     parts.push(dots(centre, 0.35 * r, "mech-centre-curve"), dots(moving, 0.35 * r, "mech-circle-curve"));
   }
   const pick = sol.designs[Math.min(state.pick, sol.designs.length - 1)];
-  if (pick && pick.direction !== 0) {
-    const theta = pick.thetaIn[0] + pick.direction * state.t * pick.travel;
+  if (pick) {
+    // a design that cannot make the move is drawn in the first pose only
+    const theta = pick.direction !== 0 ? pick.thetaIn[0] + pick.direction * state.t * pick.travel : pick.thetaIn[0];
     const j = placedJoints(pick, theta);
     if (j) {
       parts.push(`<polyline class="mech-design-linkage" points="${[j.A, j.B, j.C, j.D].map(pt).join(" ")}" fill="none"/>`);
@@ -274,6 +275,7 @@ export function render(state) {
     [2, 3, 4, 5].map((n) => `<option${n === state.n ? " selected" : ""}>${n}</option>`).join("") + "</select></label> " +
     `<label>Four-bar <select data-control="pick">${options}</select></label> ` +
     `<label>Motion <input type="range" min="0" max="1" step="0.005" value="${state.t}" data-control="t"></label>` +
+    '<button type="button" data-control="play">Play</button>' +
     `<span data-part="choose"${state.n === 4 ? "" : " hidden"}> <label>Dyad 1 on the curve <input type="range" min="0" max="1" step="0.002" ` +
     `value="${state.choose[0]}" data-control="choose0"></label> <label>Dyad 2 <input type="range" min="0" max="1" ` +
     `step="0.002" value="${state.choose[1]}" data-control="choose1"></label></span></div>` +
@@ -287,10 +289,14 @@ export function render(state) {
 /** Make the figure in `root` live; its initial state is in root.dataset.state. */
 export function mount(root) {
   const state = JSON.parse(root.dataset.state);
+  // drawn again from the state: the build's drawing may come from an older script (the
+  // notebook cache keys on the page's code, not on this file)
+  root.innerHTML = render(state);
   const svg = () => root.querySelector("svg");
   let sol = null;
-  const redraw = (all) => {
-    sol = solveState(state);
+  // `same`: only the motion or the chosen design changed, the solution stands
+  const redraw = (all, same = false) => {
+    if (!same || sol === null) sol = solveState(state);
     svg().innerHTML = renderFigure(state, sol);
     root.querySelector("[data-part=report]").innerHTML = renderReport(state, sol);
     if (all) {
@@ -324,14 +330,34 @@ export function mount(root) {
       redraw(true);
     } else if (c === "pick") {
       state.pick = Number(el.value);
-      redraw(false);
+      redraw(false, true);
     } else if (c === "t") {
       state.t = Number(el.value);
-      redraw(false);
+      redraw(false, true);
     } else if (c === "choose0" || c === "choose1") {
       state.choose[c === "choose0" ? 0 : 1] = Number(el.value);
       redraw(true);
     }
+  });
+  let playing = null;
+  root.querySelector("[data-control=play]").addEventListener("click", (event) => {
+    if (playing !== null) {
+      cancelAnimationFrame(playing);
+      playing = null;
+      event.target.textContent = "Play";
+      return;
+    }
+    event.target.textContent = "Pause";
+    let last = null;
+    const step = (now) => {
+      // from the first pose to the last in three seconds, then again
+      if (last !== null) state.t = (state.t + (now - last) / 3000) % 1;
+      last = now;
+      root.querySelector("[data-control=t]").value = String(state.t);
+      redraw(false, true);
+      playing = requestAnimationFrame(step);
+    };
+    playing = requestAnimationFrame(step);
   });
   let drag = null;
   const world = (event) => {
@@ -343,7 +369,11 @@ export function mount(root) {
     const h = event.target.dataset && event.target.dataset.handle;
     if (!h) return;
     drag = { handle: h, pose: +event.target.dataset.pose, pivot: +event.target.dataset.pivot };
-    svg().setPointerCapture(event.pointerId);
+    try {
+      svg().setPointerCapture(event.pointerId);
+    } catch (err) {
+      // a pointer the browser does not track (a synthetic event): the drag works uncaptured
+    }
     event.preventDefault();
   });
   svg().addEventListener("pointermove", (event) => {

@@ -88,9 +88,17 @@ export function design(state) {
   const samples = 241;
   const grid = [], error = [];
   let covers = true, monotone = true, last = null;
+  // the drawing's bounds: the ground and every position of B and C over the range
+  const box = [Math.min(0, state.d), 0, Math.max(0, state.d), 0];
   for (let i = 0; i < samples; i++) {
     const x = X0 + (X1 - X0) * i / (samples - 1);
-    const { psi } = output(x);
+    const { psi, pose } = output(x);
+    if (pose) {
+      for (const [u, v] of [[pose.Bx[0], pose.By[0]], [pose.Cx[0], pose.Cy[0]]]) {
+        box[0] = Math.min(box[0], u); box[1] = Math.min(box[1], v);
+        box[2] = Math.max(box[2], u); box[3] = Math.max(box[3], v);
+      }
+    }
     const [, Y] = rotations(state, x);
     const e = wrap(psi - p0 - Y);
     grid.push(x);
@@ -100,7 +108,7 @@ export function design(state) {
     if (Number.isFinite(psi)) last = psi;
   }
   const pairError = Math.max(...xs.map((x, i) => Math.abs(wrap(output(x).psi - p0 - pairs[i][1]))));
-  return { lengths, theta0: t0, psi0: p0, branch, linkage, xs, grid, error, covers, monotone, pairError, output };
+  return { lengths, theta0: t0, psi0: p0, branch, linkage, xs, grid, error, covers, monotone, pairError, output, box };
 }
 
 // --- drawing --------------------------------------------------------------------------------
@@ -151,9 +159,11 @@ export function renderFigure(state, sol) {
   return { linkage: L.join(""), plot: P.join("") };
 }
 
-function linkageBox(state) {
-  const s = 2.2 * state.d;
-  return [-0.6 * state.d, -0.9 * s / 2, s, 0.9 * s].map(f).join(" ");
+/** The view box (SVG units, y down) around the linkage's motion, with a margin. */
+function linkageBox(state, sol) {
+  const [x0, y0, x1, y1] = sol.problem ? [0, 0, state.d, 0] : sol.box;
+  const pad = 0.08 * Math.max(x1 - x0, y1 - y0, state.d);
+  return [x0 - pad, -y1 - pad, x1 - x0 + 2 * pad, y1 - y0 + 2 * pad].map(f).join(" ");
 }
 
 export function renderReport(state, sol) {
@@ -183,7 +193,7 @@ export function render(state) {
   const sol = design(state);
   const parts = renderFigure(state, sol);
   return `<div class="mech-design-controls" data-part="inputs">${inputs(state)}</div>` +
-    `<div style="display:flex;flex-wrap:wrap;gap:1em"><svg class="mech-fg-linkage" viewBox="${linkageBox(state)}" style="flex:1 1 18em" ` +
+    `<div style="display:flex;flex-wrap:wrap;gap:1em"><svg class="mech-fg-linkage" viewBox="${linkageBox(state, sol)}" style="flex:1 1 18em" ` +
     `role="img" aria-label="The four-bar at the chosen x, and at the precision points (thin)">${parts.linkage}</svg>` +
     `<svg class="mech-fg-plot" viewBox="0 0 ${PLOT.w} ${PLOT.h}" style="flex:1 1 18em" role="img" ` +
     `aria-label="Structural error in y against x from 1 to 10; the dots are the precision points">${parts.plot}</svg></div>` +
@@ -192,11 +202,15 @@ export function render(state) {
 
 export function mount(root) {
   const state = JSON.parse(root.dataset.state);
+  // drawn again from the state: the build's drawing may come from an older script (the
+  // notebook cache keys on the page's code, not on this file)
+  root.innerHTML = render(state);
   const link = root.querySelector("svg.mech-fg-linkage"), plot = root.querySelector("svg.mech-fg-plot");
   const redraw = () => {
     const sol = design(state);
     const parts = renderFigure(state, sol);
     link.innerHTML = parts.linkage;
+    link.setAttribute("viewBox", linkageBox(state, sol));
     plot.innerHTML = parts.plot;
     root.querySelector("[data-part=report]").innerHTML = renderReport(state, sol);
     root.dataset.lengths = sol.problem ? "" : JSON.stringify(sol.lengths);
