@@ -233,7 +233,7 @@ export function polyRoots(c) {
       return csub(zk, step);
     });
     z = next;
-    if (moved < 1e-17) break;
+    if (moved <= 1e-15) break; // the quartic's roots are polished by Newton's method after
   }
   return z;
 }

@@ -36,24 +36,39 @@ export function candidate(th, ds, crank, rocker) {
   const unit = Math.max(...lengths);
   const angle = Math.atan2(D[1] - A[1], D[0] - A[0]);
   const scaled = lengths.map((x) => x / unit);
-  let probe;
-  try {
-    probe = new FourBar(...scaled);
-  } catch (err) {
-    return null;
-  }
   const place = (z, k) => {
     const w = rot(th[k], z);
     return rot(-angle, [(w[0] + ds[k][0] - A[0]) / unit, (w[1] + ds[k][1] - A[1]) / unit]);
   };
   const B = th.map((_, k) => place(zB, k)), C = th.map((_, k) => place(zC, k));
   const thetaIn = B.map(([x, y]) => Math.atan2(y, x));
-  const side = B.map((b, k) => Math.sign((probe.d - b[0]) * (C[k][1] - b[1]) - -b[1] * (C[k][0] - b[0])));
+  const dx = scaled[3];
+  const side = B.map((b, k) => Math.sign((dx - b[0]) * (C[k][1] - b[1]) - -b[1] * (C[k][0] - b[0])));
   const branch = side[0] !== 0 ? side[0] : 1;
   const hinge = Math.atan2(zC[1] - zB[1], zC[0] - zB[0]);
   const body = rot(-hinge, [-zB[0], -zB[1]]);
-  const model = new FourBar(...scaled, { branch, coupler: [body[0] / unit, body[1] / unit] });
-  const pose = model.solve(thetaIn);
+  let model;
+  try {
+    // FourBar refuses one link at least as long as the other three together
+    model = new FourBar(...scaled, { branch, coupler: [body[0] / unit, body[1] / unit] });
+  } catch (err) {
+    return null;
+  }
+  // the input's path each way from the first pose to the last: its ends and the angles
+  // k pi inside it, where the diagonal BD is extreme (mech._driving.input_travel)
+  const paths = [1, -1].map((sense) => {
+    let travel = 0;
+    for (let k = 1; k < th.length; k++) travel += ((sense * (thetaIn[k] - thetaIn[k - 1])) % TURN + TURN) % TURN;
+    if (travel >= TURN) return null;
+    const start = thetaIn[0];
+    const [lo, hi] = sense > 0 ? [start, start + travel] : [start - travel, start];
+    const critical = [lo, hi];
+    for (let m = Math.ceil(lo / Math.PI); m <= Math.floor(hi / Math.PI); m++) critical.push(m * Math.PI);
+    return { sense, travel, critical };
+  });
+  // one solve for the poses and both paths
+  const angles = thetaIn.concat(...paths.map((p) => (p ? p.critical : [])));
+  const pose = model.solve(angles);
   let poseError = 0;
   for (let k = 0; k < th.length; k++) {
     const P = rot(angle, [pose.Px[k], pose.Py[k]]);
@@ -61,21 +76,16 @@ export function candidate(th, ds, crank, rocker) {
     poseError = Math.max(poseError, Math.hypot(P[0] - (ds[k][0] - A[0]) / unit, P[1] - (ds[k][1] - A[1]) / unit),
       Math.abs(wrap(turned - th[k])));
   }
-  if (!pose.valid.every(Boolean)) poseError = Infinity;
-  let direction = 0, orderable = false, travelled = 0;
-  for (const sense of [1, -1]) {
-    let travel = 0;
-    for (let k = 1; k < th.length; k++) travel += ((sense * (thetaIn[k] - thetaIn[k - 1])) % TURN + TURN) % TURN;
-    if (travel >= TURN) continue;
-    orderable = true;
-    const start = thetaIn[0];
-    const [lo, hi] = sense > 0 ? [start, start + travel] : [start - travel, start];
-    const critical = [lo, hi];
-    for (let m = Math.ceil(lo / Math.PI); m <= Math.floor(hi / Math.PI); m++) critical.push(m * Math.PI);
-    if (model.solve(critical).valid.every(Boolean)) {
-      direction = sense;
-      travelled = travel;
-      break;
+  if (!pose.valid.slice(0, th.length).every(Boolean)) poseError = Infinity;
+  let direction = 0, travelled = 0, offset = th.length;
+  const orderable = paths.some((p) => p !== null);
+  for (const p of paths) {
+    if (p === null) continue;
+    const ok = pose.valid.slice(offset, offset + p.critical.length).every(Boolean);
+    offset += p.critical.length;
+    if (ok && direction === 0) {
+      direction = p.sense;
+      travelled = p.travel;
     }
   }
   const defects = {
