@@ -21,7 +21,7 @@ $(STAMP): requirements.txt pyproject.toml
 setup: $(STAMP)
 
 ## Set everything up and build the book (fails on any warning or failing cell).
-book: $(STAMP) browser-deps
+book: $(STAMP) browser-deps node-deps
 	set -o pipefail; PYTHONPATH=$(CURDIR) $(BIN)/jupyter-book build book -n -W --keep-going 2>&1 | tee $(VENV)/book-build.log
 	$(BIN)/python book/_check_offline.py book/_build/html
 	# the whole book as one PDF, printed offline by Chromium (book/_pdf.py), linked from the landing page
@@ -36,7 +36,8 @@ check-generated: $(STAMP) node-deps
 	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check
 
 ## Debian's nodejs: runs the generated JavaScript kernels in tests/generated/test_js_kernels.py
-## and in the generator's numeric check; installed with apt-get only when missing.
+## and in the generator's numeric check, and draws the live design figures' first state when
+## the book is built (figures/live_design.py); installed with apt-get only when missing.
 node-deps:
 	@if command -v node >/dev/null; then :; \
 	elif [ "$$(id -u)" = 0 ]; then \

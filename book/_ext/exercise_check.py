@@ -21,6 +21,7 @@ The tables are cached in the doctree folder, keyed by a hash of the package's so
 
 import hashlib
 import json
+import os
 from pathlib import Path
 
 from docutils import nodes
@@ -78,8 +79,14 @@ def _cached_tables(app, numbers):
     except (OSError, ValueError):
         cache = {"key": key, "tables": {}}
     missing = [n for n in numbers if n not in cache["tables"]]
-    for n in missing:
-        cache["tables"][n] = exercise_table(n)
+    if len(missing) > 1:
+        # about 0.02 to 0.8 s per variant: the page's exercises side by side on every core
+        from concurrent.futures import ProcessPoolExecutor
+
+        with ProcessPoolExecutor(max_workers=min(len(missing), os.cpu_count() or 1)) as pool:
+            cache["tables"].update(zip(missing, pool.map(exercise_table, missing)))
+    elif missing:
+        cache["tables"][missing[0]] = exercise_table(missing[0])
     if missing:
         cache_file.parent.mkdir(parents=True, exist_ok=True)
         cache_file.write_text(json.dumps(cache))
