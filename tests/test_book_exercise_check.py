@@ -112,3 +112,18 @@ def test_page_table_holds_the_answers_check_compares_with():
             # the value itself is right, and 3 % beyond it (plus 0.01) is wrong, for check
             right, wrong = check_answers(get("2-3"), seed, [(q["key"], repr(v)), (q["key"], repr(v * 1.03 + 0.02))])
             assert right.status == "right" and wrong.status == "wrong"
+
+
+def test_every_exercise_has_its_check_on_one_page():
+    """The ``exercise-check`` directives of the book's pages list each of the 32 exercises once."""
+    import re
+
+    from mech.exercises import EXERCISES
+
+    listed = []
+    for page in sorted((ROOT / "book").rglob("*.md")):
+        if "_build" in page.parts:
+            continue
+        for line in re.findall(r"^```\{exercise-check\}(.*)$", page.read_text(encoding="utf-8"), re.M):
+            listed += line.split()
+    assert sorted(listed) == sorted(EXERCISES)

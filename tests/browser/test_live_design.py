@@ -33,7 +33,10 @@ ROOT = Path(__file__).resolve().parents[2]
 HTML = Path(os.environ.get("MECH_BOOK_HTML", ROOT / "book" / "_build" / "html"))
 GUIDANCE = "synthesis/guidance.html"
 FUNCTION = "synthesis/function-generation.html"
-EXERCISES = "kinematics/exercises.html"
+# exercise pages and the exercises of theirs that the answer files use
+EXERCISE_PAGES = {"kinematics/exercises.html": ["2-1", "2-2", "2-3", "2-6"],
+                  "synthesis/function-generation.html": ["2-28", "2-29"],
+                  "synthesis/guidance.html": ["2-27"]}
 
 
 def _page_or_skip(rel):
@@ -203,17 +206,17 @@ def test_function_generation_in_the_browser(chromium):
 
 
 def _answer_files(tmp_path):
-    """20 answer files of the exercises on the kinematics exercise page: one answer right,
-    one wrong, one in another unit, one malformed or missing, by exercise and seed."""
+    """20 answer files (12 of the kinematics exercise page, 4 each of the function-generation
+    and guidance pages): answers right, wrong, in another unit, malformed, by key and seed."""
     from mech.exercises import get
     from mech.exercises._sheet import answer_quantities, solved_variant
 
     unit_of = {"deg": (np.radians, "rad"), "mm": (lambda v: v / 1000.0, "m")}
     files = []
     rng = np.random.default_rng(7)
-    numbers = ["2-1", "2-2", "2-3", "2-6"]
-    for k in range(20):
-        number, seed = numbers[k % 4], int(rng.integers(0, 100))
+    plan = [(page, numbers) for page, numbers in EXERCISE_PAGES.items() for _ in range(12 if len(numbers) == 4 else 4)]
+    for k, (page, numbers) in enumerate(plan):
+        number, seed = numbers[k % len(numbers)], int(rng.integers(0, 100))
         _, solution = solved_variant(get(number), seed)
         lines = [f"seed = {seed}"]
         for j, q in enumerate(answer_quantities(solution)):
@@ -234,7 +237,7 @@ def _answer_files(tmp_path):
             lines.append(f"{q.key} = {text}")
         path = tmp_path / f"answers_{k:02d}.txt"
         path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-        files.append((number, seed, path))
+        files.append((page, number, seed, path))
     return files
 
 
@@ -248,43 +251,45 @@ def _cli_verdicts(number, path, tmp_path):
 
 
 def test_exercise_check_agrees_with_the_cli(chromium, tmp_path):
-    _page_or_skip(EXERCISES)
+    for page in EXERCISE_PAGES:
+        _page_or_skip(page)
     files = _answer_files(tmp_path)
     problems = []
 
     async def job(browser, base):
-        page = await _open(browser, base, EXERCISES, problems)
-        root = page.locator(".mech-exercise-check").first
-        await root.scroll_into_view_if_needed()
         out = []
-        for number, seed, path in files:
-            await root.locator("[data-control=exercise]").select_option(number)
-            await root.locator("[data-control=seed]").fill(str(seed))
-            await root.locator("[data-control=seed]").dispatch_event("change")
-            await page.wait_for_function(
-                "([el, n]) => el.querySelector('[data-part=answers]').dataset.number === n",
-                arg=[await root.element_handle(), number])
-            answers = {}
-            for line in path.read_text(encoding="utf-8").splitlines()[1:]:
-                key, _, value = line.partition("=")
-                answers[key.strip()] = value.strip()
-            for key, value in answers.items():
-                await root.locator(f"input[data-key='{key}']").fill(value)
-            await root.locator("[data-control=check]").click()
-            await page.wait_for_function("el => el.dataset.verdicts", arg=await root.element_handle())
-            out.append(json.loads(await root.get_attribute("data-verdicts")))
-            await root.evaluate("el => { delete el.dataset.verdicts; }")
-        await page.close()
+        for rel in EXERCISE_PAGES:
+            page = await _open(browser, base, rel, problems)
+            root = page.locator(".mech-exercise-check").first
+            await root.scroll_into_view_if_needed()
+            for where, number, seed, path in files:
+                if where != rel:
+                    continue
+                await root.locator("[data-control=exercise]").select_option(number)
+                await root.locator("[data-control=seed]").fill(str(seed))
+                await root.locator("[data-control=seed]").dispatch_event("change")
+                await page.wait_for_function(
+                    "([el, n]) => el.querySelector('[data-part=answers]').dataset.number === n",
+                    arg=[await root.element_handle(), number])
+                for line in path.read_text(encoding="utf-8").splitlines()[1:]:
+                    key, _, value = line.partition("=")
+                    await root.locator(f"input[data-key='{key.strip()}']").fill(value.strip())
+                await root.locator("[data-control=check]").click()
+                await page.wait_for_function("el => el.dataset.verdicts", arg=await root.element_handle())
+                out.append(((where, number, seed, path), json.loads(await root.get_attribute("data-verdicts"))))
+                await root.evaluate("el => { delete el.dataset.verdicts; }")
+            await page.close()
         return out
 
     pages = _run(chromium, job)
     assert not problems, problems
+    assert len(pages) == len(files) == 20
     compared, statuses = 0, {}
-    for (number, seed, path), page in zip(files, pages):
+    for (where, number, seed, path), page in pages:
         cli = _cli_verdicts(number, path, tmp_path)
-        assert page == cli, (number, seed, path.read_text(), page, cli)
+        assert page == cli, (where, number, seed, path.read_text(), page, cli)
         compared += len(cli)
         for s in cli.values():
             statuses[s] = statuses.get(s, 0) + 1
-    print(f"{len(files)} answer files, {compared} answers, the same verdicts: {statuses}")
+    print(f"{len(files)} answer files on {len(EXERCISE_PAGES)} pages, {compared} answers, the same verdicts: {statuses}")
     assert {"right", "wrong", "malformed"} <= set(statuses)
