@@ -284,12 +284,18 @@ def test_exercise_check_agrees_with_the_cli(chromium, tmp_path):
     pages = _run(chromium, job)
     assert not problems, problems
     assert len(pages) == len(files) == 20
-    compared, statuses = 0, {}
+    compared, statuses, converted = 0, {}, 0
     for (where, number, seed, path), page in pages:
         cli = _cli_verdicts(number, path, tmp_path)
         assert page == cli, (where, number, seed, path.read_text(), page, cli)
         compared += len(cli)
         for s in cli.values():
             statuses[s] = statuses.get(s, 0) + 1
-    print(f"{len(files)} answer files on {len(EXERCISE_PAGES)} pages, {compared} answers, the same verdicts: {statuses}")
+        for line in path.read_text(encoding="utf-8").splitlines()[1:]:
+            key, _, value = line.partition("=")
+            if value.strip().endswith((" rad", " m", " kN")) and cli[key.strip()] == "right":
+                converted += 1          # right after the unit conversion
+    print(f"{len(files)} answer files on {len(EXERCISE_PAGES)} pages, {compared} answers, the same verdicts: "
+          f"{statuses}; {converted} of the right ones in another unit (rad, m, kN)")
     assert {"right", "wrong", "malformed"} <= set(statuses)
+    assert converted >= 5
