@@ -7,7 +7,9 @@
 //
 // `render(state)` returns the figure's HTML as a string (no DOM): the build runs it under
 // Node to write the initial state into the page, and `mount(root)` redraws with it in the
-// browser. A state is {poses: [[theta_deg, x, y], ...] (five), n: 2..5, pick, t, pivots}.
+// browser. A state is {poses: [[theta_deg, x, y], ...] (five), n: 2..5, pick (the design
+// drawn), t (its motion, 0..1), pivots (two moving pivots for two or three poses), choose
+// (two places, 0..1, on the four-pose curve)}.
 
 import { FourBar, grashof } from "./planar.js";
 import { dyadForCirclePoint, pole } from "./guidance.js";
