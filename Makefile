@@ -22,7 +22,7 @@ setup: $(STAMP)
 
 ## Set everything up and build the book (fails on any warning or failing cell): `jupyter-book
 ## build` with Sphinx's parallel jobs (book/_build_book.py), pages read and executed on every core.
-book: $(STAMP) browser-deps
+book: $(STAMP) browser-deps node-deps
 	# The derivation pages run in check mode: a stale generated module fails the build (it is
 	# never rewritten by it), and each passed check goes to a record the slow freshness test reads.
 	mkdir -p book/_build
@@ -44,7 +44,8 @@ check-generated: $(STAMP) node-deps
 	PYTHONPATH=$(CURDIR) $(BIN)/python -m derivations --check $(ARGS)
 
 ## Debian's nodejs: runs the generated JavaScript kernels in tests/generated/test_js_kernels.py
-## and in the generator's numeric check; installed with apt-get only when missing.
+## and in the generator's numeric check, and draws the live design figures' first state when
+## the book is built (figures/live_design.py); installed with apt-get only when missing.
 node-deps:
 	@if command -v node >/dev/null; then :; \
 	elif [ "$$(id -u)" = 0 ]; then \
