@@ -205,7 +205,7 @@ def _slider_design(s, coupler, origin, rotation, theta, units):
     if (p, q) != (0.0, 0.0) and abs(complex(p, q) - b) > 0.0:
         joints["P"] = place(P)
         links["rod"] = ("B", "C", "P")
-    guide = (place(complex(0.0, e)), complex(np.exp(1j * rotation)))
+    guide = (complex(place(complex(0.0, e))), complex(np.exp(1j * rotation)))
     return Design("slider-crank", "crank" if full else "rocking crank",
                   dict(a=a, b=b, e=e, p=p, q=q, branch=s.branch), complex(origin), float(rotation), float(theta),
                   joints, links, "A", "crank", full, gamma_min if full else 0.0, guide, units, place(curve))
