@@ -4,7 +4,8 @@ The targets are files in ``benchmarks/targets/``, each with its source in its he
 
 - ``*.closed.csv``, ``*.open.csv``: the point lists of the literature targets (Yu et al.
   2007, McGarva 1994, Ullah & Kota 1997, Bulatovic et al. 2016, Hernandez et al. 2021) and
-  the drawn arcs of the test folders of the four-bar-rs project, copied as data;
+  the drawn arcs of the test folders of the four-bar-rs project, copied as data, and the
+  curves of three linkages given there by their parameters (Wu et al. 2011, Hsieh 2017);
 - ``letters/*.svg``: capital letters drawn as SVG paths (read by `mech.atlas.read_target`,
   closed or open as drawn);
 - ``random/*.csv``: coupler curves of random four-bars (closed, or an arc of 40 % of the
@@ -91,6 +92,46 @@ def write_random_targets():
         (folder / f"{name}.{'closed' if closed else 'open'}.csv").write_text("\n".join(head + rows) + "\n")
 
 
+#: linkages given by their parameters in four-bar-rs's test folder (its older RON layout:
+#: driver pivot p1, ground angle a, ground l1, driver l2, coupler l3, follower l4, coupler
+#: point at l5 from the driver's pin at the angle g from the coupler line), with the source
+LINKAGE_TARGETS = {
+    "wu1": dict(p1=10 + 14j, a=0.1745, l1=11.0, l2=6.0, l3=8.0, l4=10.0, l5=7.0, g=0.6981, file="test-fb/wu1.closed.ron",
+                cite="Wu, J., Ge, Q. J., Gao, F. and Guo, W. Z. (2011). On the extension of a Fourier descriptor "
+                     "based method for planar four-bar linkage synthesis for generation of open and closed paths. "
+                     "J. Mechanisms Robotics 3(3)."),
+    "wu2": dict(p1=-2 - 3j, a=0.2, l1=3.0, l2=1.0, l3=2.0, l4=1.6, l5=0.5, g=0.3, file="test-fb/wu2.open.ron",
+                cite="Wu, Ge, Gao and Guo (2011), J. Mechanisms Robotics 3(3)."),
+    "c-shape": dict(p1=-2 - 3j, a=0.0, l1=6.0, l2=6.0, l3=8.0, l4=10.0, l5=2.0, g=1.0, file="test-fb/c-shape-1.open.ron",
+                    cite="C.-Y. Hsieh (2017). Synthesis of four-bar linkage for path generation and motion generation "
+                         "using Fourier descriptor. Master's thesis, National Taiwan University."),
+}
+
+
+def write_linkage_targets():
+    """Write the curves of `LINKAGE_TARGETS`: the full cycle of a crank, else the input's range (branch +1)."""
+    for name, t in LINKAGE_TARGETS.items():
+        f = FourBar(t["l2"], t["l3"], t["l4"], t["l1"], coupler=(t["l5"] * math.cos(t["g"]), t["l5"] * math.sin(t["g"])))
+        theta = np.linspace(-np.pi, np.pi, 7200, endpoint=False)
+        ok = f.solve(theta).valid
+        closed = bool(ok.all())
+        if not closed:
+            # the input rocks over one interval; start it at its first valid angle after a gap
+            start = int(np.flatnonzero(ok & ~np.roll(ok, 1))[0])
+            theta, ok = np.roll(theta, -start), np.roll(ok, -start)
+            theta = np.unwrap(theta[: int(np.argmin(ok))])
+        z = t["p1"] + np.exp(1j * t["a"]) * f.solve(theta).P
+        z = z[:: max(1, len(z) // 120)]
+        head = [f"# Coupler curve of the linkage in four-bar-rs (github.com/KmolYuan/four-bar-rs, licence "
+                f"AGPL-3.0-or-later), file {t['file']} (commit 00e68872), read as FourBar({t['l2']}, {t['l3']}, "
+                f"{t['l4']}, {t['l1']}, coupler=(l5 cos g, l5 sin g)) with l5 = {t['l5']}, g = {t['g']}, on branch +1,",
+                f"# placed at the driver pivot {t['p1']} with the ground turned by {t['a']} rad; "
+                + ("the full cycle." if closed else "the input's whole range, from one dead point to the other."),
+                f"# Literature: {t['cite']}", "x,y"]
+        rows = [f"{float(w.real)!r},{float(w.imag)!r}" for w in z]
+        (TARGETS / f"{name}.{'closed' if closed else 'open'}.csv").write_text("\n".join(head + rows) + "\n")
+
+
 def targets(full, only):
     """``[(name, source file, closed, points)]``; by default one random target of each kind."""
     out = []
@@ -147,6 +188,7 @@ def main(argv=None):
     args = parser.parse_args(argv)
     if args.write_targets:
         write_random_targets()
+        write_linkage_targets()
         return 0
     n, starts, iterations = (100_000, 8, 400) if args.full else (10_000, 2, 150)
     t0 = time.perf_counter()
