@@ -155,6 +155,7 @@ def read_target(path, *, samples=256):
     (array([0.+0.j, 1.+1.j, 2.+0.j]), None)
     """
     name = _file(path)
+    samples = integer("samples", samples, minimum=3, maximum=10**7)
     if name.lower().endswith(".svg"):
         return read_svg(name, samples=samples)
     return read_points(name), None

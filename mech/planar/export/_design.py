@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from mech._errors import InputTypeError
-from mech._validate import _show, planar_point, real_number
+from mech._validate import _show, planar_point, planar_points, real_number
 from mech.planar.kinematics import FourBar, Linkage, SliderCrank
 from mech.planar.structure import grashof
 
@@ -127,7 +127,7 @@ class Design:
 
     def place(self, w):
         """Standard-frame points (complex) in the design's frame."""
-        return self.origin + np.exp(1j * self.rotation) * np.asarray(w)
+        return self.origin + np.exp(1j * self.rotation) * planar_points("w", w)
 
 
 # ----------------------------------------------------------------------------- four-bar
@@ -395,7 +395,7 @@ def design_of(obj, *, units="", theta=None):
         inner = getattr(obj, attr, None)
         if isinstance(inner, SliderCrank):
             return _slider_design(inner, getattr(obj, "coupler", None), origin, rotation, theta, units)
-    raise InputTypeError(f"Expected a FourBar, SliderCrank, Linkage or a synthesis result that holds one, "
+    raise InputTypeError(f"Expected `obj` to be a FourBar, SliderCrank, Linkage or a synthesis result that holds one, "
                          f"got {_show(obj)}")
 
 
