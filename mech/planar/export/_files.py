@@ -180,6 +180,13 @@ def _slider_block(c, u, w):
     return [c - w * u - 0.5 * w * v, c + w * u - 0.5 * w * v, c + w * u + 0.5 * w * v, c - w * u + 0.5 * w * v]
 
 
+def _guide_ends(d):
+    """Ends of the drawn guide line: a design's size either side of the slider pin."""
+    g, u = d.guide
+    c = g + u * ((d.joints["C"] - g) / u).real
+    return c - d.size * u, c + d.size * u
+
+
 def _shapes(d, w):
     """``{link: (outline vertices with bulges, pin names)}`` for every link."""
     tol = 1e-12 * d.size
@@ -242,8 +249,7 @@ def svg_text(design, *, link_width=None, hole_diameter=None):
         lines.append(f'<circle id="pin-{name}" cx="{z.real:.10g}" cy="{-z.imag:.10g}" r="{0.5 * h:.10g}"/>')
     lines.append("</g>")
     if d.guide is not None:
-        g, u = d.guide
-        a, b = g - d.size * u, g + 2 * d.size * u
+        a, b = _guide_ends(d)
         lines.append(f'<path id="guide" d="M {fmt(a)} L {fmt(b)}" stroke="#888" stroke-dasharray="{4 * stroke:.6g}" '
                      f'stroke-width="{stroke:.6g}"/>')
     if d.curve is not None and len(d.curve):
@@ -326,9 +332,8 @@ def write_dxf(design, path, *, link_width=None, hole_diameter=None):
             z = d.joints[p]
             msp.add_circle((z.real, z.imag), 0.5 * h, dxfattribs={"layer": name})
     if d.guide is not None:
-        g, u = d.guide
         doc.layers.add("guide", color=8)
-        a, b = g - d.size * u, g + 2 * d.size * u
+        a, b = _guide_ends(d)
         msp.add_line((a.real, a.imag), (b.real, b.imag), dxfattribs={"layer": "guide"})
     doc.saveas(path)
     return w, h
