@@ -50,8 +50,8 @@ sys.path.insert(0, str(HERE.parent))
 
 from bench_coupler_curve import machine, versions  # noqa: E402
 
-from mech.atlas import Atlas, build_atlas, find_linkages, query, read_target, refine  # noqa: E402
-from mech.planar import FourBar  # noqa: E402
+from mech.atlas import Atlas, build_atlas, find_linkages, query, read_target, refine, resample  # noqa: E402
+from mech.planar import FourBar, grashof  # noqa: E402
 from mech.planar.export import design_of  # noqa: E402
 
 #: (name, seed, closed, noise): the random targets; the first of each kind runs by default
@@ -131,6 +131,65 @@ def write_linkage_targets():
                 f"# Literature: {t['cite']}", "x,y"]
         rows = [f"{float(w.real)!r},{float(w.imag)!r}" for w in z]
         (TARGETS / f"{name}.{'closed' if closed else 'open'}.csv").write_text("\n".join(head + rows) + "\n")
+
+
+#: the linkages the literature gives for its targets, as four-bar-rs stores them (files
+#: syn-examples/refer/*.closed.ron at commits 1b3dba64 and d9a0de70): driver pivot, ground
+#: angle a, ground l1, driver l2, coupler l3, follower l4, coupler point l5 at angle g
+LITERATURE = {
+    "yu1": dict(p0=-11.55 - 20.14j, a=2.981022362406315, l1=65.87, l2=17.43, l3=25.46, l4=64.57, l5=23.47,
+                g=2.834414705238791),
+    "yu2": dict(p0=-44.87 + 71.09j, a=5.187118536927147, l1=76.77, l2=27.31, l3=46.44, l4=72.55, l5=60.42,
+                g=5.489060497522167),
+    "mcgarva": dict(p0=54.6 - 35.5j, a=1.95, l1=47.5, l2=24.3, l3=48.1, l4=47.0, l5=85.6, g=0.9599310885968813),
+    "ullah": dict(p0=-11.77 + 5.38j, a=4.9031534676276705, l1=9.33, l2=1.41, l3=7.39, l4=3.6, l5=13.57,
+                  g=0.7452555906015788),
+}
+
+
+def shape_error(target, curve, samples=128, fine=8):
+    """Relative RMS distance of a closed curve from a closed target, best aligned.
+
+    Both are resampled at equal arc-length steps (the curve `fine` times more densely); every
+    start of the curve (to 1/fine of a step) and both directions are tried, each with its
+    best similarity (least squares); the RMS distance is divided by the target's RMS radius.
+    The measure of `Match.relative_error`, written out here so that a linkage from elsewhere
+    can be scored the same way.
+    """
+    t = resample(target, samples)
+    t = t - t.mean()
+    dense = resample(curve, samples * fine)
+    best = np.inf
+    for run in (dense, np.roll(dense[::-1], 1)):
+        for shift in range(fine):
+            rows = np.roll(run, -shift)[::fine]
+            rows = np.array([np.roll(rows, -k) for k in range(samples)])
+            a = rows - rows.mean(axis=1)[:, None]
+            w = np.einsum("ij,j->i", a.conj(), t) / np.sum(np.abs(a) ** 2, axis=1)
+            err = np.sqrt(np.mean(np.abs(t[None, :] - w[:, None] * a) ** 2, axis=1))
+            best = min(best, float(err.min()))
+    return best / float(np.sqrt(np.mean(np.abs(t) ** 2)))
+
+
+def literature_errors(rows):
+    """The literature linkage's own error on its target, read on either branch and either side."""
+    for row in rows:
+        ref = LITERATURE.get(row["name"])
+        if ref is None:
+            continue
+        target, _ = read_target(HERE / row["source"])
+        found = []
+        for branch in (1, -1):
+            for side in (1, -1):
+                f = FourBar(ref["l2"], ref["l3"], ref["l4"], ref["l1"], branch=branch,
+                            coupler=(ref["l5"] * math.cos(ref["g"]), side * ref["l5"] * math.sin(ref["g"])))
+                sol = f.solve(np.linspace(0, 2 * np.pi, 4096, endpoint=False))
+                if sol.valid.all():
+                    found.append((shape_error(target, sol.P), branch, side))
+        if found:
+            err, branch, side = min(found)
+            row["literature"] = {"error": err, "branch": branch, "coupler_side": side,
+                                 "kind": grashof(ref["l2"], ref["l3"], ref["l4"], ref["l1"]).kind}
 
 
 def targets(full, only):
@@ -220,6 +279,11 @@ def main(argv=None):
               + f"  {a['kind']:14s} motor {a['motor']} {'turns' if a['full_turn'] else 'rocks'}  "
               f"gamma_min {a['gamma_min_deg']:5.1f} deg  ratio {a['link_ratio']}", flush=True)
         rows.append(row)
+    literature_errors(rows)
+    for r in rows:
+        if "literature" in r:
+            lit = r["literature"]
+            print(f"{r['name']:18s} the literature's linkage ({lit['kind']}): {100 * lit['error']:.2f} %", flush=True)
     closed_rows = [r for r in rows if r["closed"]]
     summary = {
         "targets": len(rows),
