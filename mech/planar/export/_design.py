@@ -360,7 +360,8 @@ def design_of(obj, *, units="", theta=None):
     A it is the folded angle at C between coupler and rocker, whose cosine
     ``(b^2 + c^2 - f^2)/(2 b c)`` is monotonic in the diagonal ``f = BD``; f runs over
     ``[max(|d - a|, |b - c|), min(d + a, b + c)]``, so the extreme values sit at the ends
-    (eq. 2-6 of the planar chapter); for a slider-crank ``cos(gamma_min) = (a + |e|)/b``
+    (eq. 2-30 and the rule F55 of the textbook); driven at D, the same holds at B with
+    ``f = AC``. For a slider-crank ``cos(gamma_min) = (a + |e|)/b``
     (F57). For another `Linkage` it is the smallest folded angle at the joint of each
     RRR group over 1441 input angles of a turn.
 

@@ -209,6 +209,15 @@ def svg_text(design, *, link_width=None, hole_diameter=None):
     Returns
     -------
     str
+
+    Examples
+    --------
+    >>> import xml.etree.ElementTree as ET
+    >>> from mech.planar import FourBar
+    >>> from mech.planar.export import design_of, svg_text
+    >>> root = ET.fromstring(svg_text(design_of(FourBar(30, 70, 60, 80, coupler=(20, 10)))))
+    >>> sorted(p.get("id") for p in root.iter("{http://www.w3.org/2000/svg}path") if p.get("id"))
+    ['coupler-curve', 'link-coupler', 'link-crank', 'link-frame', 'link-rocker']
     """
     d = _check_design(design)
     w, h = _cutting(d, link_width, hole_diameter)
