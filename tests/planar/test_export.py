@@ -196,6 +196,15 @@ def test_synthesis_results_export(tmp_path):
     c = centric_slider_cranks(theta[:4], P[:4])[0]
     d = design_of(c, theta=float(c.theta_input[0]))
     assert d.type == "slider-crank" and abs(d.joints["A"] - c.origin) < 1e-12 * d.size
+    # the same slider-crank built as a Linkage (crank and RRP group): sampled against closed form
+    g = design_of(c.guidance)
+    assert g.type == "slider-crank linkage" and g.links["block"] == ("C",)
+    assert g.gamma_min == pytest.approx(d.gamma_min, abs=1e-5)
+    assert abs((g.guide[0] - d.guide[0]) / d.guide[1]).imag < 1e-9 * d.size     # one guide line
+    assert from_json(to_json(g)) == g
+    write_dxf(g, tmp_path / "g.dxf")
+    block = ezdxf.readfile(tmp_path / "g.dxf").modelspace().query('LWPOLYLINE[layer=="block"]')
+    assert len(block) == 1 and len(block[0]) == 4
     for obj in (quick_return_crank_rocker(1.3, 100.0, np.radians(40.0), crank=31.4),
                 quick_return_slider_crank(1.25, 100.0, alpha=np.radians(25.0))):
         d = design_of(obj)

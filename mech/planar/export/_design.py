@@ -15,7 +15,7 @@ import numpy as np
 
 from mech._errors import InputTypeError
 from mech._validate import _show, planar_point, planar_points, real_number
-from mech.planar.kinematics import FourBar, Linkage, SliderCrank
+from mech.planar.kinematics import FourBar, Guide, Linkage, SliderCrank
 from mech.planar.structure import grashof
 
 __all__ = ["Design", "design_of"]
@@ -50,7 +50,8 @@ class Design:
     ----------
     type : str
         ``"four-bar"``, ``"slider-crank"``, ``"Watt six-bar"``, ``"Stephenson six-bar"`` or
-        ``"linkage"`` (another revolute linkage driven by one crank).
+        ``"slider-crank linkage"`` (a `Linkage` of a crank and an RRP group) or ``"linkage"``
+        (another `Linkage` of revolute joints and sliders on fixed guides, driven by one crank).
     kind : str
         The four-bar's Grashof type (``grashof(a, b, c, d).kind``); for a slider-crank
         ``"crank"`` or ``"rocking crank"``; for a linkage ``"crank"`` or ``"rocking crank"``.
@@ -219,6 +220,8 @@ _BUILD = {
                                      length=st.get("length"), driver=st.get("driver")),
     "rrr": lambda lk, st: lk.rrr(st.links, pins=st.get("pins"), joint=st.get("joint"),
                                  lengths=st.get("lengths"), branch=st.get("branch")),
+    "rrp": lambda lk, st: lk.rrp(st.links, pin=st.get("pin"), guide=st.get("guide"), joint=st.get("joint"),
+                                 length=st.get("length"), branch=st.get("branch")),
 }
 
 
@@ -231,8 +234,11 @@ class _StepView:
 
     def get(self, key):
         v = self._data[key]
-        if isinstance(v, list) and len(v) == 2 and key == "at":
+        if key == "at":
             return complex(*v)
+        if key == "guide":
+            through = v["through"] if isinstance(v["through"], str) else complex(*v["through"])
+            return Guide(v["link"], through, v["angle"])
         return tuple(v) if isinstance(v, list) else v
 
 
@@ -244,14 +250,20 @@ def _rebuild(steps):
 
 
 def _steps_of(lk):
-    """The linkage's building steps as plain dicts; only revolute steps and one crank."""
+    """The linkage's building steps as plain dicts: points, one crank, RRR and RRP groups (fixed guides)."""
     out = []
     for st in lk._steps:
         if st.kind not in _BUILD:
-            raise ValueError(f"Expected a linkage of revolute joints driven by one crank, got a step "
+            raise ValueError(f"Expected a linkage of RRR and RRP groups driven by one crank, got a step "
                              f"{st.label!r} ({st.kind}) that the export does not draw")
         data = {k: ([v.real, v.imag] if isinstance(v, complex) else list(v) if isinstance(v, tuple) else v)
                 for k, v in st.data}
+        if st.kind == "rrp":
+            g = st.get("guide")
+            if g.link != "ground":
+                raise ValueError(f"Expected a slider on a guide fixed in the ground, got one in the link {g.link!r}")
+            through = g.through if isinstance(g.through, str) else [g.through.real, g.through.imag]
+            data["guide"] = {"link": g.link, "through": through, "angle": g.angle}
         if "at" in data and not isinstance(data["at"], list):
             data["at"] = [float(data["at"]), 0.0]
         out.append(dict(kind=st.kind, label=st.label, links=list(st.links), data=data))
@@ -274,7 +286,7 @@ def _linkage_design(lk, origin, rotation, theta, units):
     steps = _steps_of(lk)
     links = {"frame": []}
     crank = next(s for s in steps if s["kind"] == "crank")
-    groups = []
+    groups, sliders = [], []
     for s in steps:
         d = s["data"]
         if s["kind"] == "ground":
@@ -283,6 +295,10 @@ def _linkage_design(lk, origin, rotation, theta, units):
             links.setdefault(s["links"][0], []).append(s["label"])
         elif s["kind"] == "crank":
             links[s["links"][0]] = [d["pivot"], d["tip"]]
+        elif s["kind"] == "rrp":
+            links[s["links"][0]] = [d["pin"], d["joint"]]
+            links[s["links"][1]] = [d["joint"]]
+            sliders.append((d["pin"], d["joint"], d["guide"]))
         else:
             links[s["links"][0]] = [d["pins"][0], d["joint"]]
             links[s["links"][1]] = [d["pins"][1], d["joint"]]
@@ -299,6 +315,14 @@ def _linkage_design(lk, origin, rotation, theta, units):
         u = sol.points[p0][sol.valid] - sol.points[j][sol.valid]
         v = sol.points[p1][sol.valid] - sol.points[j][sol.valid]
         gam.append(float(np.min(_fold(np.abs(np.angle(u * np.conj(v)))))) if u.size else 0.0)
+    guide = None
+    for pin, joint, g in sliders:
+        # the rod against the normal to the guide: cos(gamma) = |sin(angle of rod to guide)|
+        e = np.exp(1j * g["angle"])
+        u = sol.points[joint][sol.valid] - sol.points[pin][sol.valid]
+        gam.append(float(np.min(np.pi / 2 - _fold(np.abs(np.angle(u * np.conj(e)))))) if u.size else 0.0)
+        through = g["through"]
+        guide = (complex(*through) if isinstance(through, list) else through, complex(e))
     if theta is None:
         theta = _default_theta(thetas, sol.valid)
     pose = lk.solve(np.array([real_number("theta", theta)]))
@@ -307,9 +331,13 @@ def _linkage_design(lk, origin, rotation, theta, units):
     place = lambda w: origin + np.exp(1j * rotation) * np.asarray(w)
     joints = {name: place(complex(pose.points[name][0])) for ps in links.values() for name in ps}
     curve = place(sol.points["P"][sol.valid]) if "P" in sol.points else None
-    return Design(_chain_type(links), "crank" if full else "rocking crank", dict(steps=steps), complex(origin),
+    if guide is not None:
+        through = pose.points[guide[0]][0] if isinstance(guide[0], str) else guide[0]
+        guide = (complex(place(complex(through))), complex(np.exp(1j * rotation) * guide[1]))
+    kind = _chain_type(links) if guide is None else ("slider-crank linkage" if len(links) == 4 else "linkage")
+    return Design(kind, "crank" if full else "rocking crank", dict(steps=steps), complex(origin),
                   float(rotation), float(theta), joints, links, crank["data"]["pivot"], crank["links"][0], full,
-                  min(gam), None, units, curve)
+                  min(gam), guide, units, curve)
 
 
 # --------------------------------------------------------------------------- the entry

@@ -192,7 +192,7 @@ def _shapes(d, w):
     tol = 1e-12 * d.size
     out = {}
     for name, pins in d.links.items():
-        if name == "slider" and d.guide is not None:
+        if len(pins) == 1 and name != "frame" and d.guide is not None:
             out[name] = ([(z, 0.0) for z in _slider_block(d.joints[pins[0]], d.guide[1], w)], pins)
         else:
             out[name] = (_outline([d.joints[p] for p in pins], 0.5 * w, tol), pins)
