@@ -155,8 +155,8 @@ def _fourbar_design(f, origin, rotation, theta, units):
     pose = f.solve(real_number("theta", theta))
     if not bool(pose.valid):
         raise ValueError(f"Expected `theta` at which the four-bar assembles, got {theta!r}")
-    if motor == "D":
-        # driven from D, the curve needs both branches of the A-parametrisation
+    if motor == "D" or not full:
+        # driven from D (or through dead centres), the curve takes both branches of A's angle
         other = FourBar(a, b, c, d, branch=-f.branch, coupler=f.coupler).solve(thetas[::-1])
         curve = np.concatenate([curves[0].P[curves[0].valid], other.P[other.valid]])
     else:
@@ -170,11 +170,8 @@ def _fourbar_design(f, origin, rotation, theta, units):
         links = {"frame": ("A", "D"), "crank": ("D", "C"), "coupler": ("B", "C", "P"), "rocker": ("A", "B")}
     else:
         links = {"frame": ("A", "D"), "crank": ("A", "B"), "coupler": ("B", "C", "P"), "rocker": ("D", "C")}
-    if p == 0.0 and q == 0.0:
-        # the coupler point is the pin B itself: one hole
-        del joints["P"]
-        links["coupler"] = ("B", "C")
-    elif abs(complex(p, q) - f.b) == 0.0:
+    if complex(p, q) in (0j, complex(f.b)):
+        # the coupler point is the pin B or C itself: no hole of its own
         del joints["P"]
         links["coupler"] = ("B", "C")
     return Design("four-bar", g.kind, dict(a=a, b=b, c=c, d=d, p=float(p), q=float(q), branch=f.branch),
