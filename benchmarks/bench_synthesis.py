@@ -301,7 +301,7 @@ def main(argv=None):
         "machine": machine(),
         "versions": versions(),
         "load_average": list(os.getloadavg()),
-        "settings": {"full": args.full, "starts": starts, "iterations": iterations, **atlas_note},
+        "settings": {"full": args.full, "starts": starts, "iterations": iterations, "only": args.only, **atlas_note},
         "error": "relative RMS distance at equal arc-length steps, best aligned, over the target's RMS radius "
                  "(Match.relative_error)",
         "summary": summary,
