@@ -30,6 +30,7 @@ import mech.spatial as sp
 import mech.spherical as sph
 import mech.planar.synthesis as sy
 import mech.atlas as at
+import mech.planar.export as xp
 from mech.exercises import (chapter2, chapter2_analysis, chapter2_instant_centres, chapter2_quick_return,
                             chapter2_reactions, chapter2_relative_motion, chapter2_synthesis)
 
@@ -39,7 +40,8 @@ MODULES = {"mech": mech, "planar": pl, "spatial": sp, "spherical": sph, "exercis
            "exercises.chapter2_quick_return": chapter2_quick_return,
            "exercises.chapter2_relative_motion": chapter2_relative_motion,
            "exercises.chapter2_reactions": chapter2_reactions,
-           "exercises.chapter2_instant_centres": chapter2_instant_centres, "atlas": at}
+           "exercises.chapter2_instant_centres": chapter2_instant_centres, "atlas": at,
+           "planar.export": xp}
 
 
 # ----------------------------------------------------------------------------- bad values
@@ -1294,6 +1296,55 @@ def _points_csv():
     return name
 
 
+def _path_svg():
+    import tempfile
+
+    handle, name = tempfile.mkstemp(suffix=".svg")
+    with open(handle, "w") as f:
+        f.write('<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 L 10 0 L 10 10 Z"/></svg>')
+    return name
+
+
+def _design():
+    return xp.design_of(pl.FourBar(30, 70, 60, 80, coupler=(20, 10)))
+
+
+def _tmp_file(suffix):
+    import tempfile
+
+    handle, name = tempfile.mkstemp(suffix=suffix)
+    import os
+
+    os.close(handle)
+    return name
+
+
+_CUT = {"link_width": "scalar?", "hole_diameter": "scalar?"}
+CASES.update({
+    "planar.export.design_of": E(lambda: xp.design_of, {"obj": "instance", "theta": "scalar?"},
+                                 obj=pl.FourBar(30, 70, 60, 80), theta=0.5),
+    "planar.export.Design.linkage": E(lambda: _design().linkage),
+    "planar.export.Design.place": E(lambda: _design().place, {"w": "point"}, w=[1.0, 2j]),
+    "planar.export.to_json": E(lambda: functools.partial(xp.to_json, _design()), _CUT, link_width=4.0,
+                               hole_diameter=2.0),
+    "planar.export.from_json": E(lambda: functools.partial(xp.from_json, xp.to_json(_design()))),
+    "planar.export.svg_text": E(lambda: functools.partial(xp.svg_text, _design()), _CUT, link_width=4.0,
+                                hole_diameter=2.0),
+    "planar.export.write_json": E(lambda: functools.partial(xp.write_json, _design(), _tmp_file(".json"))),
+    "planar.export.read_json": E(lambda: functools.partial(xp.read_json, _json_file())),
+    "planar.export.write_svg": E(lambda: functools.partial(xp.write_svg, _design(), _tmp_file(".svg"))),
+    "planar.export.write_dxf": E(lambda: functools.partial(xp.write_dxf, _design(), _tmp_file(".dxf")), _CUT,
+                                 link_width=4.0, hole_diameter=2.0),
+})
+RECORDS["planar.export.Design"] = "result record built by the package (design_of)"
+
+
+def _json_file():
+    name = _tmp_file(".json")
+    xp.write_json(_design(), name)
+    return name
+
+
 def _new_dir():
     import tempfile
 
@@ -1330,6 +1381,8 @@ CASES.update({
     "atlas.resample": E(lambda: at.resample, {"points": "point", "samples": "count", "closed": "bool"},
                         points=_SQUARE, samples=16, closed=True),
     "atlas.read_points": E(lambda: functools.partial(at.read_points, _points_csv())),
+    "atlas.read_target": E(lambda: functools.partial(at.read_target, _points_csv()), {"samples": "count"}, samples=50),
+    "atlas.read_svg": E(lambda: functools.partial(at.read_svg, _path_svg()), {"samples": "count"}, samples=50),
     "atlas.sample_fourbars": E(lambda: at.sample_fourbars,
                                {"n": "count", "seed": "seed", "lengths": ("scalar", lambda v: (v, 5.0)),
                                 "coupler": ("scalar", lambda v: (v, 2.0, -1.0, 1.0)), "branch": "branch?",

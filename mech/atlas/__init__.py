@@ -2,7 +2,8 @@
 
 Layers, each usable alone:
 
-- shape signatures (`curve_signature`, `resample`, `read_points`): a fixed-length vector
+- shape signatures (`curve_signature`, `resample`, `read_points`; a target read from a CSV
+  or from a path drawn in an SVG editor by `read_target`, `read_svg`): a fixed-length vector
   that does not depend on where a curve lies, its size, its turn, its start or its direction
   (derivation page :ref:`deriv-shape-signature`);
 - a sampled design space of planar four-bars (`sample_fourbars`, `FourBarSamples`) with
@@ -32,6 +33,7 @@ loaded, tqdm when a build shows a progress bar, Dask only by the code that makes
 """
 
 from mech.atlas._signature import curve_signature, read_points, resample
+from mech.atlas._target import read_svg, read_target
 from mech.atlas._sampling import FourBarSamples, sample_fourbars
 from mech.atlas._store import ATLAS_VERSION, Atlas
 from mech.atlas._build import build_atlas
@@ -68,6 +70,8 @@ __all__ = [
     "query",
     "query_sphere",
     "read_points",
+    "read_svg",
+    "read_target",
     "refine",
     "refine_sphere",
     "resample",

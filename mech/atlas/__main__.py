@@ -4,15 +4,20 @@
                                           [--resume | --append] [--dask local:2 | --dask tcp://host:8786]
                                           [--mechanism four-bar | --mechanism slider-crank]
     python -m mech.atlas query ATLAS_DIR points.csv [-k 5] [--open] [--plot out.png]
+    python -m mech.atlas query ATLAS_DIR --target drawing.svg|points.csv [--json d.json] [--svg d.svg]
+                                          [--dxf d.dxf] [--units mm] [--link-width W] [--hole H]
 
 ``build`` samples four-bars in blocks and computes their signatures with a progress bar,
 writing each block as a Parquet part (``--resume`` continues a stopped build; ``--append``
 adds one part built with another seed to an atlas); ``--dask`` computes the blocks on a
 Dask cluster, with the same result; ``--mechanism slider-crank`` samples slider-cranks with
 a coupler point on the rod instead. ``query`` reads a target curve (closed, or an open arc
-with ``--open``) from a CSV file of ``x, y`` rows and prints the best linkages, placed on the target, with their cognates; ``--plot``
-draws them over the target (Matplotlib). The first open query of an atlas stores its index of
-windows in ``ATLAS_DIR/arcs/`` (minutes at 10^5 linkages); later queries load it.
+with ``--open``) from a CSV file of ``x, y`` rows, or from the one path of an SVG drawing
+(``--target``; closed or open as drawn), and prints the best linkages, placed on the target,
+with their cognates, the motor's place and the smallest transmission angle; ``--plot``
+draws them over the target (Matplotlib); ``--json``, ``--svg`` and ``--dxf`` write the best
+one as files a maker uses (`mech.planar.export`). The first open query of an atlas
+stores its index of windows in ``ATLAS_DIR/arcs/``; later queries load it.
 """
 
 import argparse
@@ -101,17 +106,49 @@ def _describe(m):
 
 
 def _query(args):
-    from mech.atlas import Atlas, query, read_points
+    from mech.atlas import Atlas, query, read_target
 
+    source = args.target or args.points
+    if source is None or (args.target and args.points):
+        raise ValueError(f"Expected one target file (--target FILE.csv|FILE.svg), got {[args.points, args.target]}")
     atlas = Atlas.from_parquet(args.atlas)
-    target = read_points(args.points)
+    target, closed = read_target(source)
+    # a CSV does not say whether the curve closes: --open does; an SVG path says it itself
+    closed = (not args.open) if closed is None or args.open else closed
     started = time.perf_counter()
-    matches = query(atlas, target, k=args.k, closed=not args.open)
-    print(f"{len(atlas)} linkages searched in {1000 * (time.perf_counter() - started):.1f} ms")
+    matches = query(atlas, target, k=args.k, closed=closed)
+    print(f"{len(atlas)} linkages searched in {1000 * (time.perf_counter() - started):.1f} ms "
+          f"({'closed curve' if closed else 'open arc'} of {len(target)} points from {source})")
     for m in matches:
         print(_describe(m))
+        print("    " + _design_line(m, args.units))
     if args.plot:
         _plot(target, matches, args.plot)
+    if matches and (args.json or args.svg or args.dxf):
+        _export(matches[0], args)
+
+
+def _design_line(m, units):
+    """Type, where the motor goes and the smallest transmission angle of a match, as built."""
+    from mech.planar.export import design_of
+
+    d = design_of(m, units=units)
+    where = d.joints[d.motor]
+    turns = "turns fully" if d.full_turn else "only rocks (no motor can drive it round)"
+    return (f"{d.type} ({d.kind}): motor at {d.motor} ({where.real:.5g}, {where.imag:.5g}) on the {d.driven} "
+            f"{''.join(d.links[d.driven])}, which {turns}; minimum transmission angle "
+            f"{math.degrees(d.gamma_min):.1f} deg")
+
+
+def _export(m, args):
+    from mech.planar.export import design_of, write_dxf, write_json, write_svg
+
+    d = design_of(m, units=args.units)
+    cutting = dict(link_width=args.link_width, hole_diameter=args.hole)
+    for path, write in ((args.json, write_json), (args.svg, write_svg), (args.dxf, write_dxf)):
+        if path:
+            write(d, path, **cutting)
+            print(f"wrote the best linkage to {path}")
 
 
 def _plot(target, matches, path):
@@ -161,7 +198,14 @@ def main(argv=None):
     b.add_argument("--quiet", action="store_true", help="no progress bar")
     q = sub.add_parser("query", help="find linkages for a curve (closed, or open with --open) given as a CSV of x, y rows")
     q.add_argument("atlas")
-    q.add_argument("points")
+    q.add_argument("points", nargs="?", help="the target: a CSV of x, y rows (or give --target)")
+    q.add_argument("--target", help="the target: a CSV of x, y rows or an SVG with one path (closed or open read from it)")
+    q.add_argument("--json", help="write the best linkage as JSON to this file")
+    q.add_argument("--svg", help="draw the best linkage into this SVG file")
+    q.add_argument("--dxf", help="write the best linkage's links and pin holes as a DXF for a laser cutter")
+    q.add_argument("--units", default="", help="the unit of the target's lengths, written into the files (e.g. mm)")
+    q.add_argument("--link-width", type=float, help="link width in the DXF and SVG (default 8 %% of the linkage's size)")
+    q.add_argument("--hole", type=float, help="pin hole diameter (default half the link width)")
     q.add_argument("-k", type=int, default=5)
     q.add_argument("--open", action="store_true", help="the points are an open arc (matched against parts of curves)")
     q.add_argument("--plot", help="draw the matches over the target into this image file")

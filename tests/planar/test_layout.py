@@ -128,4 +128,4 @@ def test_no_flat_private_modules_left():
     flat = sorted(p.name for p in PLANAR_DIR.glob("*.py"))
     assert flat == ["__init__.py"]
     folders = sorted(p.name for p in PLANAR_DIR.iterdir() if (p / "__init__.py").is_file())
-    assert folders == sorted([*SUBJECTS, "synthesis"])
+    assert folders == sorted([*SUBJECTS, "synthesis", "export"])
