@@ -250,6 +250,17 @@ def test_page_titles_unique():
     assert repeated == {}, f"pages sharing a title in the side bar: {repeated}"
 
 
+TITLE_LIMIT = 50  # characters of a page title (issue 26); its equation numbers go in the page
+
+
+def test_page_titles_short():
+    """A title a reader takes in at a glance, in the side bar and the browser's tab: at most
+    TITLE_LIMIT characters; the textbook's numbers are in the line under it (and declared
+    for mech.index in the page's front matter)."""
+    long = {entry: len(title) for entry, title in _titles().items() if len(title) > TITLE_LIMIT}
+    assert long == {}
+
+
 def test_derivation_pages_say_derivation():
     """A reader tells a derivation from its worked use in the side bar alone."""
     wrong = [

@@ -274,6 +274,11 @@ SETTINGS = {
     "napoleon_custom_sections": [("Attributes", "params_style")],
     "autodoc_typehints": "none",
     "autodoc_member_order": "bysource",
+    # defaults as written in the source ("np.radians(30)"), not as evaluated
+    # ("np.float64(0.5235987755982988)", a long word a phone cannot wrap), issue 26
+    "autodoc_preserve_defaults": True,
+    # a long signature one parameter per line, so that it reads down the column
+    "python_maximum_signature_line_length": 72,
     "autosummary_generate": False,
     "add_module_names": False,
 }

@@ -141,7 +141,7 @@ def test_equations_and_pages_fit(crawl):
 
 def test_labels_never_collide(crawl):
     """Issue 26: no two labels of a moving or turnable figure overlap, in any frame (each
-    page with a collision also fails its own test_page_in_browser, naming the labels),
-    except the two pairs still listed in `_crawl.KNOWN_LABEL_OVERLAPS`."""
+    page with a collision also fails its own test_page_in_browser, naming the labels);
+    `_crawl.KNOWN_LABEL_OVERLAPS`, the collisions tolerated, is empty."""
     overlaps = {page: info["label_overlaps"] for page, (_, info) in crawl.items() if info.get("label_overlaps")}
     assert overlaps == {}
