@@ -86,6 +86,10 @@ class SphericalBurmesterPoints:
         solutions are its roots with ``|x| = 1``.
     pole : ndarray, shape (3,)
         The pole the directions are measured at.
+    n_double : int
+        0 or 1: 1 when two real solutions meet at one listed dyad (a double root, or two
+        roots closer than double precision tells apart), so that the real solutions
+        number ``len(dyads) + n_double`` and, with `n_complex`, make six.
     """
 
     dyads: tuple
@@ -93,6 +97,7 @@ class SphericalBurmesterPoints:
     residual: float
     sextic: np.ndarray
     pole: np.ndarray
+    n_double: int = 0
 
 
 def _basis(P):
@@ -311,6 +316,38 @@ def _polish(K, u, w):
     return u / np.linalg.norm(u), w / np.linalg.norm(w)
 
 
+def _chord_system(K, u, w):
+    """The six equations of `_polish_chords` at (u, w) and their Jacobian."""
+    c = K @ w                                              # chords, shape (4, 3)
+    a = u - w - 0.5 * c                                    # u - m_j
+    F = np.concatenate([np.sum(a * c, axis=1), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
+    J = np.zeros((6, 6))
+    J[:4, :3] = c
+    J[:4, 3:] = np.einsum("ji,jik->jk", a, K) - c - 0.5 * np.einsum("ji,jik->jk", c, K)
+    J[4, :3], J[5, 3:] = u, w
+    return F, J
+
+
+def _conditioning(K, u, w):
+    """Smallest singular value of the chord equations' Jacobian at (u, w), relative."""
+    S = np.linalg.svd(_chord_system(K, u, w)[1], compute_uv=False)
+    return S[-1] / S[0]
+
+
+def _pair_is_real(K, u, w):
+    """Whether the two solutions merged at the crank (u, w) (a double root, or two roots too
+    close to tell apart) are real: the quadratic model of the equations along the
+    Jacobian's null direction, ``l . F(p + t v) = g0 + g1 t + g2 t^2 / 2``, has real roots."""
+    F, J = _chord_system(K, u, w)
+    U, S, Vt = np.linalg.svd(J)
+    l, v = U[:, -1], Vt[-1]
+    tau = 1e-3 * max(np.linalg.norm(u - w), np.finfo(float).tiny)
+    g = [l @ _chord_system(K, u + t * v[:3], w + t * v[3:])[0] for t in (-tau, 0.0, tau)]
+    g1 = (g[2] - g[0]) / (2 * tau)
+    g2 = (g[2] + g[0] - 2 * g[1]) / tau ** 2
+    return g1 * g1 - 2.0 * g2 * g[1] >= 0.0
+
+
 def _polish_chords(K, u, w, limit=0.5):
     """Newton steps on the crank equations in chord form, then |u| = |w| = 1.
 
@@ -321,13 +358,7 @@ def _polish_chords(K, u, w, limit=0.5):
     the iteration (a start known to be close must not jump to another crank).
     """
     for _ in range(10):
-        c = K @ w                                              # chords, shape (4, 3)
-        a = u - w - 0.5 * c                                    # u - m_j
-        F = np.concatenate([np.sum(a * c, axis=1), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
-        J = np.zeros((6, 6))
-        J[:4, :3] = c
-        J[:4, 3:] = np.einsum("ji,jik->jk", a, K) - c - 0.5 * np.einsum("ji,jik->jk", c, K)
-        J[4, :3], J[5, 3:] = u, w
+        F, J = _chord_system(K, u, w)
         try:
             step = np.linalg.solve(J, F)
         except np.linalg.LinAlgError:
@@ -358,7 +389,7 @@ def _deflate(coef, root):
     return out
 
 
-def burmester(R, *, imag_tol=1e-7):
+def burmester(R, *, imag_tol=1e-9):
     """All Burmester dyads of five orientations: every spherical crank that meets all five.
 
     The four design equations (4) are bilinear in the fixed axis u and the moving axis w;
@@ -380,7 +411,11 @@ def burmester(R, *, imag_tol=1e-7):
     task the orientations approach (`_planar_starts`) are polished and verified too: they lie
     within the square of the cap of the spherical ones, where the sextic's roots may have
     drifted too far to lead to them. A crank reached from several starts (or its antipode)
-    is one solution; the real solutions are the distinct verified cranks.
+    is one solution; the real solutions are the distinct verified cranks. Complex solutions
+    come in pairs, so an odd number of cranks means two solutions meet at one of them (the
+    one where the equations are nearest singular): the quadratic model of the equations
+    along their null direction there says whether the two are real (the dyad is listed once
+    and `n_double` is 1) or a complex pair (the dyad is not listed).
 
     Parameters
     ----------
@@ -388,13 +423,16 @@ def burmester(R, *, imag_tol=1e-7):
         Orientations, no two the same.
     imag_tol : float, optional
         Largest spread of a kept crank's arcs, relative to the largest arc its body point
-        moves between two orientations; at least 0.
+        moves between two orientations; at least 0. Real cranks polish to 1e-11 or less
+        (7e-12 the worst of 130 sets near the planar limit); the real parts of a complex
+        pair whose imaginary parts are about sqrt(imag_tol) pass too.
 
     Returns
     -------
     SphericalBurmesterPoints
-        ``dyads`` (every real solution, by arc, each verified), ``n_complex`` (the other
-        solutions; the two add up to 6), ``residual``, ``sextic``.
+        ``dyads`` (every real solution, by arc, each verified), ``n_double`` (1 when two
+        real solutions meet at one listed dyad), ``n_complex`` (the other solutions; the
+        three add up to 6), ``residual``, ``sextic``.
 
     Raises
     ------
@@ -502,14 +540,24 @@ def burmester(R, *, imag_tol=1e-7):
         if not any(min(np.linalg.norm(u - k * a) + np.linalg.norm(w - k * b) for k in (1.0, -1.0))
                    <= 1e-6 * (arc_between(u, w) + arc_between(a, b)) for a, b, _ in keep):
             keep.append((u, w, error))
-    n_complex = 6 - len(keep)
+    # complex solutions come in pairs: an odd count means two solutions have merged at one
+    # kept crank (the one where the equations are nearest singular); they are two real
+    # solutions listed once (`n_double`), or a complex pair, not listed
+    n_double = 0
+    if len(keep) % 2:
+        k = min(range(len(keep)), key=lambda i: _conditioning(K0, keep[i][0], keep[i][1]))
+        if _pair_is_real(K0, keep[k][0], keep[k][1]):
+            n_double = 1
+        else:
+            del keep[k]
+    n_complex = 6 - len(keep) - n_double
     dyads, worst = [], 0.0
     for u, w, error in keep:
         z = R[0].T @ w
         worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
         dyads.append(make_dyad(z, w, u, "R", R[0]))
     dyads.sort(key=lambda k: float(k.arc))
-    return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa)
+    return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa, n_double)
 
 
 def _polished(R, K, K0, u0, w0, close=False):
