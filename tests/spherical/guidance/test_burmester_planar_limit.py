@@ -86,8 +86,8 @@ def test_issue_reproduction_is_even_and_agrees_with_the_reference(scale):
 
 
 def test_a_few_random_and_near_degenerate_sets():
-    assert not _sweep(_random_sets(6, seed=7))
-    assert not _sweep(_near_degenerate_sets(6, seed=7))
+    assert not _sweep(_random_sets(4, seed=7))
+    assert not _sweep(_near_degenerate_sets(3, seed=7))
 
 
 def _near_double_sets():
