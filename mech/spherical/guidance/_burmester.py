@@ -551,8 +551,13 @@ def burmester(R, *, imag_tol=1e-9):
         else:
             del keep[k]
     n_complex = 6 - len(keep) - n_double
+    # a crank and its antipode are one; near the planar limit each is listed on the side of
+    # the cap (as its planar start was), so that the cranks of one design lie together
+    cap = _cap_centre(K0)
     dyads, worst = [], 0.0
     for u, w, error in keep:
+        if cap is not None and w @ cap < 0.0:
+            u, w = -u, -w
         z = R[0].T @ w
         worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
         dyads.append(make_dyad(z, w, u, "R", R[0]))
@@ -584,6 +589,18 @@ def _polished(R, K, K0, u0, w0, close=False):
     return min(tries, key=lambda t: t[0])
 
 
+def _cap_centre(K0):
+    """The mean of the poles of the displacements ``I + K0_j`` when they lie within a cap
+    of 0.1 rad about it (near the planar limit), else None."""
+    axes, angles = _axis_angle(K0)
+    axes = axes * np.where(axes @ axes[int(np.argmax(angles))] < 0.0, -1.0, 1.0)[:, None]
+    c = np.sum(axes, axis=0)
+    if not (np.all(np.isfinite(c)) and np.linalg.norm(c) > 0.0):
+        return None
+    c /= np.linalg.norm(c)
+    return c if np.max(np.linalg.norm(axes - c, axis=1)) <= 0.1 else None
+
+
 def _planar_starts(K0):
     """Starting cranks (u, w) from the planar task that the orientations approach.
 
@@ -596,13 +613,8 @@ def _planar_starts(K0):
     """
     from mech.planar.synthesis import burmester as planar_burmester
 
-    axes, angles = _axis_angle(K0)
-    axes = axes * np.where(axes @ axes[int(np.argmax(angles))] < 0.0, -1.0, 1.0)[:, None]
-    c = np.sum(axes, axis=0)
-    if not (np.all(np.isfinite(c)) and np.linalg.norm(c) > 0.0):
-        return []
-    c /= np.linalg.norm(c)
-    if np.max(np.linalg.norm(axes - c, axis=1)) > 0.1:
+    c = _cap_centre(K0)
+    if c is None:
         return []
     e1, e2 = _basis(c)
     moved = K0 @ c                                          # D_j c - c, small
