@@ -28,8 +28,8 @@ set); it is not part of the public interface.
 
 import numpy as np
 
-__all__ = ["SAME", "distinct_poses", "distinct_orientations", "single_roots", "planar_dyad_error",
-           "spherical_dyad_error"]
+__all__ = ["SAME", "distinct_poses", "distinct_orientations", "distinct_pairs", "precision_points",
+           "single_roots", "planar_dyad_error", "spherical_dyad_error"]
 
 # Two entries of a task closer than this, relative to the task's size, are one entry. It is
 # far above rounding (a pose and the same pose plus a whole turn differ by about 1e-15 of
@@ -118,6 +118,113 @@ def distinct_orientations(R, name="R"):
                 raise ValueError(
                     f"Expected distinct orientations in `{name}`, got orientations {_pair_text(i, j)} the same "
                     f"orientation (relative turn {float(gaps[i, j])!r} rad, largest turn in the set {size!r} rad)")
+
+
+def _same_angle(a, b):
+    """Whether two angles are one direction: equal, or a whole number of turns apart, to
+    `SAME` of the larger angle (at least one turn)."""
+    scale = max(2.0 * np.pi, abs(float(a)), abs(float(b)))
+    return abs(float(_wrapped(float(b) - float(a)))) <= SAME * scale
+
+
+def _entries(idx):
+    idx = [k + 1 for k in idx]
+    return ", ".join(map(str, idx[:-1])) + " and " + str(idx[-1])
+
+
+def distinct_pairs(x, y, names=("x", "y"), exact=True):
+    """Refuse function-generation pairs ``(x_i, y_i)`` that repeat or contradict each other.
+
+    A four-bar (planar or spherical) meets a pair through ``cos`` and ``sin`` of the input
+    and output angles only, so two pairs whose inputs are one direction (equal, or whole
+    turns apart, to `SAME`) are one pair when their outputs are one direction too, and
+    contradict each other when they are not (one input angle, two outputs). With `exact`
+    (precision pairs, met exactly) three pairs may not share one output direction either:
+    at a fixed output angle Freudenstein's equation, planar or spherical, is
+    ``A cos(theta) + B sin(theta) = C``, met at two input angles of a turn at most. A fit
+    (``exact=False``) is refused only when every output is one direction (the output does
+    not move).
+
+    Parameters
+    ----------
+    x, y : ndarray, shape (n,)
+        Input and output rotations, radians (already checked by `mech._validate`).
+    names : tuple of str
+        The names of the two arguments, for the message.
+    exact : bool
+        Whether the pairs are to be met exactly (precision pairs) or fitted.
+
+    Raises
+    ------
+    ValueError
+        Naming both arguments and the offending pairs (counted from 1) with their values.
+    """
+    nx, ny = names
+    n = x.size
+    for i in range(n - 1):
+        for j in range(i + 1, n):
+            if not _same_angle(x[i], x[j]):
+                continue
+            if _same_angle(y[i], y[j]):
+                raise ValueError(
+                    f"Expected distinct pairs in `{nx}`/`{ny}`, got pairs {_pair_text(i, j)} the same pair (a whole "
+                    f"number of turns apart): {nx} = {float(x[i])!r} and {float(x[j])!r}, "
+                    f"{ny} = {float(y[i])!r} and {float(y[j])!r}")
+            raise ValueError(
+                f"Expected one output in `{ny}` for one input direction in `{nx}`, got pairs {_pair_text(i, j)} with "
+                f"{nx} = {float(x[i])!r} and {float(x[j])!r} (one direction) but {ny} = {float(y[i])!r} and "
+                f"{float(y[j])!r}")
+    groups = []
+    for i in range(n):
+        for g in groups:
+            if _same_angle(y[g[0]], y[i]):
+                g.append(i)
+                break
+        else:
+            groups.append([i])
+    for g in groups:
+        if (exact and len(g) >= 3) or (not exact and n >= 2 and len(g) == n):
+            shown = ", ".join(repr(float(y[k])) for k in g)
+            raise ValueError(
+                f"Expected outputs in `{ny}` that {'no three pairs share' if exact else 'move'} (a four-bar's output "
+                f"has one angle at two inputs of a turn at most), got pairs {_entries(g)} of `{nx}`/`{ny}` with one "
+                f"output direction: {ny} = {shown}")
+
+
+def precision_points(Q, theta, names=("points", "theta"), one_point=True):
+    """Refuse precision points of a path with timing that are no task.
+
+    The input angles must move one way within one turn, so no two name one crank position
+    (equal, or a whole turn apart); the unit vectors `Q` (already normalised) may not all
+    be one point (a coupler point that does not move). Two points may coincide (a coupler
+    curve can cross itself) when their input angles differ. ``one_point=False`` skips the
+    last check (for verifying a given linkage against points, which any points can be).
+
+    Raises
+    ------
+    ValueError
+        Naming the argument and the offending entries (counted from 1) with their values.
+    """
+    nq, nt = names
+    n = theta.size
+    step = np.diff(theta)
+    sign = 1.0 if step.size and step[0] > 0 else -1.0
+    for i in range(n - 1):
+        if not sign * step[i] > 0:
+            word = "repeat" if step[i] == 0 else "turn back"
+            raise ValueError(
+                f"Expected `{nt}` strictly monotonic within one turn, got entries {_pair_text(i, i + 1)} that "
+                f"{word}: {float(theta[i])!r} and {float(theta[i + 1])!r}")
+    if n >= 2 and abs(float(theta[-1] - theta[0])) >= 2.0 * np.pi:
+        j = next(k for k in range(1, n) if abs(float(theta[k] - theta[0])) >= 2.0 * np.pi)
+        raise ValueError(
+            f"Expected `{nt}` strictly monotonic within one turn, got entries {_pair_text(0, j)} a whole turn or "
+            f"more apart: {float(theta[0])!r} and {float(theta[j])!r}")
+    arcs = np.arctan2(np.linalg.norm(np.cross(Q, Q[0]), axis=1), Q @ Q[0])
+    if one_point and n >= 2 and not np.max(arcs) > 4.0 * np.finfo(float).eps:
+        raise ValueError(
+            f"Expected precision points in `{nq}` that are not all one point, got {n} points within "
+            f"{float(np.max(arcs))!r} rad of point 1 = {Q[0].tolist()!r}")
 
 
 def planar_dyad_error(theta, d, z, A):

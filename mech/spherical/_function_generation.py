@@ -14,6 +14,7 @@ from mech._generated.one_equation import abc_discriminant, abc_solve, spherical_
 from mech._generated.spherical_function_generation import sfg_arcs, sfg_coefficients, sfg_row
 from mech._geometry import wrap_angle
 from mech._spacing import chebyshev_spacing
+from mech._task import distinct_pairs
 from mech._validate import (arc as _arc, bool_flag, common_shape, finite_array, finite_result, function_pairs,
                             naming, option, real_number)
 
@@ -349,6 +350,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=None, keep_defective=Fals
     True
     """
     x, y = function_pairs(x, y, 3)
+    distinct_pairs(x, y)
     n = x.size
     theta0 = None if theta0 is None else real_number("theta0", theta0)
     psi0 = None if psi0 is None else real_number("psi0", psi0)
@@ -450,6 +452,7 @@ def least_squares(x, y, theta0, psi0, *, kind="structural", fit_start=False, sta
     True
     """
     x, y = function_pairs(x, y, 4)
+    distinct_pairs(x, y, exact=False)
     theta0, psi0 = real_number("theta0", theta0), real_number("psi0", psi0)
     kind = option("kind", kind, ("structural", "equation"))
     fit_start = bool_flag("fit_start", fit_start)

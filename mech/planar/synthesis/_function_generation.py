@@ -16,6 +16,7 @@ import numpy as np
 from mech._generated.function_generation import fg_output_terms, fg_row
 from mech._geometry import wrap_angle as _wrap
 from mech._spacing import chebyshev_spacing
+from mech._task import distinct_pairs
 from mech._validate import angle, bool_flag, function_pairs, naming, positive_length, real_number
 from mech.planar.synthesis._function_generator import (
     FunctionGenerator,
@@ -226,6 +227,7 @@ def precision_pairs(x, y, *, theta0=None, psi0=None, d=1.0, target=None, x_range
     True
     """
     x, y = function_pairs(x, y, 3)
+    distinct_pairs(x, y)
     n = x.size
     theta0 = None if theta0 is None else angle("theta0", theta0)
     psi0 = None if psi0 is None else angle("psi0", psi0)
@@ -336,6 +338,7 @@ def least_squares(x, y, *, theta0, psi0, d=1.0, kind="structural", fit_start=Fal
     (True, 0.01)
     """
     x, y = function_pairs(x, y, 3)
+    distinct_pairs(x, y, exact=False)
     theta0, psi0 = angle("theta0", theta0), angle("psi0", psi0)
     d = positive_length("d", d)
     fit_start = bool_flag("fit_start", fit_start)

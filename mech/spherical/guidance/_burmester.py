@@ -86,6 +86,10 @@ class SphericalBurmesterPoints:
         solutions are its roots with ``|x| = 1``.
     pole : ndarray, shape (3,)
         The pole the directions are measured at.
+    n_double : int
+        0 or 1: 1 when two real solutions meet at one listed dyad (a double root, or two
+        roots closer than double precision tells apart), so that the real solutions
+        number ``len(dyads) + n_double`` and, with `n_complex`, make six.
     """
 
     dyads: tuple
@@ -93,6 +97,7 @@ class SphericalBurmesterPoints:
     residual: float
     sextic: np.ndarray
     pole: np.ndarray
+    n_double: int = 0
 
 
 def _basis(P):
@@ -311,27 +316,54 @@ def _polish(K, u, w):
     return u / np.linalg.norm(u), w / np.linalg.norm(w)
 
 
-def _polish_chords(K, u, w):
+def _chord_system(K, u, w):
+    """The six equations of `_polish_chords` at (u, w) and their Jacobian."""
+    c = K @ w                                              # chords, shape (4, 3)
+    a = u - w - 0.5 * c                                    # u - m_j
+    F = np.concatenate([np.sum(a * c, axis=1), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
+    J = np.zeros((6, 6))
+    J[:4, :3] = c
+    J[:4, 3:] = np.einsum("ji,jik->jk", a, K) - c - 0.5 * np.einsum("ji,jik->jk", c, K)
+    J[4, :3], J[5, 3:] = u, w
+    return F, J
+
+
+def _conditioning(K, u, w):
+    """Smallest singular value of the chord equations' Jacobian at (u, w), relative."""
+    S = np.linalg.svd(_chord_system(K, u, w)[1], compute_uv=False)
+    return S[-1] / S[0]
+
+
+def _pair_is_real(K, u, w):
+    """Whether the two solutions merged at the crank (u, w) (a double root, or two roots too
+    close to tell apart) are real: the quadratic model of the equations along the
+    Jacobian's null direction, ``l . F(p + t v) = g0 + g1 t + g2 t^2 / 2``, has real roots."""
+    F, J = _chord_system(K, u, w)
+    U, S, Vt = np.linalg.svd(J)
+    l, v = U[:, -1], Vt[-1]
+    tau = 1e-3 * max(np.linalg.norm(u - w), np.finfo(float).tiny)
+    g = [l @ _chord_system(K, u + t * v[:3], w + t * v[3:])[0] for t in (-tau, 0.0, tau)]
+    g1 = (g[2] - g[0]) / (2 * tau)
+    g2 = (g[2] + g[0] - 2 * g[1]) / tau ** 2
+    return g1 * g1 - 2.0 * g2 * g[1] >= 0.0
+
+
+def _polish_chords(K, u, w, limit=0.5):
     """Newton steps on the crank equations in chord form, then |u| = |w| = 1.
 
     ``u . (w_j - w_1) = 0`` is written ``(u - m_j) . c_j = 0`` with the chord
     ``c_j = K_j w`` and its middle ``m_j = w + c_j / 2`` (equal to ``u^T K_j w`` since D_j is a
     rotation); near the planar limit both factors are small and nothing cancels, where
-    ``u^T K_j w`` loses the square of the arcs to rounding.
+    ``u^T K_j w`` loses the square of the arcs to rounding. A step longer than `limit` ends
+    the iteration (a start known to be close must not jump to another crank).
     """
     for _ in range(10):
-        c = K @ w                                              # chords, shape (4, 3)
-        a = u - w - 0.5 * c                                    # u - m_j
-        F = np.concatenate([np.sum(a * c, axis=1), [(u @ u - 1) / 2, (w @ w - 1) / 2]])
-        J = np.zeros((6, 6))
-        J[:4, :3] = c
-        J[:4, 3:] = np.einsum("ji,jik->jk", a, K) - c - 0.5 * np.einsum("ji,jik->jk", c, K)
-        J[4, :3], J[5, 3:] = u, w
+        F, J = _chord_system(K, u, w)
         try:
             step = np.linalg.solve(J, F)
         except np.linalg.LinAlgError:
             break
-        if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > 0.5:
+        if not np.all(np.isfinite(step)) or np.max(np.abs(step)) > limit:
             break
         u, w = u - step[:3], w - step[3:]
         if np.max(np.abs(step)) <= 1e-17:
@@ -357,7 +389,7 @@ def _deflate(coef, root):
     return out
 
 
-def burmester(R, *, imag_tol=1e-7):
+def burmester(R, *, imag_tol=1e-9):
     """All Burmester dyads of five orientations: every spherical crank that meets all five.
 
     The four design equations (4) are bilinear in the fixed axis u and the moving axis w;
@@ -374,10 +406,16 @@ def burmester(R, *, imag_tol=1e-7):
     arcs of 1e-6 and by 0.1 at 1e-8): every root within 0.5 of the circle is moved onto
     it, its crank polished (in the cosine form of eq. (4) and in the chord form, see
     `_polish_chords`), and the crank kept when its arcs at the five orientations agree to
-    ``imag_tol`` times the largest arc its body point moves. When several roots polish to
-    one crank (or to its antipode), only the root that moved least counts, and only if it
-    moved at most half as far as the others: the two roots ``x`` and ``1/conj(x)`` of a
-    complex pair move almost equally far and are both counted complex.
+    ``imag_tol`` times the largest arc its body point moves. When the poles of the four
+    displacements lie within a small cap (arcs of 0.1 rad or less), the cranks of the planar
+    task the orientations approach (`_planar_starts`) are polished and verified too: they lie
+    within the square of the cap of the spherical ones, where the sextic's roots may have
+    drifted too far to lead to them. A crank reached from several starts (or its antipode)
+    is one solution; the real solutions are the distinct verified cranks. Complex solutions
+    come in pairs, so an odd number of cranks means two solutions meet at one of them (the
+    one where the equations are nearest singular): the quadratic model of the equations
+    along their null direction there says whether the two are real (the dyad is listed once
+    and `n_double` is 1) or a complex pair (the dyad is not listed).
 
     Parameters
     ----------
@@ -385,13 +423,16 @@ def burmester(R, *, imag_tol=1e-7):
         Orientations, no two the same.
     imag_tol : float, optional
         Largest spread of a kept crank's arcs, relative to the largest arc its body point
-        moves between two orientations; at least 0.
+        moves between two orientations; at least 0. Real cranks polish to 1e-11 or less
+        (7e-12 the worst of 130 sets near the planar limit); the real parts of a complex
+        pair whose imaginary parts are about sqrt(imag_tol) pass too.
 
     Returns
     -------
     SphericalBurmesterPoints
-        ``dyads`` (every real solution, by arc, each verified), ``n_complex`` (the other
-        solutions; the two add up to 6), ``residual``, ``sextic``.
+        ``dyads`` (every real solution, by arc, each verified), ``n_double`` (1 when two
+        real solutions meet at one listed dyad), ``n_complex`` (the other solutions; the
+        three add up to 6), ``residual``, ``sextic``.
 
     Raises
     ------
@@ -410,10 +451,13 @@ def burmester(R, *, imag_tol=1e-7):
     solutions tend to the planar ones and the other two become complex. The equations hold
     the turns of the orientations at full size but their translations only at the size of
     the arcs, and the cosine form (4) keeps them only at the square of the arcs; the chord
-    form keeps the cranks accurate to rounding (relative to the arcs) down to arcs of about
-    1e-7 rad; there the sextic's roots have moved so far from their places (by 0.1 and
-    more) that for some sets no root leads to one of the real cranks, which is then lost
-    with its partner counted complex (an odd count). For Example 2-15 carried to the sphere
+    form keeps the cranks accurate to rounding (relative to the arcs). The sextic alone
+    loses real cranks below arcs of about 1e-7 rad (its roots move by 0.1 and more); with
+    the planar starts, for 200 random planar pose sets and 50 near-degenerate ones carried
+    onto caps of 1e-5 to 1e-8 rad per unit length, the count of real cranks agrees with a
+    60-digit solve of the same orientations (each float64 matrix read as the rotation
+    nearest it: at such caps its rounding off a rotation is as large as the task) (tested).
+    For Example 2-15 carried to the sphere
     by `planar_orientations` at scale s, all four cranks are found from s = 1e-3 to 3e-8;
     the best four-bar reproduces the orientations to 1e-15 rad at s = 1e-3, 2e-14 at 1e-4,
     9e-13 at 1e-5, 6e-11 at 1e-6 and 2e-8 at 1e-7 (its analysis loses accuracy too), and
@@ -468,50 +512,126 @@ def burmester(R, *, imag_tol=1e-7):
         coef = _deflate(coef, np.exp(2j * np.arctan2(s @ e2, s @ e1)))
     sextic = coef
     roots = np.roots(np.trim_zeros(sextic[::-1], "f")) if np.any(sextic[1:] != 0) else np.array([])
-    found, n_complex = [], 6 - roots.size
+    K0 = K * sizes[:, None, None]
+    starts = []
     for x in roots:
         if not abs(abs(x) - 1.0) <= _DRIFT:
-            n_complex += 1              # its projection is farther than _DRIFT: no need to polish
-            continue
+            continue                    # its projection is farther than _DRIFT: no need to polish
         # every root is tried on the unit circle (x / |x|: a real great circle through Pa);
         # the crank it gives, polished, must meet the five orientations (verification
         # decides, not the distance of x from the circle)
         w = _common_point(Ma, Mb, Pa, e1, e2, x / abs(x) if abs(x) > 0 else 1.0)
         u0 = _null(np.stack([Kj @ w for Kj in K]))
-        u0 = u0 if u0 @ w >= 0.0 else -u0
-        u, w1 = _polish(K, u0, w)
-        u = u if u @ w1 >= 0.0 else -u
-        # the chord form is the better one near the planar limit, where the cosine form may
-        # also wander from the start: try them in turn, keep the first that meets the task
-        # to rounding, or else whichever meets it best
-        tries = [(_dyad_error(R, u, w1), u, w1)]
-        for start in ((u, w1), (u0, w)):
-            if tries[-1][0] <= _ROUNDING:
-                break
-            u_, w_ = _polish_chords(K * sizes[:, None, None], *start)
-            tries.append((_dyad_error(R, u_, w_), u_, w_))
-        error, u, w = min(tries, key=lambda t: t[0])
-        z = R[0].T @ w
-        s = w - (w @ Pa) * Pa
-        drift = abs(x - np.exp(2j * np.arctan2(s @ e2, s @ e1)))      # the polished crank's root
-        if error <= imag_tol and arc_between(u, w) > 0.0 and drift <= _DRIFT:
-            found.append((u, w, z, error, drift))
+        starts.append((u0 if u0 @ w >= 0.0 else -u0, w))
+    # near the planar limit the sextic's roots drift far from their places (its coefficients
+    # hold the task only at the square of the arcs); the planar task the orientations approach
+    # gives starts within the square of the arcs of the spherical cranks instead
+    starts = [(u0, w, False) for u0, w in starts] + [(u0, w, True) for u0, w in _planar_starts(K0)]
+    found = []
+    for u0, w, close in starts:
+        error, u, w = _polished(R, K, K0, u0, w, close)
+        if error <= imag_tol and arc_between(u, w) > 0.0:
+            found.append((u, w, error))
+    # one crank reached from several starts (or its antipode) is one solution
+    # (two cranks are one when they differ by 1e-6 of their arcs: near the planar limit all
+    # of them lie within a small cap, and only their own size measures them)
+    keep = []
+    for u, w, error in sorted(found, key=lambda f: f[2]):
+        if not any(min(np.linalg.norm(u - k * a) + np.linalg.norm(w - k * b) for k in (1.0, -1.0))
+                   <= 1e-6 * (arc_between(u, w) + arc_between(a, b)) for a, b, _ in keep):
+            keep.append((u, w, error))
+    # complex solutions come in pairs: an odd count means two solutions have merged at one
+    # kept crank (the one where the equations are nearest singular); they are two real
+    # solutions listed once (`n_double`), or a complex pair, not listed
+    n_double = 0
+    if len(keep) % 2:
+        k = min(range(len(keep)), key=lambda i: _conditioning(K0, keep[i][0], keep[i][1]))
+        if _pair_is_real(K0, keep[k][0], keep[k][1]):
+            n_double = 1
         else:
-            n_complex += 1
-    # one crank reached from several roots is listed once at most (`mech._task.single_roots`)
-    # (two cranks are one when they, or one and the other's antipode, differ by 1e-6 of their
-    # arcs: near the planar limit all of them lie within a small cap, and only their own size
-    # measures them)
-    keep = single_roots([f[:2] for f in found], [f[4] for f in found],
-                        lambda a, b: min(np.linalg.norm(a[0] - k * b[0]) + np.linalg.norm(a[1] - k * b[1])
-                                         for k in (1.0, -1.0)) <= 1e-6 * (arc_between(*a) + arc_between(*b)))
-    n_complex += len(found) - len(keep)
+            del keep[k]
+    n_complex = 6 - len(keep) - n_double
+    # a crank and its antipode are one; near the planar limit each is listed on the side of
+    # the cap (as its planar start was), so that the cranks of one design lie together
+    cap = _cap_centre(K0)
     dyads, worst = [], 0.0
-    for u, w, z, error, _ in (found[k] for k in keep):
+    for u, w, error in keep:
+        if cap is not None and w @ cap < 0.0:
+            u, w = -u, -w
+        z = R[0].T @ w
         worst = max(worst, float(np.max(np.abs(np.einsum("i,jik,k->j", u, K, w)))))
         dyads.append(make_dyad(z, w, u, "R", R[0]))
     dyads.sort(key=lambda k: float(k.arc))
-    return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa)
+    return SphericalBurmesterPoints(tuple(dyads), int(n_complex), worst, sextic, Pa, n_double)
+
+
+def _polished(R, K, K0, u0, w0, close=False):
+    """The crank polished from the start (u0, w0): the error (`_dyad_error`), u and w.
+
+    The cosine form (4) is tried first, then the chord form (`_polish_chords`) from its end
+    and from the start; the best of the three is kept (the chord form is the better one
+    near the planar limit, where the cosine form may also wander from the start). A start
+    known to be `close` to its crank (a planar start) is polished in the chord form only,
+    by steps shorter than a tenth of its arc: near the planar limit the cranks lie within
+    a cap of the size of the arcs, and a longer step may land on another one.
+    """
+    if close:
+        u, w = _polish_chords(K0, u0, w0, limit=0.1 * np.linalg.norm(u0 - w0))
+        return _dyad_error(R, u, w), (u if u @ w >= 0.0 else -u), w
+    u, w = _polish(K, u0, w0)
+    u = u if u @ w >= 0.0 else -u
+    tries = [(_dyad_error(R, u, w), u, w)]
+    for start in ((u, w), (u0, w0)):
+        if tries[-1][0] <= _ROUNDING:
+            break
+        u_, w_ = _polish_chords(K0, *start)
+        tries.append((_dyad_error(R, u_, w_), u_ if u_ @ w_ >= 0.0 else -u_, w_))
+    return min(tries, key=lambda t: t[0])
+
+
+def _cap_centre(K0):
+    """The mean of the poles of the displacements ``I + K0_j`` when they lie within a cap
+    of 0.1 rad about it (near the planar limit), else None."""
+    axes, angles = _axis_angle(K0)
+    axes = axes * np.where(axes @ axes[int(np.argmax(angles))] < 0.0, -1.0, 1.0)[:, None]
+    c = np.sum(axes, axis=0)
+    if not (np.all(np.isfinite(c)) and np.linalg.norm(c) > 0.0):
+        return None
+    c /= np.linalg.norm(c)
+    return c if np.max(np.linalg.norm(axes - c, axis=1)) <= 0.1 else None
+
+
+def _planar_starts(K0):
+    """Starting cranks (u, w) from the planar task that the orientations approach.
+
+    When the poles of the displacements ``I + K0_j`` lie within a small cap about their
+    mean c, the displacements act near c as planar ones in the gnomonic chart
+    ``p -> (p . e1, p . e2) / (p . c)``: displacement j turns by the angle it gives e1 and
+    moves c to ``c + K0_j c``. The planar Burmester cranks of those poses, taken back onto
+    the sphere, are within the square of the cap's size of the spherical ones. None when
+    the poles are spread (no planar limit near) or the planar task has no finite crank.
+    """
+    from mech.planar.synthesis import burmester as planar_burmester
+
+    c = _cap_centre(K0)
+    if c is None:
+        return []
+    e1, e2 = _basis(c)
+    moved = K0 @ c                                          # D_j c - c, small
+    d = np.r_[0.0, (moved @ e1 + 1j * (moved @ e2)) / (1.0 + moved @ c)]
+    turned = e1 + K0 @ e1                                   # D_j e1
+    theta = np.r_[0.0, np.arctan2(turned @ e2, turned @ e1)]
+    try:
+        planar = planar_burmester(theta, d)
+    except ValueError:
+        return []
+    out = []
+    for k in planar.dyads:
+        z, a = complex(k.moving_pivot), complex(k.centre_point)
+        w = c + z.real * e1 + z.imag * e2
+        u = c + a.real * e1 + a.imag * e2
+        out.append((u / np.linalg.norm(u), w / np.linalg.norm(w)))
+    return out
 
 
 def _pencil_resultant(Ma, Mb, P):

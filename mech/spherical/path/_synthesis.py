@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._geometry import unit_rows
+from mech._task import precision_points
 from mech._validate import branch_sign, finite_array, option, real_array, real_number
 from mech.spherical._fourbar import SphericalFourBar, ground_frame
 
@@ -94,7 +95,7 @@ class SphericalPathDesign:
     evaluations: int
 
 
-def _task(points, theta):
+def _task(points, theta, design=True):
     Q = real_array("points", points)
     if Q.ndim != 2 or Q.shape[1] != 3 or Q.shape[0] < 2:
         raise ValueError(f"Expected `points` of shape (n, 3) with n >= 2, got shape {Q.shape}")
@@ -108,10 +109,10 @@ def _task(points, theta):
     if th.shape != (Q.shape[0],):
         raise ValueError(f"Expected `theta` of shape ({Q.shape[0]},) (one input angle per point), "
                          f"got shape {th.shape}")
-    d = np.diff(th)
-    if not (np.all(d > 0) or np.all(d < 0)) or abs(th[-1] - th[0]) >= 2 * np.pi:
-        raise ValueError(f"Expected `theta` strictly monotonic within one turn, got {np.array2string(th, precision=4)}")
-    return Q / norms[:, None], th
+    Q = Q / norms[:, None]
+    # a design task must also have points that move; a linkage may be checked against any
+    precision_points(Q, th, one_point=design)
+    return Q, th
 
 
 def _start(start, size):
@@ -219,7 +220,7 @@ def path_verify(linkage, points, theta, tol=1e-3):
 
     if not isinstance(linkage, (SphericalFourBar, SphericalLinkage)):
         raise TypeError(f"Expected `linkage` a SphericalFourBar or SphericalLinkage, got {linkage!r}")
-    Q, th = _task(points, theta)
+    Q, th = _task(points, theta, design=False)
     tol = _tol(tol)
     P = _coupler(linkage, th)
     errors = _arc_errors(P, Q)

@@ -24,6 +24,7 @@ from hypothesis import given, settings, strategies as st
 from mech.planar.synthesis import (burmester, centric_slider_cranks, circle_point_curve, dyad_for_centre_point,
                                    dyad_for_circle_point, guidance_fourbars, pole,
                                    slider_dyad_for_point, slider_dyads, slider_point_circle)
+from tests.spherical.burmester_limit_reference import _interp, _sylvester
 
 EX_2_15_THETA = np.radians([0.0, 8.88, 22.1, 63.68, -3.0])
 EX_2_15_D = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j])
@@ -168,23 +169,6 @@ def test_moved_pose_set_gives_moved_dyads(seed, turn, shift):
 
 
 # ------------------------------------------------------------------ real count against 60 digits
-def _interp(fun, nodes):
-    V = mp.matrix([[t ** k for k in range(len(nodes))] for t in nodes])
-    return list(mp.lu_solve(V, mp.matrix([fun(t) for t in nodes])))
-
-
-def _sylvester(f, g):
-    m, n = len(f) - 1, len(g) - 1
-    S = mp.zeros(m + n, m + n)
-    for r in range(n):
-        for k, c in enumerate(reversed(f)):
-            S[r, r + k] = c
-    for r in range(m):
-        for k, c in enumerate(reversed(g)):
-            S[n + r, r + k] = c
-    return mp.det(S)
-
-
 def real_count_mp(theta, d, far=1e8):
     """Distinct real finite solutions of the five-pose problem at 60 digits.
 

@@ -13,8 +13,8 @@ derandomised):
 - the number of real Burmester dyads equals that of an independent high-precision solve of
   the same float64 input (the body axis on a random affine chart; two minors of the 4x3
   matrix [(R_j - R_1) z] eliminated by a resultant, the roots a third minor does not share
-  dropped), for random sets and for planar sets near the planar limit (caps 1e-3 to 3e-7; below, the sextic's roots
-  move so far that some sets lose a real pair, see `mech.spherical.burmester`).
+  dropped), for random sets and for planar sets near the planar limit (caps 1e-3 to 3e-7;
+  caps of 1e-5 to 1e-8 in test_burmester_planar_limit.py, against a chart scaled to the cap).
 """
 
 import mpmath as mp
@@ -28,6 +28,7 @@ from mech.spherical import (burmester, circle_point_curve, dyad_for_centre_point
                             guidance_watt1, guidance_watt2, optimal_guidance, optimal_guidance_watt2,
                             planar_orientations, rotation_matrix, slider_dyad_for_point, slider_dyads,
                             slider_point_curve)
+from tests.spherical.burmester_limit_reference import _interp, _sylvester
 
 EX_2_15_THETA = np.radians([0.0, 8.88, 22.1, 63.68, -3.0])
 EX_2_15_D = np.array([13.84 + 188.47j, -31.07 + 140.64j, -51.64 + 96.33j, 44.74 + 113.95j, 66.27 + 215.07j])
@@ -188,23 +189,6 @@ def test_planar_limit_count_matches_the_planar_count(seed, exponent):
 
 
 # ------------------------------------------------------------------ real count against high precision
-def _interp(fun, nodes):
-    V = mp.matrix([[t ** k for k in range(len(nodes))] for t in nodes])
-    return list(mp.lu_solve(V, mp.matrix([fun(t) for t in nodes])))
-
-
-def _sylvester(f, g):
-    m, n = len(f) - 1, len(g) - 1
-    S = mp.zeros(m + n, m + n)
-    for r in range(n):
-        for k, c in enumerate(reversed(f)):
-            S[r, r + k] = c
-    for r in range(m):
-        for k, c in enumerate(reversed(g)):
-            S[n + r, r + k] = c
-    return mp.det(S)
-
-
 def real_count_mp(R, seed=0, dps=120):
     """Distinct real solutions of u . (R_j - R_1) z = 0 (j = 2..5), at `dps` digits (at least 60).
 
