@@ -123,10 +123,17 @@ def _brentq(f, lo, hi, guess=None):
     range (each step a crank turn simulated); otherwise the whole range is searched."""
     from scipy.optimize import brentq
 
-    solve = lambda a, b: float(brentq(f, a, b, xtol=1e-13, rtol=4 * np.finfo(float).eps, maxiter=200))
+    seen = {}
+
+    def g(x):                                # brentq evaluates the bracket's ends again: reuse them
+        if x not in seen:
+            seen[x] = f(x)
+        return seen[x]
+
+    solve = lambda a, b: float(brentq(g, a, b, xtol=1e-13, rtol=4 * np.finfo(float).eps, maxiter=200))
     if guess is not None and lo < guess < hi:
         a, b = max(lo, guess * (1.0 - 1e-6)), min(hi, guess * (1.0 + 1e-6))
-        fa, fb = f(a), f(b)
+        fa, fb = g(a), g(b)
         if fa == 0.0:
             return float(a)
         if fb == 0.0:
@@ -380,8 +387,9 @@ def _solve_2_5(p):
     target = 2.0 * stroke["stroke"]
     H = lambda x: _slider_2_5(linkage_2_5(dict(p, AB=x)))[0]["stroke"]
     top = ac * (1.0 - 1e-9)
-    if H(top) > target:
-        # the stroke is the chord 2 CD AB/AC of D's arc: the root is near 2 AB
+    # the stroke is the chord 2 CD AB/AC of D's arc: a root exists for 2 AB < AC, near 2 AB
+    # (the simulation at the top of the range is asked only when that closed form says no)
+    if 2.0 * ab < top or H(top) > target:
         ab2 = _brentq(lambda x: H(x) - target, 1e-6 * ac, top, guess=2.0 * ab)
         doubled = (Result("crank length for 2H", ab2, "mm", "root of H(AB) = 2H, `Linkage` strokes"),
                    Result("K with that crank", GuideBar(ab2, ac).time_ratio(), "", "`GuideBar(AB, AC).time_ratio()`"))

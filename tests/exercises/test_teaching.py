@@ -386,6 +386,10 @@ def test_whole_class_every_exercise(tmp_path):
           f"Moodle and QTI {time.perf_counter() - t2:.0f} s")
     check_moodle(tmp_path / "quiz.xml", 30, list(EXERCISES))
     check_qti(tmp_path / "quiz.zip", 30, list(EXERCISES))
+    from tests.exercises.test_quiz_formats import validate_moodle, validate_qti
+
+    assert validate_moodle(tmp_path / "quiz.xml") == []
+    assert validate_qti(tmp_path / "quiz.zip") == []
     check_pdfs(tmp_path, students)
 
 
