@@ -38,10 +38,10 @@ def _int(rng, low, high, step=1):
     return float(step * int(rng.integers(round(low / step), round(high / step) + 1)))
 
 
-def _example(number, title, statement, parameters, solver, sampler):
+def _example(number, title, statement, parameters, solver, sampler, tag="N"):
     # the number is passed through a variable: mech.index reads `Exercise(number="2-1")`
     # calls as exercises, and an example is not one
-    return Exercise(number=number, title=title, tag="N", statement=statement, parameters=parameters,
+    return Exercise(number=number, title=title, tag=tag, statement=statement, parameters=parameters,
                     solver=solver, sampler=sampler)
 
 
@@ -270,7 +270,8 @@ EXAMPLES = (
              "Find ω2, ω3, α2 and α3 (counter-clockwise positive) and the speed and acceleration of E.",
              (Parameter("AB", 25.0), Parameter("BC", 60.0), Parameter("CD", 45.0), Parameter("AD", 55.0),
               Parameter("theta1", 60.0, "deg"), Parameter("omega1", -4.0, "rad/s"),
-              Parameter("BE_along", 30.0), Parameter("BE_left", 20.0)), _solve_e2_8, _sample_e2_8),
+              Parameter("BE_along", 30.0), Parameter("BE_left", 20.0)), _solve_e2_8, _sample_e2_8,
+             tag="A"),            # the text gives this example without dimensions: they are chosen
     _example("E2-9", "Worked example 2-9: a guide-bar with a Coriolis acceleration",
              "In a guide-bar mechanism AB = BC = l = {l} mm and ∠BAC = 45°; the crank AB turns clockwise at "
              "the constant ω1 = {omega1} rad/s and its block B slides in the slot of guide 3, which turns "

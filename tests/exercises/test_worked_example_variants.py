@@ -188,3 +188,14 @@ def test_examples_exported_to_moodle_and_qti(tmp_path):
     check_moodle(tmp_path / "quiz.xml", 2, numbers)
     check_qti(tmp_path / "quiz.zip", 2, numbers)
     assert math.isfinite(students[0].items[1].quantities[0].value)
+
+
+def test_sheet_command_takes_the_examples(tmp_path, capsys):
+    from mech.exercises.__main__ import main
+
+    assert main(["sheet", "examples", "2-3", "--students", "1", "--seed", "4", "--out", str(tmp_path),
+                 "--format", "md"]) == 0
+    text = (tmp_path / "student_01.md").read_text(encoding="utf-8")
+    assert [n for n in list(EXAMPLES) + ["2-3"] if f"## Exercise {n}:" in text] == list(EXAMPLES) + ["2-3"]
+    main(["list"])
+    assert "E2-8  [A]  Worked example 2-8" in capsys.readouterr().out
