@@ -84,8 +84,8 @@ def _chunk(args):
     return number, len(seeds), found, time.process_time() - t0
 
 
-def sweep(numbers=None, seeds=1000, *, workers=1, chunk=50, progress=True):
-    """Check seeds ``0 .. seeds-1`` of each exercise in ``numbers`` (all when None).
+def sweep(numbers=None, seeds=1000, *, first=0, workers=1, chunk=50, progress=True):
+    """Check seeds ``first .. first+seeds-1`` of each exercise in ``numbers`` (all when None).
 
     Returns a dict of exercise number to ``{"seeds", "failures", "cpu_s"}`` (failures a
     list of ``(seed, fault)``), plus ``"wall_s"`` under the key ``"_total"``. With
@@ -97,9 +97,11 @@ def sweep(numbers=None, seeds=1000, *, workers=1, chunk=50, progress=True):
 
     numbers = list(EXERCISES) if numbers is None else list(numbers)
     seeds = integer("seeds", seeds, minimum=1)
+    first = integer("first", first, minimum=0)
     workers = integer("workers", workers, minimum=1)
     chunk = integer("chunk", chunk, minimum=1)
-    jobs = [(n, range(s, min(s + chunk, seeds))) for n in numbers for s in range(0, seeds, chunk)]
+    end = first + seeds
+    jobs = [(n, range(s, min(s + chunk, end))) for n in numbers for s in range(first, end, chunk)]
     out = {n: {"seeds": 0, "failures": [], "cpu_s": 0.0} for n in numbers}
     bar = None
     if progress:
@@ -140,11 +142,12 @@ def _main(argv=None):
     parser = argparse.ArgumentParser(prog="python -m mech.exercises._sweep",
                                      description="Check that every seed of every exercise gives a valid variant.")
     parser.add_argument("numbers", nargs="*", help="exercise numbers (default: all)")
-    parser.add_argument("--seeds", type=int, default=1000)
+    parser.add_argument("--seeds", type=int, default=1000, help="how many seeds (default 1000)")
+    parser.add_argument("--first", type=int, default=0, help="the first seed (default 0), to split a sweep")
     parser.add_argument("--workers", type=int, default=1)
     parser.add_argument("--json", help="write the totals to this file")
     args = parser.parse_args(argv)
-    result = sweep(args.numbers or None, args.seeds, workers=args.workers)
+    result = sweep(args.numbers or None, args.seeds, first=args.first, workers=args.workers)
     rows = {k: v for k, v in result.items() if k != "_total"}
     for number, row in rows.items():
         print(f"{number:>5}: {row['seeds']} seeds, {len(row['failures'])} failures, {row['cpu_s']:.0f} s CPU")
