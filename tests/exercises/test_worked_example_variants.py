@@ -199,3 +199,18 @@ def test_sheet_command_takes_the_examples(tmp_path, capsys):
     assert [n for n in list(EXAMPLES) + ["2-3"] if f"## Exercise {n}:" in text] == list(EXAMPLES) + ["2-3"]
     main(["list"])
     assert "E2-8  [A]  Worked example 2-8" in capsys.readouterr().out
+
+
+def test_examples_in_the_pdfs(tmp_path):
+    """The sheets hold each student's givens of the examples, the keys answers that `check`
+    accepts (read back with pdftotext)."""
+    import shutil
+
+    if shutil.which("pdftotext") is None or shutil.which("pdftoppm") is None:
+        pytest.skip("poppler-utils (pdftotext, pdftoppm) not installed: make test-deps")
+    from mech.exercises._export import build_class, write_pdf
+    from tests.exercises.test_teaching import check_pdfs
+
+    students = build_class(["E2-2", "E2-8", "E2-20"], students=2, seed=9)
+    write_pdf(students, tmp_path)
+    check_pdfs(tmp_path, students)
