@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from mech.exercises import EXERCISES, get
+from mech.exercises import EXAMPLES, EXERCISES, get
 from mech.exercises._sheet import DEFAULT_EXERCISES, check_answers, solved_variant, tolerances
 
 FORMATS = ("md", "html", "pdf", "moodle", "qti")
@@ -40,8 +40,8 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _exercise(text):
-    if text.strip().lower() == "all":
-        return "all"
+    if text.strip().lower() in ("all", "examples"):
+        return text.strip().lower()
     try:
         return get(text)
     except ValueError as err:
@@ -95,7 +95,8 @@ def _parser():
     variant.add_argument("--markdown", action="store_true", help="print Markdown instead of plain text")
     sheet = sub.add_parser("sheet", help="write a sheet and a key per student, and quizzes")
     sheet.add_argument("numbers", nargs="*", type=_exercise, metavar="NUMBER",
-                       help=f"exercise numbers, or 'all' (default: {' '.join(DEFAULT_EXERCISES)})")
+                       help=f"exercise numbers, worked examples (E2-1 ...), 'all' exercises or 'examples' "
+                            f"(default: {' '.join(DEFAULT_EXERCISES)})")
     sheet.add_argument("--students", type=_count, default=30, help="number of students (default 30)")
     sheet.add_argument("--seed", type=_count, default=None, help="class seed (default: a new one, printed)")
     sheet.add_argument("--out", type=Path, required=True, metavar="DIR", help="folder for the files")
@@ -124,9 +125,11 @@ def _parser():
 
 
 def _numbers(args):
-    if "all" in args.numbers:
-        return list(EXERCISES)
-    return [ex.number for ex in args.numbers] or list(DEFAULT_EXERCISES)
+    out = []
+    for x in args.numbers:
+        group = list(EXERCISES) if x == "all" else list(EXAMPLES) if x == "examples" else [x.number]
+        out += [n for n in group if n not in out]
+    return out or list(DEFAULT_EXERCISES)
 
 
 def _sheet(args):
@@ -224,7 +227,7 @@ def _list():
     print("Tags:")
     for k, v in TAGS.items():
         print(f"  [{k}] {v}")
-    for ex in EXERCISES.values():
+    for ex in (*EXERCISES.values(), *EXAMPLES.values()):
         given = ", ".join(f"{p.name}={p.default:g}" for p in ex.parameters)
         print(f"{ex.number}  [{ex.tag}]  {ex.title}  ({given})")
     return 0

@@ -156,6 +156,28 @@ ANSWER_KEYS = {
              ("l_BC_2", _r("design 2: l_BC"), "coupler BC of design 2")),
     "2-32": (("l_AC", _r("l_AC"), "frame AC"), ("l_CD", _r("l_CD"), "guide bar CD"),
              ("h_C", _r("distance of the ram's path from C"), "distance of the ram's path from C")),
+    # the worked examples with variants (mech.exercises.examples_chapter2)
+    "E2-1": (("phi", _r("swing φ of CD"), "swing φ of the rocker CD"),
+             ("theta", _r("extreme-position angle θ"), "extreme-position angle θ"),
+             ("K", _r("time ratio K"), "time ratio K"),
+             ("gamma_min", _r("minimum transmission angle γ_min"), "minimum transmission angle γ_min")),
+    "E2-2": (("l_AB", _r("crank length AB"), "crank length AB"), ("K", _r("time ratio K"), "time ratio K"),
+             ("L_min", _r("shortest guide"), "shortest length of the guide")),
+    "E2-3": (("theta", _r("extreme-position angle θ"), "extreme-position angle θ"),
+             ("H", _r("stroke H"), "stroke H of the slider"), ("K", _r("time ratio K"), "time ratio K")),
+    "E2-8": (("omega2", _r("ω2"), "angular velocity ω2 of the coupler (counter-clockwise positive)"),
+             ("omega3", _r("ω3"), "angular velocity ω3 of the rocker (counter-clockwise positive)"),
+             ("alpha2", _r("α2"), "angular acceleration α2 of the coupler (counter-clockwise positive)"),
+             ("alpha3", _r("α3"), "angular acceleration α3 of the rocker (counter-clockwise positive)"),
+             ("v_E", _r("v_E"), "speed of the coupler point E"), ("a_E", _r("a_E"), "acceleration of E (size)")),
+    "E2-9": (("omega3", _r("ω3"), "angular velocity ω3 of the guide (counter-clockwise positive)"),
+             ("alpha3", _r("α3"), "angular acceleration α3 of the guide (counter-clockwise positive)"),
+             ("a_k", _r("Coriolis acceleration a^k"), "size of the Coriolis acceleration of B")),
+    "E2-19": (("l_AB", _r("crank length AB"), "crank length AB"), ("l_BC", _r("rod length BC"), "rod length BC"),
+              ("gamma_min", _r("minimum transmission angle γ_min"), "minimum transmission angle γ_min")),
+    "E2-20": (("theta", _r("extreme-position angle θ"), "extreme-position angle θ"),
+              ("l_AB", _r("crank length AB"), "crank length AB"),
+              ("L_min", _r("shortest guide"), "shortest length of the guide")),
 }
 
 _POINT = re.compile(r"\(\s*(-?[0-9.]+(?:e[-+]?\d+)?),\s*(-?[0-9.]+(?:e[-+]?\d+)?)\)")

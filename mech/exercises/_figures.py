@@ -160,6 +160,10 @@ def draw(number, p, fig):
     from mech.exercises import chapter2_reactions as rx
     from mech.exercises import chapter2_relative_motion as rm
 
+    if number.startswith("E"):
+        from mech.exercises.examples_chapter2 import draw_example
+
+        return draw_example(number, p, fig)
     ax = fig.add_subplot(111) if number not in ("2-1", "2-8", "2-23", "2-30") else None
     if number == "2-1":
         axs = fig.subplots(1, 3)
@@ -382,7 +386,8 @@ def figure_png(number, params, *, dpi=96):
     wide = number in ("2-1", "2-8", "2-23")
     fig = Figure(figsize=(9.0, 3.2) if wide else (5.6, 3.8))
     draw(number, params, fig)
-    fig.suptitle(f"Exercise {number} (schematic)", fontsize=9)
+    what = f"Worked example {number[1:]}" if number.startswith("E") else f"Exercise {number}"
+    fig.suptitle(f"{what} (schematic)", fontsize=9)
     fig.subplots_adjust(left=0.08, right=0.98, bottom=0.1, top=0.86, wspace=0.25)
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=dpi)

@@ -44,7 +44,7 @@ UNITS = {
     "": ("number", 1.0), "%": ("number", 0.01),
 }
 _KIND_OF_QUANTITY = {"deg": "angle", "mm": "length", "N": "force", "N·m": "moment", "m/s": "speed",
-                     "mm/s": "speed", "m/s²": "acceleration", "rad/s": "angular speed",
+                     "mm/s": "speed", "m/s²": "acceleration", "mm/s²": "acceleration", "rad/s": "angular speed",
                      "rad/s²": "angular acceleration", "": "number"}
 _SHOWN = {"angle": "deg, degrees, rad", "length": "mm, cm, m", "force": "N, kN", "moment": "N m, N*m, N mm",
           "speed": "m/s, mm/s", "acceleration": "m/s^2, mm/s^2", "angular speed": "rad/s, rpm",

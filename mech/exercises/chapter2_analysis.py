@@ -116,10 +116,31 @@ def _extremum(f, *, largest=True, samples=2048, rounds=7, zoom=41):
     return float(sign * value), float(at % _TURN)
 
 
-def _brentq(f, lo, hi):
+def _brentq(f, lo, hi, guess=None):
+    """The root of ``f`` in [lo, hi]. With a ``guess`` (a closed form of the assumed layout),
+    a bracket of relative width 2e-6 about it is tried first: when ``f`` changes sign there,
+    the root of the simulation is found in a few steps instead of some thirty over the whole
+    range (each step a crank turn simulated); otherwise the whole range is searched."""
     from scipy.optimize import brentq
 
-    return float(brentq(f, lo, hi, xtol=1e-13, rtol=4 * np.finfo(float).eps, maxiter=200))
+    seen = {}
+
+    def g(x):                                # brentq evaluates the bracket's ends again: reuse them
+        if x not in seen:
+            seen[x] = f(x)
+        return seen[x]
+
+    solve = lambda a, b: float(brentq(g, a, b, xtol=1e-13, rtol=4 * np.finfo(float).eps, maxiter=200))
+    if guess is not None and lo < guess < hi:
+        a, b = max(lo, guess * (1.0 - 1e-6)), min(hi, guess * (1.0 + 1e-6))
+        fa, fb = g(a), g(b)
+        if fa == 0.0:
+            return float(a)
+        if fb == 0.0:
+            return float(b)
+        if (fa < 0.0) != (fb < 0.0):
+            return solve(a, b)
+    return solve(lo, hi)
 
 
 def _deg(x):
@@ -366,8 +387,10 @@ def _solve_2_5(p):
     target = 2.0 * stroke["stroke"]
     H = lambda x: _slider_2_5(linkage_2_5(dict(p, AB=x)))[0]["stroke"]
     top = ac * (1.0 - 1e-9)
-    if H(top) > target:
-        ab2 = _brentq(lambda x: H(x) - target, 1e-6 * ac, top)
+    # the stroke is the chord 2 CD AB/AC of D's arc: a root exists for 2 AB < AC, near 2 AB
+    # (the simulation at the top of the range is asked only when that closed form says no)
+    if 2.0 * ab < top or H(top) > target:
+        ab2 = _brentq(lambda x: H(x) - target, 1e-6 * ac, top, guess=2.0 * ab)
         doubled = (Result("crank length for 2H", ab2, "mm", "root of H(AB) = 2H, `Linkage` strokes"),
                    Result("K with that crank", GuideBar(ab2, ac).time_ratio(), "", "`GuideBar(AB, AC).time_ratio()`"))
         note = ("The stroke equals the chord of D's arc, 2 CD sin(θ/2) with sin(θ/2) = AB/AC, so "
@@ -440,7 +463,14 @@ def _solve_2_5(p):
 
 
 def _sample_2_5(rng):
-    return {k: _around(rng, v) for k, v in (("AB", 200), ("AC", 585), ("CD", 30), ("DE", 700))}
+    # part (5) asks for the crank that doubles the stroke; the stroke is 2 CD AB/AC, at most
+    # 2 CD, so the answer exists only for AB < AC/2. Drawn independently within 20 %, AB and AC
+    # reach AB/AC = 0.5 in about 1 draw of 200 (seed 106: AB = 239, AC = 477), so a draw
+    # with AB > 0.45 AC is drawn again (the root then lies clear of the bracket's end AC).
+    while True:
+        p = {k: _around(rng, v) for k, v in (("AB", 200), ("AC", 585), ("CD", 30), ("DE", 700))}
+        if p["AB"] <= 0.45 * p["AC"]:
+            return p
 
 # ----------------------------------------------------------------------------- 2-7
 _STATEMENT_2_7 = (
@@ -501,7 +531,8 @@ def _tool_2_7(linkage):
 def _crank_2_7(ab, ad, dp, k):
     """Crank length whose simulated tool motion has time ratio ``k`` (a root solve)."""
     f = lambda bc: _tool_2_7(_build_2_7(ab, ad, dp, bc))["time_ratio"] - k
-    return _brentq(f, ab * (1.0 + 1e-6), ab * 1e4)
+    # one stroke turns the crank through 2 arccos(AB/BC) = 360°/(K + 1): the root is near there
+    return _brentq(f, ab * (1.0 + 1e-6), ab * 1e4, guess=ab / math.cos(math.pi / (k + 1.0)))
 
 
 def _solve_2_7(p):

@@ -202,6 +202,23 @@ def test_exercise_2_5_variants(seed):
     _check_2_5(p, _get("2-5").solve(p))
 
 
+def test_exercise_2_5_seed_106_has_the_doubling_crank():
+    """Seed 106 once drew AB = 239, AC = 477: AB > AC/2, where no crank doubles the stroke
+    (H = 2 CD AB/AC is at most 2 CD), so the key lacked l_AB_2H. The sampler now keeps
+    AB <= 0.45 AC; every one of 1,000 raw draws does, and seed 106's key has the crank,
+    equal to 2 AB by the hand formula."""
+    from mech.exercises._answers import answers
+
+    for seed in range(1000):
+        q = _get("2-5").sampler(np.random.default_rng(seed))
+        assert q["AB"] <= 0.45 * q["AC"], (seed, q)
+    p = _get("2-5").variant(106)
+    s = _get("2-5").solve(p)
+    got = {a[0]: a[2] for a in answers(s)}
+    assert got["l_AB_2H"] == pytest.approx(float(_hand_2_5(p)["doubled"]), rel=1e-10)
+    _check_2_5(p, s)
+
+
 def test_exercise_2_5_numpy_sweep():
     """Brute force: the guide-bar six-bar swept in plain NumPy (C = 0, A above C)."""
     p = _get("2-5").defaults
