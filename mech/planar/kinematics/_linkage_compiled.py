@@ -21,7 +21,11 @@ cranks and RRR groups of fixed lengths have a loop; any other linkage stays on N
 
 from __future__ import annotations
 
+import hashlib
+import importlib.util
 import math
+import os
+import sys
 
 import numpy as np
 
@@ -39,7 +43,26 @@ MIN_SIZE = 512
 KINDS = frozenset({"ground", "point", "crank", "rrr"})
 
 _KERNELS = {}       # source of a loop -> its compiled function
-_HELPERS = {}
+
+#: The module written for each topology: the generated functions the loop calls, the mode
+#: rules and the loop, each compiled by numba with its on-disk cache, so a later process
+#: loads the machine code instead of compiling it again (seconds for a six-bar at order 2).
+_HEADER = """import math
+
+import numba
+import numpy as np
+
+from mech._generated import assur_groups as _g
+
+_jit = numba.njit(cache=True, error_model="numpy")
+rbp = _jit(_g.rigid_body_position)
+rbv = _jit(_g.rigid_body_velocity)
+rba = _jit(_g.rigid_body_acceleration)
+rrr = _jit(_g.rrr_position)
+rrr_root = _jit(_g.rrr_position_root)
+rrv = _jit(_g.rrr_velocity)
+rra = _jit(_g.rrr_acceleration)
+"""
 
 
 def supported(linkage):
@@ -50,21 +73,6 @@ def supported(linkage):
         if step.kind == "rrr" and any(isinstance(r, str) for r in step.get("lengths")):
             return False
     return True
-
-
-def _helpers():
-    """numba-compiled copies of the generated functions the loop calls (compiled on first use)."""
-    if not _HELPERS:
-        import numba
-
-        from mech._generated import assur_groups as g
-
-        jit = numba.njit(cache=False, error_model="numpy")
-        for name in ("rigid_body_position", "rigid_body_velocity", "rigid_body_acceleration", "rrr_position",
-                     "rrr_position_root", "rrr_velocity", "rrr_acceleration"):
-            _HELPERS[name] = jit(getattr(g, name))
-        _HELPERS["numba"] = numba
-    return _HELPERS
 
 
 class _Writer:
@@ -243,7 +251,7 @@ def mode(theta, branch, points, period, width, bridge):
 
 
 def pymod(a, b):
-    m = math.fmod(a, b)
+    m = np.fmod(a, b)
     if m != 0.0:
         if (b < 0.0) != (m < 0.0):
             m += b
@@ -259,30 +267,64 @@ def cdiv(ar, ai, b):
 '''
 
 
+def cache_dir():
+    """Where the loops' modules and numba's caches of them are written.
+
+    ``MECH_CACHE_DIR`` if set, else ``~/.cache/mech`` (``XDG_CACHE_HOME`` respected).
+    """
+    root = os.environ.get("MECH_CACHE_DIR")
+    if not root:
+        root = os.path.join(os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),
+                            "mech")
+    return os.path.join(root, "linkage-loops")
+
+
 def kernel(src):
-    """The compiled loop of `src` (compiled once per process)."""
+    """The compiled loop of `src`: from this process's table, numba's disk cache, or compiled."""
     fn = _KERNELS.get(src)
     if fn is None:
-        h = _helpers()
-        numba = h["numba"]
-        scope = {"math": math, "np": np, "rbp": h["rigid_body_position"], "rbv": h["rigid_body_velocity"],
-                 "rba": h["rigid_body_acceleration"], "rrr": h["rrr_position"], "rrr_root": h["rrr_position_root"],
-                 "rrv": h["rrr_velocity"], "rra": h["rrr_acceleration"]}
-        exec(compile(_mode_source(), "<linkage modes>", "exec"), scope)
-        jit = numba.njit(cache=False, error_model="numpy")
-        for name in ("mode", "pymod", "cdiv"):
-            scope[name] = jit(scope[name])
-        exec(compile(src, "<linkage loop>", "exec"), scope)
-        fn = _KERNELS[src] = jit(scope["loop"])
+        text = _HEADER + _jitted(_mode_source()) + "\n\n" + _jitted(src)
+        name = "mech_linkage_loop_" + hashlib.sha256(text.encode()).hexdigest()[:20]
+        try:
+            folder = cache_dir()
+            os.makedirs(folder, exist_ok=True)
+            path = os.path.join(folder, name + ".py")
+            if not os.path.exists(path):
+                # written whole, then renamed: a process running at the same time reads either nothing or all
+                tmp = f"{path}.{os.getpid()}.tmp"
+                with open(tmp, "w") as fh:
+                    fh.write(text)
+                os.replace(tmp, path)
+        except OSError:                 # nowhere to write: compile in memory, every process again
+            path = None
+        if path is None:
+            scope = {}
+            exec(compile(text.replace("cache=True", "cache=False"), f"<{name}>", "exec"), scope)
+            fn = scope["loop"]
+        else:
+            spec = importlib.util.spec_from_file_location(name, path)
+            module = importlib.util.module_from_spec(spec)
+            # numba's cache finds the module's globals again by its name
+            sys.modules[name] = module
+            spec.loader.exec_module(module)
+            fn = module.loop
+        _KERNELS[src] = fn
     return fn
 
 
-def _column(x, n):
-    """A driver's input as a 1-d array and its step per pose (0 for one value)."""
+def _jitted(src):
+    """Put numba's decorator on every top-level function of `src`."""
+    return ("\n" + src).replace("\ndef ", '\n@numba.njit(cache=True, error_model="numpy")\ndef ')
+
+
+def _column(x, shape):
+    """A driver's input as a 1-d array over `shape` and its step per pose (0 for one value)."""
     x = np.asarray(x, dtype=float)
     if x.size == 1:
-        return x.reshape(1), 0
-    return np.ascontiguousarray(np.broadcast_to(x, x.shape).reshape(-1)), 1
+        return [x.reshape(1), 0]
+    if x.shape != tuple(shape):
+        x = np.broadcast_to(x, shape)
+    return [np.ascontiguousarray(x).reshape(-1), 1]
 
 
 def solve(linkage, steps, order, shape, q, w, al, crank, unit):
@@ -290,15 +332,21 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit):
     from mech.planar.kinematics._linkage_groups import _State
 
     drivers = list(linkage._drivers)
-    schedules = linkage._schedules() if crank is not None else {}
-    src, par, lay = _source(linkage, steps, order, schedules, unit, drivers)
-    fn = kernel(src)
+    cache = linkage.__dict__.setdefault("_compiled_cache", {})
+    key = (order, unit)
+    if key not in cache:
+        schedules = linkage._schedules() if crank is not None else {}
+        src, par, lay = _source(linkage, steps, order, schedules, unit, drivers)
+        pts = [np.ascontiguousarray(sch.points, dtype=float) for _, sch in lay["scheduled"]]
+        rated = {s.links[0]: s.get("driver") for s in steps if s.kind == "crank"}
+        grounds = [(s.label, s.get("at") * unit if unit != 1.0 else s.get("at")) for s in steps if s.kind == "ground"]
+        cache[key] = (kernel(src), par, lay, pts, rated, grounds)
+    fn, par, lay, pts, rated, grounds = cache[key]
     n = math.prod(shape)
     cols = []
     for d in drivers:
         for x in (q[d], w[d], al[d]):
-            x = np.broadcast_to(np.asarray(x, dtype=float), shape) if np.size(x) != 1 else np.asarray(x, dtype=float)
-            cols += list(_column(x, n))
+            cols += _column(x, shape)
     moving, lks, groups = lay["moving"], lay["links"], lay["groups"]
     P = np.empty((len(moving), n), complex)
     V = np.empty((len(moving) if order >= 1 else 0, n), complex)
@@ -309,25 +357,23 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit):
     valid = np.empty(n, dtype=bool)
     fail = np.empty((len(groups), n), dtype=bool)
     redo = np.empty(n, dtype=bool)
-    pts = [np.ascontiguousarray(sch.points, dtype=float) for _, sch in lay["scheduled"]]
     fn(*cols, *pts, par, float(unit), P, V, A, D, W, AL, valid, fail, redo)
+    for x in (P, V, A, D, W, AL, valid, fail):
+        x.flags.writeable = False           # read-only, as the NumPy path's broadcast views are
     st = _State(order, shape)
     st.modes = {}
-    for step in steps:
-        if step.kind == "ground":
-            at = step.get("at")
-            st.P[step.label] = at * unit if unit != 1.0 else at
-            if order >= 1:
-                st.V[step.label] = 0.0 * unit if unit != 1.0 else 0.0
-            if order >= 2:
-                st.A[step.label] = 0.0 * unit if unit != 1.0 else 0.0
+    for label, at in grounds:
+        st.P[label] = at
+        if order >= 1:
+            st.V[label] = 0.0
+        if order >= 2:
+            st.A[label] = 0.0
     for i, name in enumerate(moving):
         st.P[name] = P[i].reshape(shape)
         if order >= 1:
             st.V[name] = V[i].reshape(shape)
         if order >= 2:
             st.A[name] = A[i].reshape(shape)
-    rated = {s.links[0]: s.get("driver") for s in steps if s.kind == "crank"}
     for i, link in enumerate(lks):
         st.dir[link] = D[i].reshape(shape)
         if order >= 1:
@@ -364,10 +410,11 @@ def _put(current, value, idx, shape):
     """`current` (an array over `shape` or one value) with `value` written at the flat `idx`."""
     value = np.asarray(value)
     cur = np.asarray(current)
-    if cur.shape != tuple(shape) or 0 in cur.strides or not cur.flags.writeable:
+    if cur.shape != tuple(shape) or 0 in cur.strides:
         if value.ndim == 0:         # one value in the NumPy solve too: nothing was interpolated
             return current
-        cur = np.array(np.broadcast_to(cur, shape), dtype=np.result_type(cur, value))
+    cur = np.array(np.broadcast_to(cur, shape), dtype=np.result_type(cur, value))
     flat = cur.reshape(-1)
     flat[idx] = np.broadcast_to(value, idx.shape)
+    cur.flags.writeable = False
     return cur

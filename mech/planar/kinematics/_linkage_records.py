@@ -157,7 +157,10 @@ class LinkageSolution:
 
     def __init__(self, linkage, order, state, failures):
         shape = state.shape
-        full = lambda x: np.broadcast_to(np.asarray(x), shape)
+        def full(x):
+            # an array of the full shape already (the compiled loop's rows) is kept as it is
+            return x if type(x) is np.ndarray and x.shape == shape else np.broadcast_to(np.asarray(x), shape)
+
         self.linkage, self.order, self.valid = linkage, order, state.valid
         self.points = MappingProxyType({k: full(v) for k, v in state.P.items()})
         self.velocities = MappingProxyType({k: full(v) for k, v in state.V.items()})
