@@ -54,7 +54,7 @@ import numpy as np
 
 from mech._generated import assur_groups as _g
 
-_jit = numba.njit(cache=True, error_model="numpy")
+_jit = numba.njit(cache=True, error_model="numpy", inline="always")
 rbp = _jit(_g.rigid_body_position)
 rbv = _jit(_g.rigid_body_velocity)
 rba = _jit(_g.rigid_body_acceleration)
@@ -89,7 +89,7 @@ class _Writer:
         self.lines.extend(lines)
 
 
-def _source(linkage, steps, order, schedules, unit, drivers):
+def _source(linkage, steps, order, schedules, unit, drivers, dirs):
     """The loop's source for `steps` and the values of ``par``; also the output layout."""
     wr = _Writer()
     points, links, groups, scheduled = {}, {}, [], []
@@ -206,7 +206,8 @@ def _source(linkage, steps, order, schedules, unit, drivers):
             else:
                 wr.add(f"{out}[{i}, t] = complex({n}{r}x, {n}{r}y)")
     for i, L in enumerate(lks):
-        wr.add(f"D[{i}, t] = complex({L}dx, {L}dy)")
+        if dirs:
+            wr.add(f"D[{i}, t] = complex({L}dx, {L}dy)")
         if order >= 1 and L not in rated:
             wr.add(f"W[{i}, t] = {L}w")
         if order >= 2 and L not in rated:
@@ -327,16 +328,21 @@ def _column(x, shape):
     return [np.ascontiguousarray(x).reshape(-1), 1]
 
 
-def solve(linkage, steps, order, shape, q, w, al, crank, unit):
-    """`Linkage._solve_all` by the compiled loop; returns (state, failures)."""
+def solve(linkage, steps, order, shape, q, w, al, crank, unit, dirs=False):
+    """`Linkage._solve_all` by the compiled loop; returns (state, failures).
+
+    The links' directions take as many bytes per pose as the points, and a caller often
+    never reads them: without `dirs` the loop does not store them, and the state's
+    ``dirs_later`` solves again, storing them, when the solution first needs them.
+    """
     from mech.planar.kinematics._linkage_groups import _State
 
     drivers = list(linkage._drivers)
     cache = linkage.__dict__.setdefault("_compiled_cache", {})
-    key = (order, unit)
+    key = (order, unit, dirs)
     if key not in cache:
         schedules = linkage._schedules() if crank is not None else {}
-        src, par, lay = _source(linkage, steps, order, schedules, unit, drivers)
+        src, par, lay = _source(linkage, steps, order, schedules, unit, drivers, dirs)
         pts = [np.ascontiguousarray(sch.points, dtype=float) for _, sch in lay["scheduled"]]
         rated = {s.links[0]: s.get("driver") for s in steps if s.kind == "crank"}
         grounds = [(s.label, s.get("at") * unit if unit != 1.0 else s.get("at")) for s in steps if s.kind == "ground"]
@@ -351,7 +357,7 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit):
     P = np.empty((len(moving), n), complex)
     V = np.empty((len(moving) if order >= 1 else 0, n), complex)
     A = np.empty((len(moving) if order >= 2 else 0, n), complex)
-    D = np.empty((len(lks), n), complex)
+    D = np.empty((len(lks) if dirs else 0, n), complex)
     W = np.empty((len(lks) if order >= 1 else 0, n))
     AL = np.empty((len(lks) if order >= 2 else 0, n))
     valid = np.empty(n, dtype=bool)
@@ -375,7 +381,8 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit):
         if order >= 2:
             st.A[name] = A[i].reshape(shape)
     for i, link in enumerate(lks):
-        st.dir[link] = D[i].reshape(shape)
+        if dirs:
+            st.dir[link] = D[i].reshape(shape)
         if order >= 1:
             st.W[link] = w[rated[link]] if link in rated else W[i].reshape(shape)
         if order >= 2:
@@ -385,6 +392,9 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit):
     failures = {label: fail[j].reshape(shape) for j, label in enumerate(groups)}
     if crank is not None and redo.any():
         _redo(linkage, steps, order, shape, q, w, al, crank, unit, st, failures, np.flatnonzero(redo))
+    if not dirs:
+        st.dirs_later = lambda: {k: v for k, v in solve(linkage, steps, order, shape, q, w, al, crank, unit,
+                                                         True)[0].dir.items() if k != GROUND}
     return st, failures
 
 
@@ -398,8 +408,8 @@ def _redo(linkage, steps, order, shape, q, w, al, crank, unit, st, failures, idx
     for kind, table, subtable in (("P", st.P, sub.P), ("V", st.V, sub.V), ("A", st.A, sub.A),
                                   ("W", st.W, sub.W), ("AL", st.AL, sub.AL), ("dir", st.dir, sub.dir)):
         for key, value in subtable.items():
-            if key == GROUND and kind == "dir":
-                continue
+            if kind == "dir" and (key == GROUND or key not in table):
+                continue            # the directions of a second pass (`solve` with `dirs`)
             table[key] = _put(table[key], value, idx, shape)
     st.valid = _put(st.valid, sub.valid, idx, shape)
     for label in failures:
