@@ -83,14 +83,14 @@ def plain_linkage_loop(linkage):
     scope = {"math": math}
     exec(f"def loop(theta, out):\n    for t in range(theta.shape[0]):\n{body}\n{stores}\n", scope)
     loop = numba.njit(error_model="numpy")(scope["loop"])
+    return lambda theta: _rows(loop, len(names), theta)
 
-    def run(theta):
-        out = np.empty((len(names), theta.size), complex)
-        loop(theta, out)
-        return out
 
-    run.names = names
-    return run
+def _rows(loop, count, theta):
+    """Run `loop` into `count` new complex rows over the poses; return them."""
+    out = np.empty((count, theta.size), complex)
+    loop(theta, out)
+    return out
 
 
 def plain_batch_loop():
@@ -122,10 +122,15 @@ def plain_batch_loop():
 
 
 def batch_dims(n):
-    """Four-bars of the atlas's design space (crank-rockers and others), branch +1 or -1."""
+    """`n` four-bars of the atlas's design space that close (each link shorter than the other
+    three together), of every Grashof type, branch +1 or -1."""
     rng = np.random.default_rng(30)
-    a, b, c = np.exp(rng.uniform(np.log(0.2), np.log(5.0), (3, n)))
-    return a, b, c, np.ones(n), b * rng.uniform(-1, 2, n), b * rng.uniform(-1.5, 1.5, n), rng.choice([-1.0, 1.0], n)
+    a, b, c = np.exp(rng.uniform(np.log(0.2), np.log(5.0), (3, 3 * n)))
+    d = np.ones(3 * n)
+    L = np.stack([a, b, c, d])
+    keep = np.flatnonzero((2 * L.max(axis=0) < L.sum(axis=0)))[:n]
+    a, b, c, d = L[:, keep]
+    return a, b, c, d, b * rng.uniform(-1, 2, n), b * rng.uniform(-1.5, 1.5, n), rng.choice([-1.0, 1.0], n)
 
 
 def make(method, n):
@@ -156,12 +161,13 @@ def worker(method, n, calls):
     start = time.perf_counter()
     run()
     first = time.perf_counter() - start
-    times = []
+    times, cpu = [], []
     for _ in range(calls):
-        start = time.perf_counter()
+        start, start_cpu = time.perf_counter(), time.process_time()
         run()
         times.append(time.perf_counter() - start)
-    print(json.dumps({"times": times, "first_call_s": first}))
+        cpu.append(time.process_time() - start_cpu)
+    print(json.dumps({"times": times, "cpu": cpu, "first_call_s": first}))
 
 
 def spawn(method, n, calls):
@@ -174,16 +180,24 @@ def spawn(method, n, calls):
 
 
 def measure(groups, rounds, calls, log):
+    """Medians of the wall-clock and the CPU time of each (method, n)."""
     out = {}
     for n, methods in groups:
-        samples = {m: [] for m in methods}
+        samples = {m: {"times": [], "cpu": []} for m in methods}
         for _ in range(rounds):
             for m in methods:
-                samples[m] += spawn(m, n, calls)["times"]
+                got = spawn(m, n, calls)
+                for key in ("times", "cpu"):
+                    samples[m][key] += got[key]
         for m in methods:
-            out[(m, n)] = float(np.median(samples[m]))
-            log(f"{m:<14} n={n:>8} median {out[(m, n)] * 1e3:10.3f} ms")
+            out[(m, n)] = tuple(float(np.median(samples[m][key])) for key in ("times", "cpu"))
+            log(f"{m:<14} n={n:>8} median wall {out[(m, n)][0] * 1e3:10.3f} ms, cpu {out[(m, n)][1] * 1e3:10.3f} ms")
     return out
+
+
+def _ratio(t, x, y):
+    """Ratios of wall-clock and CPU medians: under load the CPU time is the steadier."""
+    return f"wall {t[x][0] / t[y][0]:.2f}, cpu {t[x][1] / t[y][1]:.2f}"
 
 
 def main(argv=None):
@@ -204,10 +218,10 @@ def main(argv=None):
     t = measure(groups, rounds, calls, log)
     for n in sizes:
         for s in ("jansen", "watt"):
-            log(f"{s} N={n}: Linkage.solve (auto) / plain loop = {t[(f'{s}-auto', n)] / t[(f'{s}-plain', n)]:.2f}")
+            log(f"{s} N={n}: Linkage.solve (auto) / plain loop: {_ratio(t, (f'{s}-auto', n), (f'{s}-plain', n))}")
     for k in ("numba", "numpy"):
-        log(f"batch {batch} x {BATCH[1]}: solve_fourbars ({k}) / plain loop = "
-            f"{t[(f'batch-{k}', batch)] / t[('batch-plain', batch)]:.2f}")
+        log(f"batch {batch} x {BATCH[1]}: solve_fourbars ({k}) / plain loop: "
+            f"{_ratio(t, (f'batch-{k}', batch), ('batch-plain', batch))}")
     log(f"load average at end: {os.getloadavg()}")
     return 0
 

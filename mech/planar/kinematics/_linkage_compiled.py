@@ -67,12 +67,12 @@ rra = _jit(_g.rrr_acceleration)
 
 def supported(linkage):
     """True if every step of `linkage` has a compiled form (and every driver is a crank)."""
-    for step in linkage._steps:
-        if step.kind not in KINDS:
-            return False
-        if step.kind == "rrr" and any(isinstance(r, str) for r in step.get("lengths")):
-            return False
-    return True
+    known = linkage.__dict__.get("_compiled_supported")
+    if known is None:
+        known = linkage._compiled_supported = all(
+            step.kind in KINDS and not (step.kind == "rrr" and any(isinstance(r, str) for r in step.get("lengths")))
+            for step in linkage._steps)
+    return known
 
 
 class _Writer:
