@@ -7,9 +7,9 @@ power-of-two unit, assembly gaps zeroed within ``rtol``, the signed form at a ch
 with the same generated kernels: on NumPy the formulas of
 ``mech._generated.fourbar_position`` over blocks of linkages that fit in cache, on numba
 one compiled loop over the linkages that calls the generated fused kernel of each. The
-linkages `FourBar` solves by other rules (kites, whose crank pin passes through D; a dead
-point within rounding of the motion; lengths beyond 2**1000) are solved one by one by
-`FourBar` itself.
+inputs within rounding of a dead point are then put on it, as `FourBar` puts them; the
+linkages `FourBar` solves by other rules (kites, whose crank pin passes through D, and
+lengths beyond 2**1000) are solved one by one by `FourBar` itself.
 """
 
 from __future__ import annotations
@@ -121,7 +121,7 @@ def solve_fourbars(a, b, c, d, theta, *, coupler=(0.0, 0.0), branch=1, rtol=1e-1
     tol = 2.0 * DEAD_POINT_RTOL * total                     # as `FourBar._may_meet_dead_point`
     close = np.where(uc > ub, gaps[0], gaps[1])
     dead = ((gaps[2] != 0.0) & (gaps[2] <= tol)) | ((close != 0.0) & (close <= tol))
-    other = kite | dead | (exponent < 0) | (exponent > _EXACT_EXPONENT) | (ub < 2.0**-1022)
+    other = kite | (exponent < 0) | (exponent > _EXACT_EXPONENT) | (ub < 2.0**-1022)
     up, uq = np.ldexp(p, -exponent), np.ldexp(q, -exponent)
     scale = np.ldexp(1.0, exponent)
     out = np.empty((3, n, k), dtype=complex)
@@ -132,11 +132,40 @@ def solve_fourbars(a, b, c, d, theta, *, coupler=(0.0, 0.0), branch=1, rtol=1e-1
         _loop()(*columns, thetas, out, valid)
     else:
         _numpy(columns, thetas, out, valid)
+    snap = np.flatnonzero(dead & ~other)
+    if snap.size:
+        _snap_dead_points(snap, (ua, ub, uc, ud, up, uq, scale), gaps, close, thetas, out, valid)
     for i in np.flatnonzero(other):
         pose = FourBar(a[i], b[i], c[i], d[i], branch=int(br[i]), coupler=(p[i], q[i])).solve(
             thetas[i if thetas.shape[0] > 1 else 0])
         out[0, i], out[1, i], out[2, i], valid[i] = pose.B, pose.C, pose.P, pose.valid
     return FourBarBatch(out[0], out[1], out[2], valid)
+
+
+def _snap_dead_points(rows, columns, gaps, close, theta, out, valid):
+    """`FourBar._dead_points` at order 0 for the linkages `rows`: an input within
+    `DEAD_POINT_RTOL` of a dead point that did not assemble is the dead point (C on BD)."""
+    ua, ub, uc, ud, up, uq, scale = (x[rows, None] for x in columns)
+    th = theta[rows] if theta.shape[0] > 1 else theta
+    tol = DEAD_POINT_RTOL * (ua + ub + uc + ud)
+    s = np.sin(0.5 * th)
+    k = np.sqrt((ud - ua) ** 2 + 4.0 * ua * ud * s * s)          # |BD|, as `dead_points_near`
+    near_far = (np.abs(k - (ub + uc)) <= tol) & (gaps[2][rows, None] != 0.0)
+    near_close = (np.abs(np.abs(ub - uc) - k) <= tol) & (close[rows, None] != 0.0)
+    hit = (near_far | near_close) & ~valid[rows]
+    if not hit.any():
+        return
+    i, j = np.nonzero(hit)
+    a, b, d, p, q = (x[i, 0] for x in (ua, ub, ud, up, uq))
+    t = np.broadcast_to(th, hit.shape)[i, j]
+    B = a * np.exp(1j * t)
+    sign = np.where(near_far[i, j] | (b >= uc[i, 0]), 1.0, -1.0)
+    C = B + sign * b * (d - B) / k[i, j]
+    P = B + (p + 1j * q) * (C - B) / b
+    for n, z in enumerate((B, C, P)):
+        parts = np.stack([z.real, z.imag], axis=-1) * scale[i]      # as `FourBar.solve` scales
+        out[n, rows[i], j] = parts[:, 0] + 1j * parts[:, 1]
+    valid[rows[i], j] = True
 
 
 def _numpy(columns, theta, out, valid):

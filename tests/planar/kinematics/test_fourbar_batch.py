@@ -85,3 +85,22 @@ def test_bad_inputs():
         solve_fourbars([1.0, 1.0], 2.0, 2.0, 2.0, np.zeros((3, 4)))
     with pytest.raises(ValueError, match="theta"):
         solve_fourbars(1.0, 2.0, 2.0, 2.0, [np.nan])
+
+
+@pytest.mark.parametrize("name", ["numpy", "numba"])
+def test_inputs_on_dead_points(name, backend):
+    """Inputs at and within rounding of the dead points |BD| = b + c of rockers, in three units."""
+    if name == "numba":
+        pytest.importorskip("numba")
+    backend(name)
+    a, b, c, d = np.array([2.0, 2e-3, 2e5]), np.array([3.0, 3e-3, 3e5]), np.array([2.0, 2e-3, 2e5]), np.array([4.0, 4e-3, 4e5])
+    dead = 2 * np.arcsin(np.sqrt(21 / 32))              # |BD|^2 = 4 + 32 sin^2(theta / 2) = 25 (unit 1)
+    theta = np.concatenate([dead + np.arange(-4, 5) * 2e-16, -dead + np.arange(-4, 5) * 2e-16, [0.0, 1.0]])
+    got = solve_fourbars(a, b, c, d, theta, coupler=(b, 0.5 * b))
+    for i in range(a.size):
+        pose = FourBar(a[i], b[i], c[i], d[i], coupler=(b[i], 0.5 * b[i])).solve(theta)
+        assert np.array_equal(got.valid[i], pose.valid)
+        v = pose.valid
+        for x, y in ((got.B[i], pose.B), (got.C[i], pose.C), (got.P[i], pose.P)):
+            assert np.max(np.abs(x[v] - y[v])) <= 8 * np.finfo(float).eps * (a[i] + b[i] + c[i] + d[i])
+    assert got.valid[:, :18].any()
