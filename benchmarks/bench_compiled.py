@@ -203,6 +203,9 @@ def _ratio(t, x, y):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--only", choices=("linkage", "batch"), help="measure one part")
+    parser.add_argument("--rounds", type=int, default=ROUNDS)
+    parser.add_argument("--calls", type=int, default=CALLS)
     parser.add_argument("--worker", nargs=3, help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.worker:
@@ -212,14 +215,16 @@ def main(argv=None):
     log(f"load average at start: {os.getloadavg()}")
     sizes = (10**3, 10**4) if args.quick else (10**3, 10**6)
     batch = 10**4 if args.quick else BATCH[0]
-    groups = [(n, [f"{s}-{k}" for s in ("jansen", "watt") for k in ("auto", "plain")]) for n in sizes]
-    groups.append((batch, ["batch-numba", "batch-numpy", "batch-plain"]))
-    rounds, calls = (1, 3) if args.quick else (ROUNDS, CALLS)
+    groups = [] if args.only == "batch" else [
+        (n, [f"{s}-{k}" for s in ("jansen", "watt") for k in ("auto", "plain")]) for n in sizes]
+    if args.only != "linkage":
+        groups.append((batch, ["batch-numba", "batch-numpy", "batch-plain"]))
+    rounds, calls = (1, 3) if args.quick else (args.rounds, args.calls)
     t = measure(groups, rounds, calls, log)
-    for n in sizes:
+    for n in sizes if args.only != "batch" else ():
         for s in ("jansen", "watt"):
             log(f"{s} N={n}: Linkage.solve (auto) / plain loop: {_ratio(t, (f'{s}-auto', n), (f'{s}-plain', n))}")
-    for k in ("numba", "numpy"):
+    for k in ("numba", "numpy") if args.only != "linkage" else ():
         log(f"batch {batch} x {BATCH[1]}: solve_fourbars ({k}) / plain loop: "
             f"{_ratio(t, (f'batch-{k}', batch), ('batch-plain', batch))}")
     log(f"load average at end: {os.getloadavg()}")
