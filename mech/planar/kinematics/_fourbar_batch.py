@@ -145,27 +145,28 @@ def solve_fourbars(a, b, c, d, theta, *, coupler=(0.0, 0.0), branch=1, rtol=1e-1
 def _snap_dead_points(rows, columns, gaps, close, theta, out, valid):
     """`FourBar._dead_points` at order 0 for the linkages `rows`: an input within
     `DEAD_POINT_RTOL` of a dead point that did not assemble is the dead point (C on BD)."""
-    ua, ub, uc, ud, up, uq, scale = (x[rows, None] for x in columns)
-    th = theta[rows] if theta.shape[0] > 1 else theta
+    i, j = np.nonzero(~valid[rows])            # only a pose that did not assemble is snapped
+    if not i.size:
+        return
+    ua, ub, uc, ud, up, uq, scale = (x[rows][i] for x in columns)
+    t = theta[rows[i], j] if theta.shape[0] > 1 else theta[0, j]
     tol = DEAD_POINT_RTOL * (ua + ub + uc + ud)
-    s = np.sin(0.5 * th)
+    s = np.sin(0.5 * t)
     k = np.sqrt((ud - ua) ** 2 + 4.0 * ua * ud * s * s)          # |BD|, as `dead_points_near`
-    near_far = (np.abs(k - (ub + uc)) <= tol) & (gaps[2][rows, None] != 0.0)
-    near_close = (np.abs(np.abs(ub - uc) - k) <= tol) & (close[rows, None] != 0.0)
-    hit = (near_far | near_close) & ~valid[rows]
+    near_far = (np.abs(k - (ub + uc)) <= tol) & (gaps[2][rows][i] != 0.0)
+    near_close = (np.abs(np.abs(ub - uc) - k) <= tol) & (close[rows][i] != 0.0)
+    hit = near_far | near_close
     if not hit.any():
         return
-    i, j = np.nonzero(hit)
-    a, b, d, p, q = (x[i, 0] for x in (ua, ub, ud, up, uq))
-    t = np.broadcast_to(th, hit.shape)[i, j]
+    a, b, c, d, p, q, sc, t, k, far = (x[hit] for x in (ua, ub, uc, ud, up, uq, scale, t, k, near_far))
     B = a * np.exp(1j * t)
-    sign = np.where(near_far[i, j] | (b >= uc[i, 0]), 1.0, -1.0)
-    C = B + sign * b * (d - B) / k[i, j]
+    sign = np.where(far | (b >= c), 1.0, -1.0)
+    C = B + sign * b * (d - B) / k
     P = B + (p + 1j * q) * (C - B) / b
+    r, j = rows[i[hit]], j[hit]
     for n, z in enumerate((B, C, P)):
-        parts = np.stack([z.real, z.imag], axis=-1) * scale[i]      # as `FourBar.solve` scales
-        out[n, rows[i], j] = parts[:, 0] + 1j * parts[:, 1]
-    valid[rows[i], j] = True
+        out[n, r, j] = (z.real * sc) + 1j * (z.imag * sc)           # each part times 2**e, as `FourBar.solve`
+    valid[r, j] = True
 
 
 def _numpy(columns, theta, out, valid):
