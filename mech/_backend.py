@@ -101,8 +101,12 @@ def numba_available():
     return _state["numba"]
 
 
-def use_numba(size):
-    """True if a solve of `size` points should run the numba kernels."""
+def use_numba(size, minimum=None):
+    """True if a solve of `size` points should run the numba kernels.
+
+    ``minimum`` replaces `NUMBA_MIN_SIZE` for ``"auto"`` (a solver whose NumPy path costs
+    far more per point than a fused kernel's pays back numba's loading sooner).
+    """
     backend = get_backend()
     if backend == "numpy":
         return False
@@ -111,7 +115,7 @@ def use_numba(size):
             raise ImportError("The numba backend needs numba: `pip install mech[fast]`, "
                               "or mech.set_backend('numpy')")
         return True
-    return size >= NUMBA_MIN_SIZE and numba_available()
+    return size >= (NUMBA_MIN_SIZE if minimum is None else minimum) and numba_available()
 
 
 def numba_kernels(stem):

@@ -14,7 +14,8 @@ import math
 import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
-from mech.planar.kinematics import _linkage_blocks, _linkage_modes
+from mech import _backend
+from mech.planar.kinematics import _linkage_blocks, _linkage_compiled, _linkage_modes
 from mech.planar.kinematics._linkage_groups import STEPS, _State
 from mech.planar.kinematics._linkage_records import (
     GROUND, AssemblyInterval, Guide, LinkageSolution, Slide, _LENGTH_KEYS, _Step, _for, _in_unit, _looks_numeric,
@@ -380,7 +381,10 @@ class Linkage:
         far = self._distance_drivers()
         sq, sw, sal = ({d: x[d] / unit if d in far else x[d] for d in x} for x in (q, w, al))
         crank = self._crank_driver()
-        if math.prod(shape) <= _linkage_blocks.BLOCK:
+        if _linkage_compiled.supported(self) and _backend.use_numba(math.prod(shape), _linkage_compiled.MIN_SIZE):
+            # one compiled loop over the poses, the same rules pose by pose
+            state, failures = _linkage_compiled.solve(self, steps, order, shape, sq, sw, sal, crank, unit)
+        elif math.prod(shape) <= _linkage_blocks.BLOCK:
             state, failures = self._solve_all(steps, order, shape, sq, sw, sal, crank, unit)
         else:
             # cache-sized blocks, each solved whole, gathered into outputs allocated once

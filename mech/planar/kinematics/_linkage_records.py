@@ -157,17 +157,29 @@ class LinkageSolution:
 
     def __init__(self, linkage, order, state, failures):
         shape = state.shape
-        full = lambda x: np.broadcast_to(np.asarray(x), shape)
+        def full(x):
+            # an array of the full shape already (the compiled loop's rows) is kept as it is
+            return x if type(x) is np.ndarray and x.shape == shape else np.broadcast_to(np.asarray(x), shape)
+
         self.linkage, self.order, self.valid = linkage, order, state.valid
         self.points = MappingProxyType({k: full(v) for k, v in state.P.items()})
         self.velocities = MappingProxyType({k: full(v) for k, v in state.V.items()})
         self.accelerations = MappingProxyType({k: full(v) for k, v in state.A.items()})
         links = [k for k in linkage.links if k != GROUND]
-        self._dirs = {k: full(state.dir[k]) for k in links}
+        later = getattr(state, "dirs_later", None)
+        # the compiled loop leaves the directions to a second pass, made on first use
+        self._dirs_now = None if later is not None else {k: full(state.dir[k]) for k in links}
+        self._dirs_later = None if later is None else (lambda: {k: full(v) for k, v in later().items()})
         self.omegas = MappingProxyType({k: full(state.W[k]) for k in links if k in state.W})
         self.alphas = MappingProxyType({k: full(state.AL[k]) for k in links if k in state.AL})
         self.slides = MappingProxyType(dict(state.slides))
         self.failures = MappingProxyType(failures)
+
+    @property
+    def _dirs(self):
+        if self._dirs_now is None:
+            object.__setattr__(self, "_dirs_now", self._dirs_later())
+        return self._dirs_now
 
     @property
     def angles(self):

@@ -21,6 +21,8 @@ GROUND = "ground"
 
 #: A dyad's radicand (4) within this of zero at a local minimum counts as a change point.
 _CHANGE_TOL = 1e-12
+#: Inputs per block of a solve: a six-bar's temporaries over a block stay in cache.
+_BLOCK = 16384
 
 
 def _xyz(v):
@@ -306,8 +308,7 @@ class SphericalLinkage:
         th = inputs[0].reshape(-1)
         om = inputs[1].reshape(-1) if order >= 1 else None
         al = inputs[2].reshape(-1) if order >= 2 else None
-        P, V, Acc, W, DW = self._flat(th, om, al, order)
-        self._across_changes(th, om, al, order, (P, V, Acc, W, DW))
+        P, V, Acc, W, DW = self._blocks(th, om, al, order)
         assembled = np.all([np.isfinite(v).all(axis=-1) for v in P.values()], axis=0)
         valid = assembled.copy()
         for group in ((V, W) if order == 1 else (V, W, Acc, DW) if order == 2 else ()):
@@ -331,6 +332,27 @@ class SphericalLinkage:
             fields["accelerations"] = shaped(Acc, ok)
             fields["angular_accelerations"] = shaped({k: DW[k] for k in self._links}, ok)
         return SphericalLinkagePose(order, fields)
+
+    def _blocks(self, th, om, al, order):
+        """`_flat` and `_across_changes` over blocks of `_BLOCK` inputs, gathered.
+
+        Each pose's results depend on its own inputs only, so a block gives the same bits
+        as the whole array; solved whole, the hundred temporaries of a six-bar's rates
+        over 10^6 inputs left the cache and the cost per pose grew with N.
+        """
+        n = th.size
+        if n <= _BLOCK:
+            fields = self._flat(th, om, al, order)
+            self._across_changes(th, om, al, order, fields)
+            return fields
+        parts = []
+        for start in range(0, n, _BLOCK):
+            part = slice(start, start + _BLOCK)
+            cut = [None if x is None else x[part] for x in (th, om, al)]
+            fields = self._flat(*cut, order)
+            self._across_changes(*cut, order, fields)
+            parts.append(fields)
+        return tuple({k: np.concatenate([p[i][k] for p in parts]) for k in parts[0][i]} for i in range(5))
 
     def _flat(self, th, om, al, order):
         """Points, velocities, accelerations and link rates at the flat inputs `th`."""
