@@ -247,7 +247,7 @@ def make(method):
 
         return bs._spherical_loop() if kind == "loop" else bs._spherical_mech("numba" if kind == "numba" else "numpy")
     if kind == "whole":                      # one piece: the block size above any N
-        from mech.planar.kinematics import _linkage_blocks
+        from mech.planar.kinematics._linkage import _blocks as _linkage_blocks
         from mech.spatial import _chain as chain_module
         from mech.spatial import _rssr as rssr_module
 

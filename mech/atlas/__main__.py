@@ -110,7 +110,7 @@ def _query(args):
 
     source = args.target or args.points
     if source is None or (args.target and args.points):
-        raise ValueError(f"Expected one target file (--target FILE.csv|FILE.svg), got {[args.points, args.target]}")
+        raise ValueError(f"Expected one target file (`points` or `--target` FILE.csv|FILE.svg), got {[args.points, args.target]}")
     atlas = Atlas.from_parquet(args.atlas)
     target, closed = read_target(source)
     # a CSV does not say whether the curve closes: --open does; an SVG path says it itself

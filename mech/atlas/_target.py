@@ -98,7 +98,7 @@ def read_svg(path, *, samples=256, element=None):
     strokes = [list(sub) for sub in shape.as_subpaths()]
     strokes = [s for s in strokes if any(not isinstance(seg, Move) for seg in s)]
     if len(strokes) != 1:
-        raise ValueError(f"Expected the shape in {name!r} to be one stroke, got {len(strokes)} separate strokes")
+        raise ValueError(f"Expected the shape of `path` {name!r} to be one stroke, got {len(strokes)} separate strokes")
     pieces, closed = [], False
     t = np.linspace(0.0, 1.0, _DENSE)
     for seg in strokes[0]:
@@ -117,7 +117,7 @@ def read_svg(path, *, samples=256, element=None):
         z = (m.a * x + m.c * y + m.e) - 1j * (m.b * x + m.d * y + m.f)
     size = float(np.ptp(z.real) + np.ptp(z.imag))
     if not size > 0.0:
-        raise ValueError(f"Expected a shape of non-zero length in {name!r}, got a single point")
+        raise ValueError(f"Expected the shape of `path` {name!r} to have a non-zero length, got a single point")
     closed = closed or abs(z[-1] - z[0]) <= 1e-9 * size
     if closed and abs(z[-1] - z[0]) > 0.0:
         z = np.append(z, z[0])

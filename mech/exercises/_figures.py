@@ -152,6 +152,10 @@ def _axes_off(ax):
     ax.set_yticks([])
 
 
+#: Drawers of figures defined outside this module, by number prefix ("E": the worked examples).
+EXAMPLE_DRAWERS = {}
+
+
 # ----------------------------------------------------------------------------- per exercise
 def draw(number, p, fig):
     """Draw the figure of exercise ``number`` with the givens ``p`` into ``fig``."""
@@ -161,9 +165,11 @@ def draw(number, p, fig):
     from mech.exercises import chapter2_relative_motion as rm
 
     if number.startswith("E"):
-        from mech.exercises.examples_chapter2 import draw_example
-
-        return draw_example(number, p, fig)
+        # the worked examples draw their own figures with the helpers here, and register the
+        # drawer when their module is imported (this module does not import theirs: no cycle)
+        if "E" not in EXAMPLE_DRAWERS:
+            raise ValueError(f"Expected `number` to be an exercise with a figure, got {number!r}")
+        return EXAMPLE_DRAWERS["E"](number, p, fig)
     ax = fig.add_subplot(111) if number not in ("2-1", "2-8", "2-23", "2-30") else None
     if number == "2-1":
         axs = fig.subplots(1, 3)

@@ -26,6 +26,7 @@ import math
 import numpy as np
 
 from mech._validate import positive_length, real_number
+from mech.exercises import _figures
 from mech.exercises._core import Exercise, Parameter, Part, Result, Solution
 
 __all__ = ["EXAMPLES", "draw_example"]
@@ -323,3 +324,6 @@ def draw_example(number, p, fig):
         F.linkage(ax, lk, math.pi / 4, title=f"guide-bar, AB = BC = {l:g} mm, ∠BAC = 45°")
     else:
         raise ValueError(f"Expected `number` to be a worked example with a figure, got {number!r}")
+
+
+_figures.EXAMPLE_DRAWERS["E"] = draw_example

@@ -30,7 +30,11 @@ def _fold(gamma):
 
 
 def _triangle_angle(x, y, f):
-    """The angle between sides x and y of a triangle whose third side is f (law of cosines)."""
+    """The angle between sides x and y of a triangle whose third side is f (law of cosines),
+    the sides divided by the longest first, so that no square overflows or underflows at any
+    unit of length."""
+    s = np.maximum(np.maximum(x, y), f)
+    x, y, f = x / s, y / s, f / s
     return np.arccos(np.clip((x * x + y * y - f * f) / (2.0 * x * y), -1.0, 1.0))
 
 
@@ -38,7 +42,7 @@ def _default_theta(thetas, valid):
     """0 if the linkage assembles there, else the middle sample of its range."""
     idx = np.flatnonzero(valid)
     if idx.size == 0:
-        raise ValueError("Expected a linkage that assembles at some input angle, got one that never does")
+        raise ValueError("Expected `obj` to be a linkage that assembles at some input angle, got one that never does")
     return 0.0 if valid[0] else float(thetas[idx[idx.size // 2]])
 
 
@@ -251,14 +255,14 @@ def _steps_of(lk):
     out = []
     for st in lk._steps:
         if st.kind not in _BUILD:
-            raise ValueError(f"Expected a linkage of RRR and RRP groups driven by one crank, got a step "
+            raise ValueError(f"Expected `obj` to be a linkage of RRR and RRP groups driven by one crank, got a step "
                              f"{st.label!r} ({st.kind}) that the export does not draw")
         data = {k: ([v.real, v.imag] if isinstance(v, complex) else list(v) if isinstance(v, tuple) else v)
                 for k, v in st.data}
         if st.kind == "rrp":
             g = st.get("guide")
             if g.link != "ground":
-                raise ValueError(f"Expected a slider on a guide fixed in the ground, got one in the link {g.link!r}")
+                raise ValueError(f"Expected `obj` to have its sliders on guides fixed in the ground, got one in the link {g.link!r}")
             through = g.through if isinstance(g.through, str) else [g.through.real, g.through.imag]
             data["guide"] = {"link": g.link, "through": through, "angle": g.angle}
         if "at" in data and not isinstance(data["at"], list):
@@ -266,7 +270,7 @@ def _steps_of(lk):
         out.append(dict(kind=st.kind, label=st.label, links=list(st.links), data=data))
     cranks = [s for s in out if s["kind"] == "crank"]
     if len(cranks) != 1 or len(lk.drivers) != 1:
-        raise ValueError(f"Expected a linkage driven by one crank, got drivers {lk.drivers!r}")
+        raise ValueError(f"Expected `obj` to be a linkage driven by one crank, got drivers {lk.drivers!r}")
     return out
 
 

@@ -24,7 +24,7 @@ from mech._scaling import DEAD_POINT_RTOL
 from mech._validate import finite_array, nonnegative_number
 from mech.planar.kinematics._fourbar import _EXACT_EXPONENT, FourBar
 
-__all__ = ["FourBarBatch", "solve_fourbars"]
+__all__ = []        # internal for now: the atlas and the optimisers will call it; not re-exported
 
 _LOOP = {}
 

@@ -1,6 +1,6 @@
 """`Linkage.solve` over more inputs than one block (issue 16, item 1).
 
-A large solve is cut into blocks (`mech.planar.kinematics._linkage_blocks`). These tests
+A large solve is cut into blocks (`mech.planar.kinematics._linkage._blocks`). These tests
 shrink the block so that small arrays span many blocks, and check that
 
 - the blocked solve equals, bit for bit, the concatenation of separate small solves (each
@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from mech.planar import Guide, Linkage
-from mech.planar.kinematics import _linkage_blocks
+from mech.planar.kinematics._linkage import _blocks as _linkage_blocks
 from mech.planar.special import _library as lib
 from tests.planar import linkage_reference as ref
 

@@ -19,7 +19,7 @@ import pytest
 
 import mech
 from mech.planar import Linkage
-from mech.planar.kinematics import _linkage_compiled
+from mech.planar.kinematics._linkage import _compiled as _linkage_compiled
 from mech.planar.special import _library as lib
 
 numba = pytest.importorskip("numba")

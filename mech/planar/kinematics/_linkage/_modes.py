@@ -16,8 +16,8 @@ import math
 
 import numpy as np
 
-from mech.planar.kinematics._linkage_groups import guide_state
-from mech.planar.kinematics._linkage_records import Slide
+from mech.planar.kinematics._linkage._groups import guide_state
+from mech.planar.kinematics._linkage._records import Slide
 
 __all__ = []        # internal to the subpackage: nothing here is re-exported
 

@@ -30,8 +30,8 @@ import sys
 import numpy as np
 
 from mech._scaling import DEAD_POINT_RTOL
-from mech.planar.kinematics import _linkage_modes
-from mech.planar.kinematics._linkage_records import GROUND
+from mech.planar.kinematics._linkage import _modes as _linkage_modes
+from mech.planar.kinematics._linkage._records import GROUND
 
 __all__ = []        # internal to the subpackage: nothing here is re-exported
 
@@ -335,7 +335,7 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit, dirs=False):
     never reads them: without `dirs` the loop does not store them, and the state's
     ``dirs_later`` solves again, storing them, when the solution first needs them.
     """
-    from mech.planar.kinematics._linkage_groups import _State
+    from mech.planar.kinematics._linkage._groups import _State
 
     drivers = list(linkage._drivers)
     cache = linkage.__dict__.setdefault("_compiled_cache", {})

@@ -15,9 +15,9 @@ import numpy as np
 
 from mech._errors import AssemblyError, InputTypeError
 from mech import _backend
-from mech.planar.kinematics import _linkage_blocks, _linkage_compiled, _linkage_modes
-from mech.planar.kinematics._linkage_groups import STEPS, _State
-from mech.planar.kinematics._linkage_records import (
+from mech.planar.kinematics._linkage import _blocks as _linkage_blocks, _compiled as _linkage_compiled, _modes as _linkage_modes
+from mech.planar.kinematics._linkage._groups import STEPS, _State
+from mech.planar.kinematics._linkage._records import (
     GROUND, AssemblyInterval, Guide, LinkageSolution, Slide, _LENGTH_KEYS, _Step, _for, _in_unit, _looks_numeric,
     _magnitudes, _two,
 )
@@ -361,7 +361,7 @@ class Linkage:
         -----
         The modes through change points and the unit of length: see `Linkage`. More than
         16384 poses are solved in blocks of that many, each while its temporaries stay in
-        the cache (`mech.planar.kinematics._linkage_blocks`), with the same results.
+        the cache (`mech.planar.kinematics._linkage._blocks`), with the same results.
 
         Examples
         --------
@@ -412,7 +412,7 @@ class Linkage:
         """Solve `steps` (in the unit of `_unit_steps`); return the state and the failures.
 
         ``modes`` maps each two-mode group to its mode and where its radicand may count as
-        zero (`mech.planar.kinematics._linkage_modes.modes`).
+        zero (`mech.planar.kinematics._linkage._modes.modes`).
         """
         state = _State(order, shape)
         state.modes = modes

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from mech.planar.kinematics import _linkage_modes
+from mech.planar.kinematics._linkage import _modes as _linkage_modes
 
 __all__ = []        # internal to the subpackage: nothing here is re-exported
 

@@ -13,7 +13,7 @@ import numpy as np
 
 from mech._generated import assur_groups as _g
 from mech._scaling import DEAD_POINT_RTOL
-from mech.planar.kinematics._linkage_records import GROUND, Slide, _cx, _re_im
+from mech.planar.kinematics._linkage._records import GROUND, Slide, _cx, _re_im
 
 __all__ = []
 
@@ -97,7 +97,7 @@ def _dead_point(st, step, disc, dead):
 def _signed_root(st, step, disc):
     """The root of a group's radicand with the sign of its mode, and where it assembles.
 
-    The mode comes from `mech.planar.kinematics._linkage_modes.modes`; next to a change point a
+    The mode comes from `mech.planar.kinematics._linkage._modes.modes`; next to a change point a
     radicand that rounding made slightly negative counts as zero.
     """
     sign, near = st.modes.get(step.label, (step.get("branch"), None))
