@@ -109,7 +109,7 @@ class Design:
 
     @property
     def size(self):
-        """The largest distance between two pins: the scale for drawings and tolerances."""
+        """The largest distance between two pins (the scale for drawings and tolerances)."""
         z = np.array(list(self.joints.values()))
         return float(np.max(np.abs(z[:, None] - z[None, :])))
 
