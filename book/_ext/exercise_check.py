@@ -135,8 +135,10 @@ def _form(docname, tables):
         f'<label>Seed <input type="number" min="{SEEDS.start}" max="{SEEDS.stop - 1}" step="1" value="0" '
         'data-control="seed"></label> <button type="button" data-control="check">Check</button></p>'
         f'<p class="givens" data-part="givens">{escape(givens)}</p>'
+        # the table scrolls in its own box on a phone, so the page itself never pans sideways
+        '<div style="overflow-x:auto;max-width:100%">'
         f'<table><thead><tr><th>key</th><th>quantity</th><th>your answer</th><th>verdict</th></tr></thead>'
-        f'<tbody data-part="answers">{rows}</tbody></table><p data-part="summary" aria-live="polite"></p></div>'
+        f'<tbody data-part="answers">{rows}</tbody></table></div><p data-part="summary" aria-live="polite"></p></div>'
         f'<script type="module" src="{up}_static/mech/exercise_check.js"></script>'
     )
 

@@ -633,10 +633,12 @@ async def _search(root, query, executable):
             box = page.locator('input[name="q"]:visible').first
             await box.fill(query)
             await box.press("Enter")
+            # Sphinx lists the results one by one and then writes its summary ("Search finished,
+            # found N pages ..."): wait for the summary, not for the first result
             await page.wait_for_function(
-                "() => document.querySelectorAll('#search-results ul.search li').length > 0"
-                " || /did not match|no documents/i.test(document.querySelector('#search-results')?.textContent || '')",
-                timeout=30000)
+                "() => /finished|did not match|no documents/i.test("
+                "document.querySelector('#search-results .search-summary, #search-results p')?.textContent || '')",
+                timeout=60000)
             hits = await page.eval_on_selector_all(
                 "#search-results ul.search li a", "els => els.map((a) => a.getAttribute('href'))")
             await browser.close()
