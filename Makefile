@@ -78,8 +78,10 @@ browser-deps:
 ## core (pytest-xdist); a file's tests stay in one process, so a file's session fixture (the
 ## crawl of the built book) runs once.
 XDIST := -n auto --dist loadfile
+# the slowest tests of the run are listed at its end, so a CI log shows where the time goes
+DURATIONS := --durations=30
 test: $(STAMP) browser-deps node-deps
-	$(BIN)/python -m pytest $(XDIST)
+	$(BIN)/python -m pytest $(XDIST) $(DURATIONS)
 
 test-fast: $(STAMP) node-deps
 	$(BIN)/python -m pytest $(XDIST) -m "not slow and not exhaustive"

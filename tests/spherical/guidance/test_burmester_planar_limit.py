@@ -118,11 +118,15 @@ def test_sets_near_a_double_root():
     assert not wrong, wrong
 
 
+# an acceptance sweep of many minutes: `make test-exhaustive` runs it, `make test` does not
+@pytest.mark.exhaustive
 def test_two_hundred_random_sets_near_the_planar_limit():
     wrong = _sweep(_random_sets(200, seed=24))
     assert not wrong, wrong
 
 
+# an acceptance sweep of many minutes: `make test-exhaustive` runs it, `make test` does not
+@pytest.mark.exhaustive
 def test_fifty_near_degenerate_sets_near_the_planar_limit():
     wrong = _sweep(_near_degenerate_sets(50, seed=24))
     assert not wrong, wrong
