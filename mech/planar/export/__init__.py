@@ -7,8 +7,9 @@ the motor goes and its smallest transmission angle. `write_json`, `write_svg` an
 imported when one is written.
 """
 
-from mech.planar.export._design import Design, design_of
-from mech.planar.export._files import from_json, read_json, svg_text, to_json, write_dxf, write_json, write_svg
+from mech._exports import reexport
+from mech.planar.export import _design, _files
 
-__all__ = ["Design", "design_of", "from_json", "read_json", "svg_text", "to_json", "write_dxf", "write_json",
-           "write_svg"]
+__all__ = reexport(globals(), _design, _files)
+
+del reexport  # a helper, not a name of this package

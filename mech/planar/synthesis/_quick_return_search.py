@@ -34,20 +34,11 @@ from mech.planar.synthesis._quick_return_design import (
     quick_return_slider_crank,
 )
 
-__all__ = [
-    "QuickReturnFamily",
-    "crank_rocker_family",
-    "slider_crank_family",
-    "TABLE_K",
-    "TABLE_2_3_SWINGS_DEG",
-    "PRINTED_TABLE_2_3",
-    "PRINTED_TABLE_2_4",
-    "PRINTED_TABLE_2_5",
-    "crank_rocker_table",
-    "crank_rocker_best_table",
-    "slider_crank_table",
-    "table_errata",
-]
+# The searches are the package's public names. The tables (``TABLE_K``, the ``PRINTED_TABLE_*``
+# data and the functions that regenerate and compare them) serve the book page and the tests,
+# which import them from this module: listing them here would re-export them as
+# `mech.planar.synthesis` names.
+__all__ = ["QuickReturnFamily", "crank_rocker_family", "slider_crank_family"]
 
 
 # ----------------------------------------------------------------------------- searches over alpha

@@ -5,51 +5,22 @@ points, and the four-bars they make, each checked by analysis with `SphericalFou
 Every name is re-exported from `mech.spherical`.
 """
 
-from mech.spherical.guidance._burmester import (
-    SphericalBurmesterCurve,
-    SphericalBurmesterPoints,
-    burmester,
-    circle_point_curve,
-    slider_dyads,
-    slider_point_curve,
-)
-from mech.spherical.guidance._dyads import (
-    SphericalDyad,
-    dyad_for_centre_point,
-    dyad_for_circle_point,
-    slider_dyad_for_point,
-)
-from mech.spherical.guidance._fourbar import SphericalGuidanceFourBar, guidance_fourbars, guidance_slider_crank
-from mech.spherical.guidance._optimal import (
-    SphericalGuidanceMotion,
-    SphericalOptimalGuidance,
-    guidance_motion,
-    optimal_guidance,
-)
-from mech.spherical.guidance._sixbar import SphericalGuidanceSixBar, guidance_watt2, sixbar_orientations
-from mech.spherical.guidance._sixbar_optimal import SphericalOptimalSixBar, optimal_guidance_watt2
-from mech.spherical.guidance._sixbar_optimal_exact import optimal_guidance_sixbar
-from mech.spherical.guidance._stephenson3_optimal import SphericalOptimalStephenson3, optimal_guidance_stephenson3
-from mech.spherical.guidance._stephenson3 import SphericalGuidanceStephenson3, guidance_stephenson3
-from mech.spherical.guidance._sixbar_exact import (
-    SphericalExactSixBar, guidance_stephenson1, guidance_stephenson2, guidance_watt1)
-from mech.spherical.guidance._orientations import (
-    crank_residual,
-    planar_orientations,
-    pole_triangle,
-    relative_rotation,
-    rotation_pole,
-    slider_residual,
+from mech._exports import reexport
+from mech.spherical.guidance import (
+    _burmester,
+    _dyads,
+    _fourbar,
+    _optimal,
+    _orientations,
+    _sixbar,
+    _sixbar_exact,
+    _sixbar_optimal,
+    _sixbar_optimal_exact,
+    _stephenson3,
+    _stephenson3_optimal,
 )
 
-__all__ = [
-    "relative_rotation", "rotation_pole", "pole_triangle", "crank_residual", "slider_residual", "planar_orientations",
-    "SphericalDyad", "dyad_for_circle_point", "dyad_for_centre_point", "slider_dyad_for_point",
-    "SphericalBurmesterCurve", "SphericalBurmesterPoints", "circle_point_curve", "slider_point_curve", "burmester", "slider_dyads",
-    "SphericalGuidanceFourBar", "guidance_fourbars", "guidance_slider_crank",
-    "SphericalGuidanceMotion", "SphericalOptimalGuidance", "guidance_motion", "optimal_guidance",
-    "SphericalGuidanceSixBar", "guidance_watt2", "sixbar_orientations", "SphericalOptimalSixBar", "optimal_guidance_watt2",
-    "optimal_guidance_sixbar", "SphericalOptimalStephenson3", "optimal_guidance_stephenson3",
-    "SphericalGuidanceStephenson3", "guidance_stephenson3",
-    "SphericalExactSixBar", "guidance_stephenson1", "guidance_stephenson2", "guidance_watt1",
-]
+__all__ = reexport(globals(), _orientations, _dyads, _burmester, _fourbar, _optimal, _sixbar, _sixbar_optimal,
+                   _sixbar_optimal_exact, _stephenson3, _stephenson3_optimal, _sixbar_exact)
+
+del reexport  # a helper, not a name of this package

@@ -15,7 +15,8 @@ from mech._pose import Pose
 from mech._scaling import DEAD_POINT_RTOL
 from mech._validate import arc as _arc, bool_flag, branch_sign, motion_inputs, real_number, real_tuple, unit_vector
 
-__all__ = ["SphericalLinkage", "SphericalLinkagePose", "GROUND"]
+# ``GROUND`` is the name a pivot on the frame is given; callers write the string "ground"
+__all__ = ["SphericalLinkage", "SphericalLinkagePose"]
 
 GROUND = "ground"
 

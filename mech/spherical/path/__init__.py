@@ -8,11 +8,10 @@ optimisation (§2.5): `path_fourbar` and the six-bars' `path_stephenson1`, `path
 coupler curves of the Stephenson and Watt six-bars (§2.2, §2.7 to §2.9): `sixbar_curve`.
 """
 
-from mech.spherical.path._octic import CouplerOctic, coupler_octic, coupler_quartic, nine_parameters
-from mech.spherical.path._sixbar_curve import SIXBAR_CURVE_ORDERS, sixbar_curve
-from mech.spherical.path._sixpath import path_stephenson1, path_stephenson2, path_watt1, path_watt2
-from mech.spherical.path._synthesis import SphericalPathDesign, path_fourbar, path_verify
+from mech._exports import reexport
+from mech.spherical.path import _octic, _sixbar_curve, _sixpath, _synthesis
 
-__all__ = ["CouplerOctic", "SIXBAR_CURVE_ORDERS", "SphericalPathDesign", "coupler_octic", "coupler_quartic",
-           "nine_parameters", "path_fourbar", "path_stephenson1", "path_stephenson2", "path_verify", "path_watt1",
-           "path_watt2", "sixbar_curve"]
+# ``_octic_small`` is the octic's scaled form, used through `coupler_octic`; it adds no name
+__all__ = reexport(globals(), _octic, _sixbar_curve, _sixpath, _synthesis)
+
+del reexport  # a helper, not a name of this package
