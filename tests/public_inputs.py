@@ -22,7 +22,7 @@ import mech.planar as pl
 import mech.spatial as sp
 import mech.spherical as sph
 
-__all__ = ["BAD", "KINDS", "Entry", "E", "bad_kinds", "check", "all_cases", "rejections", "slotted", "first",
+__all__ = ["BAD", "KINDS", "Entry", "E", "bad_kinds", "check", "all_cases", "assert_rejected_by_name", "slotted", "first",
            "second2", "Opaque", "fourbar", "slider", "linkage", "rssr", "sfb", "sph_sixbar", "THETA", "MOTION",
            "MOTION2", "ABCD"]
 
@@ -231,8 +231,10 @@ def slotted(cases):
     return sorted(k for k in cases if cases[k].slots)
 
 
-def rejections(cases, key):
-    """The problems of every bad value tried in every slot of ``cases[key]``."""
+def assert_rejected_by_name(cases, key):
+    """Every bad value tried in every slot of ``cases[key]`` is refused by a message that
+    names the argument and shows the value; the failure lists each one that is not."""
     entry = cases[key]
-    return [f for slot in entry.slots for bad_name in bad_kinds(entry.slot(slot)[0])
-            for f in [check(entry, key, slot, bad_name)] if f]
+    failures = [f for slot in entry.slots for bad_name in bad_kinds(entry.slot(slot)[0])
+                for f in [check(entry, key, slot, bad_name)] if f]
+    assert not failures, "\n".join(failures)

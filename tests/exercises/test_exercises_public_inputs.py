@@ -6,7 +6,7 @@ import pytest
 
 import mech.exercises as ex
 from mech.exercises import chapter2, chapter2_analysis, chapter2_instant_centres, chapter2_quick_return, chapter2_reactions, chapter2_relative_motion, chapter2_synthesis
-from tests.public_inputs import E, rejections, slotted
+from tests.public_inputs import E, assert_rejected_by_name, slotted
 
 CASES = {}
 RECORDS = {}
@@ -127,5 +127,4 @@ def test_valid_call_succeeds(key):
 
 @pytest.mark.parametrize("key", slotted(CASES))
 def test_bad_values_rejected_by_name(key):
-    failures = rejections(CASES, key)
-    assert not failures, "\n".join(failures)
+    assert_rejected_by_name(CASES, key)

@@ -8,7 +8,7 @@ import pytest
 
 import mech.planar as pl
 import mech.planar.export as xp
-from tests.public_inputs import E, rejections, slotted
+from tests.public_inputs import E, assert_rejected_by_name, slotted
 
 CASES = {}
 RECORDS = {}
@@ -62,5 +62,4 @@ def test_valid_call_succeeds(key):
 
 @pytest.mark.parametrize("key", slotted(CASES))
 def test_bad_values_rejected_by_name(key):
-    failures = rejections(CASES, key)
-    assert not failures, "\n".join(failures)
+    assert_rejected_by_name(CASES, key)

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import mech.spatial as sp
-from tests.public_inputs import E, first, rejections, rssr, slotted
+from tests.public_inputs import E, assert_rejected_by_name, first, rssr, slotted
 
 CASES = {}
 RECORDS = {}
@@ -101,8 +101,7 @@ def test_valid_call_succeeds(key):
 
 @pytest.mark.parametrize("key", slotted(CASES))
 def test_bad_values_rejected_by_name(key):
-    failures = rejections(CASES, key)
-    assert not failures, "\n".join(failures)
+    assert_rejected_by_name(CASES, key)
 
 
 def test_hooke_acceleration_huge_speed_at_a_stationary_angle():

@@ -9,7 +9,7 @@ import pytest
 
 import mech
 import mech.spherical as sph
-from tests.public_inputs import ABCD, E, MOTION, MOTION2, first, rejections, sfb, slotted, sph_sixbar
+from tests.public_inputs import ABCD, E, MOTION, MOTION2, assert_rejected_by_name, first, sfb, slotted, sph_sixbar
 
 CASES = {}
 RECORDS = {}
@@ -268,8 +268,7 @@ def test_valid_call_succeeds(key):
 
 @pytest.mark.parametrize("key", slotted(CASES))
 def test_bad_values_rejected_by_name(key):
-    failures = rejections(CASES, key)
-    assert not failures, "\n".join(failures)
+    assert_rejected_by_name(CASES, key)
 
 
 @pytest.mark.parametrize("make", [sph.Dual, sph.dual])

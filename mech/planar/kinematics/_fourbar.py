@@ -7,6 +7,7 @@ import numpy as np
 
 from mech import _backend
 from mech._errors import AssemblyError
+from mech._generated import coupler_speed as _speed
 from mech._generated import fourbar_position as _gen
 from mech._validate import bool_flag, branch_sign, finite_array, motion_inputs, nonnegative_number, real_tuple
 from mech._pose import Pose, _finite_sum
@@ -550,3 +551,47 @@ class FourBar:
         44.4153
         """
         return _TRANSMISSION["min_transmission_angle"](self._a, self._b, self._c, self._d)
+
+    def coupler_point_speed(self, theta, omega=1.0):
+        """Speed of the coupler point P, ``|dP/dt|``, at the crank angles `theta` (F25).
+
+        The closed form of :ref:`deriv-coupler-speed`: the length of
+        ``v_P = v_B + 1j * omega_coupler * (P - B)`` as ``hypot`` of its components, with
+        the coupler's angle and rate from `solve`, so it holds through change points and
+        the kite's degenerate pose. The speed is the one an atlas page shows by the
+        spacing of its dashes (`mech.planar.coupler_dashes`).
+
+        Parameters
+        ----------
+        theta : array_like
+            Crank angle of A->B from +x, counter-clockwise, radians.
+        omega : array_like, optional
+            Angular velocity of the crank, broadcast against `theta`.
+
+        Returns
+        -------
+        ndarray
+            The speed in the unit of the lengths per unit of time; NaN where the linkage
+            cannot be assembled, inf only where the speed is beyond the float range.
+
+        Raises
+        ------
+        ValueError
+            For a non-finite `theta` or `omega` (the message names it).
+
+        Examples
+        --------
+        >>> from mech.planar import FourBar
+        >>> linkage = FourBar(10, 40, 30, 35, coupler=(20, 10))
+        >>> round(float(linkage.coupler_point_speed(0.5, omega=2.0)), 6)
+        12.183321
+        >>> FourBar(10, 30, 10, 30).coupler_point_speed([0.5, 2.0]).tolist()   # a parallelogram
+        [10.0, 10.0]
+        """
+        pose = self.solve(theta, order=1, omega=omega)
+        a, _, _, _, p, q = self._unit
+        with np.errstate(over="ignore"):
+            # the kernel takes the lengths scaled by 2**-exponent (linear in them): scale back, exactly
+            speed = _speed.coupler_point_speed(a, p, q, pose.theta, pose.phi, np.asarray(omega, dtype=float),
+                                               pose.omega_coupler)
+            return np.ldexp(speed, self._exponent)[()]

@@ -10,7 +10,7 @@ import pytest
 import mech
 import mech.planar as pl
 import mech.planar.synthesis as sy
-from tests.public_inputs import ABCD, E, Opaque, first, rejections, slotted
+from tests.public_inputs import ABCD, E, assert_rejected_by_name, first, Opaque, slotted
 
 CASES = {}
 RECORDS = {}
@@ -328,8 +328,7 @@ def test_valid_call_succeeds(key):
 
 @pytest.mark.parametrize("key", slotted(CASES))
 def test_bad_values_rejected_by_name(key):
-    failures = rejections(CASES, key)
-    assert not failures, "\n".join(failures)
+    assert_rejected_by_name(CASES, key)
 
 
 # ----------------------------------------------------------------------------- user functions (synthesis)

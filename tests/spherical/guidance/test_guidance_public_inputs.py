@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import mech.spherical as sph
-from tests.public_inputs import ABCD, E, first, rejections, slotted
+from tests.public_inputs import ABCD, E, assert_rejected_by_name, first, slotted
 
 CASES = {}
 RECORDS = {}
@@ -252,5 +252,4 @@ def test_valid_call_succeeds(key):
 
 @pytest.mark.parametrize("key", slotted(CASES))
 def test_bad_values_rejected_by_name(key):
-    failures = rejections(CASES, key)
-    assert not failures, "\n".join(failures)
+    assert_rejected_by_name(CASES, key)
