@@ -149,7 +149,7 @@ def _snap_dead_points(rows, columns, gaps, close, theta, out, valid, compiled=Fa
 
     A linkage that does not turn fully has a dead point, and about half of its poses do not
     assemble: checking each of them in NumPy cost more than the solve. With `compiled`, a
-    numba loop first keeps the poses within twice the tolerance (numba's sine may differ
+    numba loop first keeps the poses within four times the tolerance (numba's sine may differ
     from NumPy's in the last bit, far inside that margin), and NumPy decides on those.
     """
     if compiled:
