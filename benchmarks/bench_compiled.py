@@ -19,7 +19,7 @@ References (written here, independent of ``mech``'s generated functions):
 Subjects: ``Linkage.solve`` with the default backend (``auto``), and ``solve_fourbars`` on
 each backend (``batch-numba``, ``batch-numpy``).
 
-    python benchmarks/bench_compiled.py                 # N = 10^3 and 10^6, batch 10^5 x 128
+    python benchmarks/bench_compiled.py                 # N = 10^3, 10^4, 10^6, batch 10^5 x 128
     python benchmarks/bench_compiled.py --quick         # smaller, one round
 """
 
@@ -213,7 +213,7 @@ def main(argv=None):
         return 0
     log = lambda s: print(s, flush=True)  # noqa: E731
     log(f"load average at start: {os.getloadavg()}")
-    sizes = (10**3, 10**4) if args.quick else (10**3, 10**6)
+    sizes = (10**3, 10**4) if args.quick else (10**3, 10**4, 10**6)
     batch = 10**4 if args.quick else BATCH[0]
     groups = [] if args.only == "batch" else [
         (n, [f"{s}-{k}" for s in ("jansen", "watt") for k in ("auto", "plain")]) for n in sizes]
@@ -224,6 +224,11 @@ def main(argv=None):
     for n in sizes if args.only != "batch" else ():
         for s in ("jansen", "watt"):
             log(f"{s} N={n}: Linkage.solve (auto) / plain loop: {_ratio(t, (f'{s}-auto', n), (f'{s}-plain', n))}")
+    if args.only != "batch":
+        # cost per pose (CPU medians): flat from the middle size to the largest is the goal
+        log("cost per pose (cpu, ns): " + "; ".join(
+            f"{m} " + ", ".join(f"{t[(m, n)][1] / n * 1e9:.0f}" for n in sizes)
+            for m in (f"{s}-{k}" for s in ("jansen", "watt") for k in ("auto", "plain"))))
     for k in ("numba", "numpy") if args.only != "linkage" else ():
         log(f"batch {batch} x {BATCH[1]}: solve_fourbars ({k}) / plain loop: "
             f"{_ratio(t, (f'batch-{k}', batch), ('batch-plain', batch))}")

@@ -182,6 +182,10 @@ def real_array(name, value, *, finite=True):
     :class:`~mech.InputTypeError`, and (with ``finite=True``) NaN and infinities with a
     ``ValueError``; every message names the argument ``name`` and shows the bad value.
     """
+    if type(value) is float:
+        # a plain number (the default rates of a solve): no array to inspect
+        if not finite or math.isfinite(value):
+            return np.asarray(value, dtype=float)
     if type(value) is np.ndarray and value.dtype == np.float64:
         # the common case, an array of floats: one summation decides (NaN or an infinity
         # makes the sum non-finite; a finite sum that overflows takes the full check)
@@ -484,8 +488,13 @@ def _read_only(x, shape):
 
 def common_shape(**arrays):
     """The broadcast shape of the named arrays; a ValueError naming each shape if none."""
+    shapes = {np.shape(x) for x in arrays.values()}
+    shapes.discard(())
+    if len(shapes) <= 1:
+        # one array and scalars (a solve's inputs and its default rates): nothing to broadcast
+        return shapes.pop() if shapes else ()
     try:
-        return np.broadcast_shapes(*(np.shape(x) for x in arrays.values()))
+        return np.broadcast_shapes(*shapes)
     except ValueError:
         shapes = ", ".join(f"`{n}` {np.shape(x)}" for n, x in arrays.items())
         raise ValueError(f"Expected shapes that broadcast together, got {shapes}") from None

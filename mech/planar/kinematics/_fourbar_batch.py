@@ -134,7 +134,8 @@ def solve_fourbars(a, b, c, d, theta, *, coupler=(0.0, 0.0), branch=1, rtol=1e-1
         _numpy(columns, thetas, out, valid)
     snap = np.flatnonzero(dead & ~other)
     if snap.size:
-        _snap_dead_points(snap, (ua, ub, uc, ud, up, uq, scale), gaps, close, thetas, out, valid)
+        _snap_dead_points(snap, (ua, ub, uc, ud, up, uq, scale), gaps, close, thetas, out, valid,
+                          _backend.use_numba(n * k))
     for i in np.flatnonzero(other):
         pose = FourBar(a[i], b[i], c[i], d[i], branch=int(br[i]), coupler=(p[i], q[i])).solve(
             thetas[i if thetas.shape[0] > 1 else 0])
@@ -142,10 +143,22 @@ def solve_fourbars(a, b, c, d, theta, *, coupler=(0.0, 0.0), branch=1, rtol=1e-1
     return FourBarBatch(out[0], out[1], out[2], valid)
 
 
-def _snap_dead_points(rows, columns, gaps, close, theta, out, valid):
+def _snap_dead_points(rows, columns, gaps, close, theta, out, valid, compiled=False):
     """`FourBar._dead_points` at order 0 for the linkages `rows`: an input within
-    `DEAD_POINT_RTOL` of a dead point that did not assemble is the dead point (C on BD)."""
-    i, j = np.nonzero(~valid[rows])            # only a pose that did not assemble is snapped
+    `DEAD_POINT_RTOL` of a dead point that did not assemble is the dead point (C on BD).
+
+    A linkage that does not turn fully has a dead point, and about half of its poses do not
+    assemble: checking each of them in NumPy cost more than the solve. With `compiled`, a
+    numba loop first keeps the poses within four times the tolerance (numba's sine may differ
+    from NumPy's in the last bit, far inside that margin), and NumPy decides on those.
+    """
+    if compiled:
+        ua, ub, uc, ud = columns[:4]
+        keep = np.zeros((rows.size, valid.shape[1]), dtype=bool)
+        _near()(rows, ua, ub, uc, ud, gaps[2], close, theta, valid, 4.0 * DEAD_POINT_RTOL, keep)
+        i, j = np.nonzero(keep)
+    else:
+        i, j = np.nonzero(~valid[rows])            # only a pose that did not assemble is snapped
     if not i.size:
         return
     ua, ub, uc, ud, up, uq, scale = (x[rows][i] for x in columns)
@@ -228,3 +241,30 @@ def _loop():
         fn = _LOOP["loop"] = loop
     return fn
 
+
+
+def _near():
+    """The compiled pre-check of `_snap_dead_points`: poses near a dead point, generously."""
+    fn = _LOOP.get("near")
+    if fn is None:
+        import math
+
+        import numba
+
+        @numba.njit(cache=True, nogil=True, error_model="numpy")
+        def near(rows, ua, ub, uc, ud, gap, close, theta, valid, rtol, keep):
+            for r in range(rows.shape[0]):
+                i = rows[r]
+                th = theta[i] if theta.shape[0] > 1 else theta[0]
+                tol = rtol * (ua[i] + ub[i] + uc[i] + ud[i])
+                far, short = ub[i] + uc[i], abs(ub[i] - uc[i])
+                for j in range(valid.shape[1]):
+                    if valid[i, j]:
+                        continue
+                    s = math.sin(0.5 * th[j])
+                    k = math.sqrt((ud[i] - ua[i]) ** 2 + 4.0 * ua[i] * ud[i] * s * s)
+                    keep[r, j] = ((abs(k - far) <= tol and gap[i] != 0.0)
+                                  or (abs(short - k) <= tol and close[i] != 0.0))
+
+        fn = _LOOP["near"] = near
+    return fn

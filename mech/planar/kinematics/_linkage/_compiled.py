@@ -79,14 +79,22 @@ class _Writer:
     """Source lines of the loop body and the numbers it reads from ``par``."""
 
     def __init__(self):
-        self.lines, self.values = [], []
+        self.lines, self.values, self.before = [], [], []
 
     def par(self, value):
+        # read once before the loop: numba cannot tell that ``par`` is not one of the
+        # outputs, so a read inside the loop would be repeated at every pose
         self.values.append(float(value))
-        return f"par[{len(self.values) - 1}]"
+        name = f"c{len(self.values) - 1}"
+        self.before.append(f"{name} = par[{len(self.values) - 1}]")
+        return name
 
     def add(self, *lines):
         self.lines.extend(lines)
+
+    def hoist(self, *lines):
+        """Lines computed once before the loop (from constants only)."""
+        self.before.extend(lines)
 
 
 def _source(linkage, steps, order, schedules, unit, drivers, dirs):
@@ -143,12 +151,16 @@ def _source(linkage, steps, order, schedules, unit, drivers, dirs):
             groups.append(step.label)
             sch = schedules.get(step.label) if schedules else None
             has = sch is not None and len(sch.points) > 0
+            # the group's constants once before the loop, in the same operations as per pose
+            wr.hoist(f"sum{j} = abs({r1}) + abs({r2})", f"dif{j} = abs({r1} - {r2})",
+                     f"rat{j}a = 0.0 / {r1}", f"scl{j}a = 1.0 / ({r1} + 0.0 * rat{j}a)",
+                     f"rat{j}b = 0.0 / {r2}", f"scl{j}b = 1.0 / ({r2} + 0.0 * rat{j}b)")
             wr.add(f"gx = {P2}x - {P1}x", f"gy = {P2}y - {P1}y",
-                   f"heron = rrr(gx, gy, {r1}, {r2}, 1.0)[2]",
                    "gd = np.hypot(gx, gy)",
-                   f"size = abs({r1}) + abs({r2}) + gd",
+                   f"heron = heron_of(gd, {r1}, {r2})",
+                   f"size = sum{j} + gd",
                    f"tol = {DEAD_POINT_RTOL!r} * size",
-                   f"dead = (abs(gd - (abs({r1}) + abs({r2}))) <= tol) | (abs(gd - abs({r1} - {r2})) <= tol)")
+                   f"dead = (abs(gd - sum{j}) <= tol) | (abs(gd - dif{j}) <= tol)")
             branch = wr.par(step.get("branch"))
             if has:
                 s = len(scheduled)
@@ -172,7 +184,7 @@ def _source(linkage, steps, order, schedules, unit, drivers, dirs):
                    "good = good and ok",
                    f"{v}x = {P1}x + ux", f"{v}y = {P1}y + uy",
                    f"u2x = {v}x - {P2}x", f"u2y = {v}y - {P2}y",
-                   f"{L1}dx, {L1}dy = cdiv(ux, uy, {r1})", f"{L2}dx, {L2}dy = cdiv(u2x, u2y, {r2})")
+                   f"{L1}dx, {L1}dy = cdiv(ux, uy, rat{j}a, scl{j}a)", f"{L2}dx, {L2}dy = cdiv(u2x, u2y, rat{j}b, scl{j}b)")
             if order >= 1:
                 wr.add(f"{L1}w, {L2}w, {v}vx, {v}vy = rrv(ux, uy, u2x, u2y, {r1}, {r2}, {P1}vx, {P1}vy, "
                        f"{P2}vx, {P2}vy, 0.0, 0.0)")
@@ -218,7 +230,8 @@ def _source(linkage, steps, order, schedules, unit, drivers, dirs):
     args += [f"pts{s}" for s in range(len(scheduled))] + ["par", "unit", "P", "V", "A", "D", "W", "AL", "valid",
                                                           "fail", "redo_out"]
     body = "\n".join("        " + line for line in wr.lines)
-    src = (f"def loop({', '.join(args)}):\n    for t in range(P.shape[1]):\n        good = True\n"
+    before = "".join(f"    {line}\n" for line in wr.before)
+    src = (f"def loop({', '.join(args)}):\n{before}    for t in range(P.shape[1]):\n        good = True\n"
            f"        redo = False\n        th = q{crank}[t * q{crank}s]\n{body}\n        redo_out[t] = redo\n")
     layout = dict(moving=moving, links=[k for k in linkage.links if k != GROUND], groups=groups,
                   scheduled=scheduled, rated=[s.links[0] for s in steps if s.kind == "crank"])
@@ -261,10 +274,19 @@ def pymod(a, b):
     return m
 
 
-def cdiv(ar, ai, b):
-    rat = 0.0 / b
-    scl = 1.0 / (b + 0.0 * rat)
+def cdiv(ar, ai, rat, scl):
+    # NumPy's complex / real: rat = 0.0 / b and scl = 1.0 / (b + 0.0 * rat), made before the loop
     return (ar + ai * rat) * scl, (ai - ar * rat) * scl
+
+
+def heron_of(x4, r1, r2):
+    # rrr_position's Heron product from x4 = hypot(gx, gy), in its operations and order
+    # (the loop has x4 already; a second call of hypot would not be merged); the tests
+    # check the loop bit for bit against the NumPy path, which calls rrr_position
+    x5 = r1 + r2
+    x6 = (-x4 + x5)*(-r1 + r2 + x4)*(r1 - r2 + x4)
+    x7 = x4 + x5
+    return x6*x7
 '''
 
 
@@ -346,8 +368,8 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit, dirs=False):
         pts = [np.ascontiguousarray(sch.points, dtype=float) for _, sch in lay["scheduled"]]
         rated = {s.links[0]: s.get("driver") for s in steps if s.kind == "crank"}
         grounds = [(s.label, s.get("at") * unit if unit != 1.0 else s.get("at")) for s in steps if s.kind == "ground"]
-        cache[key] = (kernel(src), par, lay, pts, rated, grounds)
-    fn, par, lay, pts, rated, grounds = cache[key]
+        cache[key] = (kernel(src), par, lay, pts, rated, grounds, {})
+    fn, par, lay, pts, rated, grounds, fixed = cache[key]
     n = math.prod(shape)
     cols = []
     for d in drivers:
@@ -365,15 +387,25 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit, dirs=False):
     redo = np.empty(n, dtype=bool)
     fn(*cols, *pts, par, float(unit), P, V, A, D, W, AL, valid, fail, redo)
     for x in (P, V, A, D, W, AL, valid, fail):
-        x.flags.writeable = False           # read-only, as the NumPy path's broadcast views are
-    st = _State(order, shape)
-    st.modes = {}
-    for label, at in grounds:
+        if x.size:
+            x.flags.writeable = False       # read-only, as the NumPy path's broadcast views are
+    st = _State.__new__(_State)             # every field is set here: no array of ones to fill
+    st.order, st.shape, st.modes, st.slides = order, shape, {}, {}
+    st.P, st.V, st.A, st.W, st.AL = {}, {}, {}, {}, {}
+    st.dir = {GROUND: 1.0 + 0j}
+    if shape not in fixed:
+        # the ground points as read-only views over the shape, made once per shape (as the
+        # solution would broadcast them at every call)
+        if len(fixed) > 8:
+            fixed.clear()
+        zero = np.broadcast_to(np.zeros(()), shape)
+        fixed[shape] = [(label, np.broadcast_to(np.asarray(at), shape), zero) for label, at in grounds]
+    for label, at, zero in fixed[shape]:
         st.P[label] = at
         if order >= 1:
-            st.V[label] = 0.0
+            st.V[label] = zero
         if order >= 2:
-            st.A[label] = 0.0
+            st.A[label] = zero
     for i, name in enumerate(moving):
         st.P[name] = P[i].reshape(shape)
         if order >= 1:
@@ -390,7 +422,7 @@ def solve(linkage, steps, order, shape, q, w, al, crank, unit, dirs=False):
     st.origin = None
     st.valid = valid.reshape(shape)
     failures = {label: fail[j].reshape(shape) for j, label in enumerate(groups)}
-    if crank is not None and redo.any():
+    if crank is not None and lay["scheduled"] and redo.any():      # only a change point asks for NumPy
         _redo(linkage, steps, order, shape, q, w, al, crank, unit, st, failures, np.flatnonzero(redo))
     if not dirs:
         st.dirs_later = lambda: {k: v for k, v in solve(linkage, steps, order, shape, q, w, al, crank, unit,

@@ -428,11 +428,11 @@ class Linkage:
         return state, failures
 
     def _crank_driver(self):
-        """The driver's name when the linkage is driven by one crank, else None."""
-        cranks = [s.get("driver") for s in self._steps if s.kind == "crank"]
-        if len(self._drivers) == 1 and cranks == list(self._drivers):
-            return cranks[0]
-        return None
+        """The driver's name when the linkage is driven by one crank, else None (cached)."""
+        if "_crank_cache" not in self.__dict__:
+            cranks = [s.get("driver") for s in self._steps if s.kind == "crank"]
+            self._crank_cache = cranks[0] if len(self._drivers) == 1 and cranks == list(self._drivers) else None
+        return self._crank_cache
 
     def _schedules(self):
         """The change points of every two-mode group (one-crank linkages only), cached."""
@@ -445,13 +445,17 @@ class Linkage:
         return cached
 
     def _distance_drivers(self):
-        """Names of the drivers whose input is a distance (sliders and actuators)."""
+        """Names of the drivers whose input is a distance (sliders and actuators), cached."""
+        cached = self.__dict__.get("_far_cache")
+        if cached is not None:
+            return cached
         out = set()
         for step in self._steps:
             if step.kind == "slider":
                 out.add(step.get("driver"))
             elif step.kind == "rrr":
                 out.update(x for x in step.get("lengths") if isinstance(x, str))
+        self._far_cache = out = frozenset(out)
         return out
 
     def _unit_steps(self):
