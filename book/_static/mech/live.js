@@ -12,15 +12,24 @@ const DEG = Math.PI / 180;
 /** Wire the live figure `div` (data `d`, player hooks `api`). */
 export async function attach(div, d, api) {
   const spec = d.live;
+  const chains = { linkage: "planarLinkage", sphlinkage: "sphericalLinkage", rssr: "rssr", chain: "openChain" };
   const kind = { fourbar: planarFourBar, slidercrank: sliderCrank, guidebar: guideBar, sphfourbar: sphericalFourBar,
-    hooke: hookeJoint }[spec.type];
+    hooke: hookeJoint }[spec.type] || (spec.type in chains && "chains");
   if (!kind) return;
+  if (kind === "chains") { // linkages built step by step (live_chains.js)
+    const m = await import("./live_chains.js");
+    return wire(div, d, api, m[chains[spec.type]](div, d, api, spec), m);
+  }
   const layer = Object.assign({}, await import(spec.type === "sphfourbar" ? "./spherical.js"
     : spec.type === "hooke" ? "./core.js" : "./planar.js"));
   if (spec.type === "hooke") layer.kernel = await import("../kernels/hooke.js");
   if (spec.type === "slidercrank" || spec.type === "guidebar") layer.kernel = await import("../kernels/slider_crank.js");
   if (spec.type === "guidebar") layer.core = await import("./core.js");
-  const fig = kind(div, d, api, spec, layer);
+  wire(div, d, api, kind(div, d, api, spec, layer), layer);
+}
+
+/** The controls, handles and read-out of the figure object `fig` of the player `api`. */
+function wire(div, d, api, fig, layer) {
   const box = div.querySelector(".mech-live");
   const msg = box.querySelector(".mech-live-msg");
   const stats = { times: [], updates: 0, parts: [] };
@@ -32,7 +41,8 @@ export async function attach(div, d, api) {
       const v = fig.shown()[input.dataset.k];
       if (v !== undefined && document.activeElement !== input) input.value = +v.toPrecision(6);
     });
-    box.querySelector(".mech-branch").textContent = "branch " + (fig.state.branch > 0 ? "+1" : "\u22121");
+    const button = box.querySelector(".mech-branch");
+    if (button) button.textContent = "branch " + (fig.state.branch > 0 ? "+1" : "\u22121");
   }
   // One change: recompute with the kernels, draw, or say why not and keep the last good state.
   function update(change) {
@@ -80,7 +90,8 @@ export async function attach(div, d, api) {
       update(fig.fromField(input.dataset.k, v));
     });
   });
-  box.querySelector(".mech-branch").addEventListener("click", () => update({ branch: -fig.state.branch }));
+  const button = box.querySelector(".mech-branch");
+  if (button) button.addEventListener("click", () => update({ branch: -fig.state.branch }));
   // A pose the player passes without a change still gets its message (it may not assemble).
   const svg = api.svg;
   const handles = document.createElementNS("http://www.w3.org/2000/svg", "g");
