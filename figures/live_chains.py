@@ -213,7 +213,8 @@ def rssr(dims, theta, *, branch=1):
     kind, limits = _turn_words(ok, CURVE_POINTS)
     z3 = np.array([0.0, np.sin(dims["lam"]), np.cos(dims["lam"])])
     bc = pose.C - pose.B
-    along = np.cross(z3, pose.C)          # C's direction of motion about the rocker axis
+    D = np.array([dims["h0"], dims["s3"] * np.sin(dims["lam"]), dims["s3"] * np.cos(dims["lam"])])
+    along = np.cross(z3, pose.C - D)      # C's direction of motion about the rocker axis
     mu = np.arctan2(np.linalg.norm(np.cross(bc, along), axis=-1), np.abs(np.sum(bc * along, axis=-1)))
     least = float(np.min(np.pi / 2 - mu[ok])) if ok.any() else np.nan
     return {"type": "rssr", "theta": _angles(theta), "dims": dims, "branch": int(branch), "curve": CURVE_POINTS,
@@ -231,7 +232,7 @@ def open_chain(s0, p, sweep):
     >>> import numpy as np
     >>> spec = open_chain(0.4, 0.08, np.zeros((2, 4)) + [0.0, 1.0, 0.25, 0.0])
     >>> spec["first"]["limits"]
-    'reach |AP| from 0.2718 to 0.2718'
+    'reach |AP| from 0.3553 to 0.3553'
     """
     from mech.spatial import example_2_25_reach
 

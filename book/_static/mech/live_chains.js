@@ -399,10 +399,11 @@ export function rssr(div, d, api, spec) {
   fig.readout = () => {
     let count = 0, least = Infinity;
     const z3 = [0, Math.sin(state.lam), Math.cos(state.lam)];
+    const D = [state.h0, state.s3 * Math.sin(state.lam), state.s3 * Math.cos(state.lam)];
     run.forEach((p) => {
       if (!p) return;
       count += 1;
-      const [B, C] = p, bc = [C[0] - B[0], C[1] - B[1], C[2] - B[2]], along = cross3(z3, C);
+      const [B, C] = p, bc = [C[0] - B[0], C[1] - B[1], C[2] - B[2]], along = cross3(z3, [C[0] - D[0], C[1] - D[1], C[2] - D[2]]);
       const mu = Math.atan2(Math.hypot(...cross3(bc, along)), Math.abs(dot3(bc, along)));
       least = Math.min(least, Math.PI / 2 - mu);
     });
