@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 __all__ = ["fourbar", "slider_crank", "guide_bar", "hooke", "spherical_fourbar", "linkage", "spherical_linkage", "rssr",
-           "open_chain", "none", "readout", "controls"]
+           "open_chain", "great_circles", "stephenson3", "none", "readout", "controls"]
 
 CURVE_POINTS = 720  # poses of the coupler curve drawn by a live figure
 
@@ -145,7 +145,7 @@ def spherical_fourbar(linkage, theta, *, names="ABCDP", curve=False):
             "names": list(names), "curve": CURVE_POINTS, "drawCurve": bool(curve)}
 
 
-from figures.live_chains import linkage, open_chain, rssr, spherical_linkage  # noqa: E402
+from figures.live_chains import great_circles, linkage, open_chain, rssr, spherical_linkage, stephenson3  # noqa: E402
 
 
 def none(what):
@@ -317,7 +317,7 @@ def controls(spec):
                     f'<input type="number" data-k="{key}" value="{v}" step="any" size="6">'
                     f'<input type="range" data-k="{key}" min="{lo:.6g}" max="{hi:.6g}" step="{step:.3g}" value="{v}" '
                     f'aria-label="{html.escape(label)}"></label>')
-    branch = ("" if spec["type"] == "chain" else
+    branch = ("" if spec["type"] in ("chain", "circles", "stephenson3") else
               f'<button type="button" class="mech-branch">branch {spec["branch"]:+d}</button>')
     text = (f'<span class="mech-live-type">{html.escape(out["kind"])}</span> \u00b7 '
             f'<span class="mech-live-limits">{html.escape(out["limits"])}</span> \u00b7 '

@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-__all__ = ["linkage", "spherical_linkage", "rssr", "open_chain"]
+__all__ = ["linkage", "spherical_linkage", "rssr", "open_chain", "great_circles", "stephenson3"]
 
 CURVE_POINTS = 720
 
@@ -247,3 +247,54 @@ def open_chain(s0, p, sweep):
             "first": {"kind": "open chain RRPR: no loop to close, every pose exists",
                       "limits": f"reach |AP| from {reach.min():.4f} to {reach.max():.4f}",
                       "transmission": "the gripper turns with \u03c6\u2083\u2084"}}
+
+
+def great_circles(A, B, C):
+    """A live view of the triangle ABC on the unit sphere with the great circles AB and BC,
+    their poles N1, N2 and their common points X and -X (as ``book/spherical/calculus.md``
+    draws it); the fields set the longitude and latitude of A, B and C in degrees.
+
+    Examples
+    --------
+    >>> great_circles([1, 0, 0], [0, 1, 0], [0, 0, 1])["first"]["limits"]
+    'angle between the circles at X 90.0°'
+    """
+    from mech.spherical import distance, great_circle_through, intersect
+
+    pts = {k: np.asarray(v, dtype=float) / np.linalg.norm(v) for k, v in zip("ABC", (A, B, C))}
+    fields = []
+    for k, p in pts.items():
+        fields.append(_field(f"{k}lon", f"{k} longitude (\u00b0)", math.degrees(math.atan2(p[1], p[0])), -180, 180, 0.1))
+        fields.append(_field(f"{k}lat", f"{k} latitude (\u00b0)", math.degrees(math.atan2(p[2], math.hypot(p[0], p[1]))),
+                             -90, 90, 0.1))
+    n1, n2 = great_circle_through(pts["A"], pts["B"]).pole, great_circle_through(pts["B"], pts["C"]).pole
+    x = intersect(n1, n2)
+    arcs = ", ".join(f"{p}{q} {_deg(float(distance(pts[p], pts[q])))}" for p, q in ("AB", "BC", "CA"))
+    return {"type": "circles", "branch": 1, "fields": fields,
+            "first": {"kind": "the great circles AB and BC meet at X and \u2212X",
+                      "limits": f"angle between the circles at X {_deg(float(x.angle))}", "transmission": f"arcs {arcs}"}}
+
+
+def stephenson3(lk, theta):
+    """A live Stephenson-3 spherical six-bar (`mech.spherical.SphericalStephenson3`) at the
+    input angles `theta`: the page moves its guided link CGH from the assembled pose, as
+    `solve` does, with the fields setting the arcs BC, EG and DH.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from mech.spherical import stephenson3 as build
+    >>> lk = build(0.35, 0.9, 0.8, 1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6), coupler=(0.3, 0.4), mu=0.8)
+    >>> stephenson3(lk, np.linspace(0.0, 1.0, 5))["first"]["limits"]
+    'assembled at 5 of 5 frames'
+    """
+    theta = np.asarray(theta, dtype=float).ravel()
+    points = {k: [float(x) for x in v] for k, v in lk.assembly.items()}
+    arcs = {k: lk.arcs[k] for k in ("BC", "EG", "DH")}
+    fields = [_field(k, f"{k} (\u00b0)", math.degrees(v), 0.0, 180.0, 0.1) for k, v in arcs.items()]
+    count = int(np.count_nonzero(lk.solve(theta).valid))
+    return {"type": "stephenson3", "theta": _angles(theta), "points": points, "theta0": float(lk.theta0),
+            "branch": 1, "fields": fields, "curve": CURVE_POINTS,
+            "first": {"kind": "Stephenson-3: the guided link CGH hangs from the crank by BC and EG and from D by DH",
+                      "limits": f"assembled at {count} of {theta.size} frames",
+                      "transmission": "arcs " + ", ".join(f"{k} {_deg(v)}" for k, v in arcs.items())}}

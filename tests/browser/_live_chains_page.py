@@ -48,6 +48,24 @@ def figures():
     out["chain"] = view3d({"A": np.zeros(3), "B": [0.0, 0.0, s0], "O3": chain[:, 3, :3, 3], "P": tip.P, "J": jaw},
                           links=[("A", "B"), ("B", "O3"), ("O3", "P"), ("P", "J")], trace=["P"],
                           inputs=np.degrees(t), live=live.open_chain(s0, p, sweep)).data
+    A, B, C = (np.array(v) / np.linalg.norm(v) for v in ([1.0, 0.2, 0.6], [0.3, 1.0, 0.4], [0.2, 0.4, 1.0]))
+    from mech.spherical import great_circle_through, intersect, stephenson3
+
+    n1, n2 = great_circle_through(A, B).pole, great_circle_through(B, C).pole
+    x = intersect(n1, n2)
+    out["circles"] = view3d({"A": A, "B": B, "C": C, "X": x.point, "\u2212X": x.antipode, "N1": n1, "N2": n2},
+                            arcs=[("A", "B"), ("B", "C"), ("C", "A")],
+                            still=[(great_circle(n1), "curve"), (great_circle(n2), "path"),
+                                   (great_circle([0, 0, 1]), "grid"), ([np.zeros(3), n1], "axis"),
+                                   ([np.zeros(3), n2], "axis")],
+                            sphere=True, live=live.great_circles(A, B, C)).data
+    lk = stephenson3(0.35, 0.9, 0.8, 1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6), coupler=(0.3, 0.4), mu=0.8)
+    run = np.linspace(-0.5, 1.0, 31)
+    pose = lk.solve(run)
+    out["triad"] = view3d(dict(pose.points), arcs=[("A", "B"), ("A", "E"), ("B", "E"), ("B", "C"), ("E", "G"),
+                                                   ("D", "H"), ("C", "G"), ("G", "H"), ("C", "H")],
+                          still=[(great_circle([0, 0, 1]), "grid")], sphere=True, trace=["C", "H"],
+                          inputs=np.degrees(run), live=live.stephenson3(lk, run)).data
     return out
 
 

@@ -117,3 +117,26 @@ def test_rssr_both_modes_match_the_package():
         ref = RSSR(**dims, branch=branch).solve(THETA)
         assert np.max(np.abs(np.array([g[0] for g in got[k]]) - ref.B)) < 1e-12 * 4
         assert np.max(np.abs(np.array([g[1] for g in got[k]]) - ref.C)) < 1e-12 * 4
+
+
+def test_stephenson3_triad_matches_the_package():
+    """The page's march of the Stephenson-3 (live_triad.js) puts C, G, H where
+    SphericalStephenson3.solve does, on both sides of the assembled pose."""
+    from figures.live_chains import stephenson3 as describe
+    from mech.spherical import stephenson3
+
+    lk = stephenson3(0.35, 0.9, 0.8, 1.1, E=(0.5, 0.7), arcs=(0.9, 0.6), H=(0.55, -0.6), coupler=(0.3, 0.4), mu=0.8)
+    run = np.linspace(-0.5, 1.0, 31)
+    spec = describe(lk, run)
+    triad = _module().replace("live_chains.js", "live_triad.js")
+    script = (f'import {{ stephenson3 }} from "{triad}";\n'
+              f"const spec = {json.dumps(spec)}, names = ['C', 'G', 'H', 'P'];\n"
+              "const d = {names, P: names.map(() => new Array(3 * spec.theta.length).fill(0)), step: 1, c0: [0, 0, 0],"
+              " trace: [], sphere: true};\n"
+              "const fig = stephenson3(null, d, {}, spec);\nfig.compute();\n"
+              "process.stdout.write(JSON.stringify({P: d.P, out: fig.readout()}));")
+    got = _node_json(script)
+    ref = lk.solve(run)
+    assert got["out"] == spec["first"]
+    for k, name in enumerate("CGHP"):
+        assert np.max(np.abs(np.array(got["P"][k], dtype=float).reshape(-1, 3) - ref.points[name])) < 1e-12, name

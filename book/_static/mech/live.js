@@ -12,12 +12,13 @@ const DEG = Math.PI / 180;
 /** Wire the live figure `div` (data `d`, player hooks `api`). */
 export async function attach(div, d, api) {
   const spec = d.live;
-  const chains = { linkage: "planarLinkage", sphlinkage: "sphericalLinkage", rssr: "rssr", chain: "openChain" };
+  const chains = { linkage: "planarLinkage", sphlinkage: "sphericalLinkage", rssr: "rssr", chain: "openChain",
+    circles: "greatCircles", stephenson3: "stephenson3" };
   const kind = { fourbar: planarFourBar, slidercrank: sliderCrank, guidebar: guideBar, sphfourbar: sphericalFourBar,
     hooke: hookeJoint }[spec.type] || (spec.type in chains && "chains");
   if (!kind) return;
-  if (kind === "chains") { // linkages built step by step (live_chains.js)
-    const m = await import("./live_chains.js");
+  if (kind === "chains") { // linkages built step by step (live_chains.js), the triad (live_triad.js)
+    const m = Object.assign({}, await import("./live_chains.js"), spec.type === "stephenson3" ? await import("./live_triad.js") : {});
     return wire(div, d, api, m[chains[spec.type]](div, d, api, spec), m);
   }
   const layer = Object.assign({}, await import(spec.type === "sphfourbar" ? "./spherical.js"

@@ -10,6 +10,7 @@ import * as sph from "../kernels/spherical_linkage.js";
 import * as rssrK from "../kernels/rssr.js";
 import * as abc from "../kernels/one_equation.js";
 import * as chainK from "../kernels/open_chains.js";
+import * as calc from "../kernels/spherical_calculus.js";
 import { LinkageInputError } from "./core.js";
 
 export { LinkageInputError };
@@ -32,13 +33,13 @@ function turnWords(count, n) {
 }
 
 /** The fields of a description as state values (lengths; arcs and angles in radians). */
-function fieldState(spec, angular) {
+export function fieldState(spec, angular) {
   const state = { branch: spec.branch };
   spec.fields.forEach(([k, , v]) => { state[k] = angular(k) ? v * DEG : v; });
   return state;
 }
 
-function fieldHelpers(fig, spec, angular) {
+export function fieldHelpers(fig, spec, angular) {
   fig.shown = () => Object.fromEntries(spec.fields.map(([k]) => [k, angular(k) ? fig.state[k] / DEG : fig.state[k]]));
   fig.fromField = (k, v) => ({ [k]: angular(k) ? v * DEG : v });
 }
@@ -275,12 +276,12 @@ function unproject([yaw, pitch, K], x, y) {
   return [cy * X - sy * yv, sy * X + cy * yv, z];
 }
 
-function grid3(d) {
+export function grid3(d) {
   const s = d.step, c = d.c0;
   return (p) => (p && p[0] === p[0] ? [(p[0] - c[0]) / s, (p[1] - c[1]) / s, (p[2] - c[2]) / s] : [null, null, null]);
 }
 
-function where3(d, api) {
+export function where3(d, api) {
   return (name, f) => {
     const arr = d.P[d.names.indexOf(name)], j = arr.length === 3 ? 0 : 3 * f;
     if (arr[j] === null) return null;
@@ -447,5 +448,62 @@ export function openChain(div, d, api, spec) {
     transmission: "the gripper turns with \u03c6\u2083\u2084" });
   fig.where = () => null;
   fig.fromDrag = () => null;
+  return fig;
+}
+
+// --- two great circles through a spherical triangle ------------------------------------------
+
+const norm3 = (v) => { const k = Math.hypot(...v); return [v[0] / k, v[1] / k, v[2] / k]; };
+// the pole of the directed great circle a -> b, formed as (a - b) x b (accurate for close points)
+const pole = (a, b) => norm3(cross3([a[0] - b[0], a[1] - b[1], a[2] - b[2]], b));
+
+export function greatCircles(div, d, api, spec) {
+  const angular = () => true;
+  const state = fieldState(spec, angular);
+  const fig = { state, handleSize: 26, handles: ["A", "B", "C"] };
+  fieldHelpers(fig, spec, angular);
+  const grid = grid3(d), idx = (name) => d.names.indexOf(name);
+  let pts = null, n1 = null, n2 = null;
+  const ring = (n) => {
+    const h = Math.abs(n[0]) < 0.9 ? [1, 0, 0] : [0, 1, 0], e1 = norm3(cross3(n, h)), e2 = cross3(n, e1), out = [];
+    for (let k = 0; k <= 96; k++) {
+      const t = (2 * Math.PI * k) / 96, c = Math.cos(t), s = Math.sin(t);
+      out.push(...grid([c * e1[0] + s * e2[0], c * e1[1] + s * e2[1], c * e1[2] + s * e2[2]]));
+    }
+    return out;
+  };
+  fig.compute = () => {
+    pts = {};
+    "ABC".split("").forEach((k) => {
+      const lon = state[k + "lon"], lat = state[k + "lat"];
+      if (!(Number.isFinite(lon) && Number.isFinite(lat) && Math.abs(lat) <= Math.PI / 2)) {
+        throw new LinkageInputError(`Expected \`${k}\` a finite longitude and a latitude in [-90, 90] degrees, got ${lon / DEG}, ${lat / DEG}`);
+      }
+      pts[k] = calc.sph_to_xyz(lon, lat);
+    });
+    n1 = pole(pts.A, pts.B);
+    n2 = pole(pts.B, pts.C);
+    const x = cross3(n1, n2);
+    if (!(Math.hypot(...x) > 0) || !(n1[0] === n1[0]) || !(n2[0] === n2[0])) {
+      throw new LinkageInputError("Expected A, B and C with distinct great circles AB and BC, got one circle");
+    }
+    const X = norm3(x);
+    const put = (name, p) => { if (idx(name) >= 0) d.P[idx(name)] = grid(p); };
+    put("A", pts.A); put("B", pts.B); put("C", pts.C); put("X", X); put("\u2212X", X.map((v) => -v));
+    put("N1", n1); put("N2", n2);
+    d.still[0] = { p: ring(n1), c: d.still[0].c };
+    d.still[1] = { p: ring(n2), c: d.still[1].c };
+    d.still[3] = { p: [...grid([0, 0, 0]), ...grid(n1)], c: d.still[3].c };
+    d.still[4] = { p: [...grid([0, 0, 0]), ...grid(n2)], c: d.still[4].c };
+  };
+  fig.message = () => "";
+  fig.readout = () => ({ kind: "the great circles AB and BC meet at X and \u2212X",
+    limits: `angle between the circles at X ${deg(angle3(n1, n2))}`,
+    transmission: "arcs " + [["A", "B"], ["B", "C"], ["C", "A"]].map(([p, q]) => `${p}${q} ${deg(angle3(pts[p], pts[q]))}`).join(", ") });
+  fig.where = where3(d, api);
+  fig.fromDrag = (name, x, y) => {
+    const w = unproject(api.view(), x, y);
+    return { [name + "lon"]: Math.atan2(w[1], w[0]), [name + "lat"]: Math.atan2(w[2], Math.hypot(w[0], w[1])) };
+  };
   return fig;
 }
