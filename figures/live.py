@@ -8,7 +8,10 @@ positions and its smallest transmission angle with the generated JavaScript kern
 (``book/_static/kernels``, through the layer in ``book/_static/mech``; ``live.js`` wires
 them to the player). The build writes the first state, controls and read-out included,
 so the page is right before any script runs; the kernels load only on pages with a live
-figure. `none` marks a figure whose linkage has no kernel in the page, and says so.
+figure. The linkages built step by step (six-bars, Jansen's leg, the spherical six-bars,
+the RSSR, the open chain, the Stephenson-3 triad) and the great-circle view are described
+by `figures.live_chains`, re-exported here. `none` marks a figure whose linkage has no
+kernel in the page, and says so.
 
 The read-out is written by `readout` here and by ``live.js`` in the page, in the same words
 and to the same digits.
