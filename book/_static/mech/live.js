@@ -6,6 +6,8 @@
 // the limit positions and the smallest transmission angle, and the player draws them.
 // Written by hand; the formulas are in the kernels.
 
+import { unproject } from "./core.js";
+
 const deg = (x) => (x * 180 / Math.PI).toFixed(1).replace("-", "\u2212") + "\u00b0";
 const DEG = Math.PI / 180;
 
@@ -460,18 +462,6 @@ const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 const cross = (u, v) => [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
 const angleOf = (u, v) => Math.atan2(Math.hypot(...cross(u, v)), dot(u, v));
 const tangent = (at, to) => { const k = dot(at, to); return [to[0] - k * at[0], to[1] - k * at[1], to[2] - k * at[2]]; };
-
-/** The point of the unit sphere under the user point (x, y) of a 3-D view, on the reader's
- *  side: the inverse of the player's projection with its yaw, pitch and scale K. */
-function unproject([yaw, pitch, K], x, y) {
-  let X = x / K, Y = -y / K, w = Math.sqrt(Math.max(0, 1 - X * X - Y * Y));
-  const n = Math.hypot(X, Y, w);
-  X /= n; Y /= n; w /= n;
-  const cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
-  // the projection: X = x', Y = sp y' + cp z, w = sp z - cp y', with x' = cy p0 + sy p1, y' = -sy p0 + cy p1
-  const yv = sp * Y - cp * w, z = cp * Y + sp * w;
-  return [cy * X - sy * yv, sy * X + cy * yv, z];
-}
 
 /** The input angles of SphericalFourBar.couplerCurve(n): n over the full turn, or spread
  *  over the assembly intervals with a NaN between intervals. */

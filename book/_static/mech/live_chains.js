@@ -11,7 +11,7 @@ import * as rssrK from "../kernels/rssr.js";
 import * as abc from "../kernels/one_equation.js";
 import * as chainK from "../kernels/open_chains.js";
 import * as calc from "../kernels/spherical_calculus.js";
-import { LinkageInputError } from "./core.js";
+import { LinkageInputError, unproject } from "./core.js";
 
 export { LinkageInputError };
 
@@ -47,6 +47,18 @@ export function fieldHelpers(fig, spec, angular) {
 function disableMarks(div, d) {
   d.marks = [];
   div.querySelectorAll(".mech-mark").forEach((b) => { b.disabled = true; });
+}
+
+/** How many poses of the curve assemble, and the smallest transmission angle over them:
+ *  `angle(group, pose)` is the angle at a group's joint, folded into [0, pi/2]. */
+function overCurve(ok, groups, angle) {
+  let count = 0, least = Infinity;
+  for (let f = 0; f < ok.length; f++) {
+    if (!ok[f]) continue;
+    count += 1;
+    groups.forEach((s) => { least = Math.min(least, fold(angle(s, f))); });
+  }
+  return [count, least];
 }
 
 const labelOf = (spec, key) => (spec.fields.find((f) => f[0] === key) || [key, key])[1];
@@ -185,16 +197,11 @@ export function planarLinkage(div, d, api, spec) {
   fig.message = (f) => (!sol || sol.ok[f] ? "" : `At \u03b8 = ${deg(theta[f])} this linkage cannot be assembled: ` +
     "a group's two links do not reach each other (the crank does not reach this angle).");
   fig.readout = () => {
-    let count = 0, least = Infinity;
-    for (let f = 0; f < curveTheta.length; f++) {
-      if (!run.ok[f]) continue;
-      count += 1;
-      joints.forEach((s) => {
-        const J = run.P[s.joint], A = run.P[s.pins[0]], B = run.P[s.pins[1]];
-        const ux = A[0][f] - J[0][f], uy = A[1][f] - J[1][f], vx = B[0][f] - J[0][f], vy = B[1][f] - J[1][f];
-        least = Math.min(least, fold(Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy)));
-      });
-    }
+    const [count, least] = overCurve(run.ok, joints, (s, f) => {
+      const J = run.P[s.joint], A = run.P[s.pins[0]], B = run.P[s.pins[1]];
+      const ux = A[0][f] - J[0][f], uy = A[1][f] - J[1][f], vx = B[0][f] - J[0][f], vy = B[1][f] - J[1][f];
+      return Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy);
+    });
     const [kind, limits] = turnWords(count, curveTheta.length);
     const transmission = joints.length && Number.isFinite(least)
       ? `smallest transmission angle ${deg(least)} (joints ${joints.map((s) => s.joint).join(", ")}; over ${spec.curve} poses)`
@@ -266,16 +273,6 @@ export function solveSpherical(spec, state, theta) {
   return { P, F, ok };
 }
 
-/** The point of the unit sphere under the user point (x, y) of a 3-D view, on the reader's side. */
-function unproject([yaw, pitch, K], x, y) {
-  let X = x / K, Y = -y / K, w = Math.sqrt(Math.max(0, 1 - X * X - Y * Y));
-  const n = Math.hypot(X, Y, w);
-  X /= n; Y /= n; w /= n;
-  const cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
-  const yv = sp * Y - cp * w, z = cp * Y + sp * w;
-  return [cy * X - sy * yv, sy * X + cy * yv, z];
-}
-
 export function grid3(d) {
   const s = d.step, c = d.c0;
   return (p) => (p && p[0] === p[0] ? [(p[0] - c[0]) / s, (p[1] - c[1]) / s, (p[2] - c[2]) / s] : [null, null, null]);
@@ -314,15 +311,10 @@ export function sphericalLinkage(div, d, api, spec) {
   fig.message = (f) => (!sol || sol.ok[f] ? "" : `At \u03b8 = ${deg(theta[f])} this spherical linkage cannot be ` +
     "assembled: a dyad's two arcs do not meet (the input does not reach this angle).");
   fig.readout = () => {
-    let count = 0, least = Infinity;
-    for (let f = 0; f < curveTheta.length; f++) {
-      if (!run.ok[f]) continue;
-      count += 1;
-      joints.forEach((s) => {
-        const J = run.P[s.joint][f];
-        least = Math.min(least, fold(angle3(tangent(J, run.P[s.pins[0]][f]), tangent(J, run.P[s.pins[1]][f]))));
-      });
-    }
+    const [count, least] = overCurve(run.ok, joints, (s, f) => {
+      const J = run.P[s.joint][f];
+      return angle3(tangent(J, run.P[s.pins[0]][f]), tangent(J, run.P[s.pins[1]][f]));
+    });
     const [kind, limits] = turnWords(count, curveTheta.length);
     return { kind, limits,
       transmission: `smallest transmission angle ${deg(least)} (joints ${joints.map((s) => s.joint).join(", ")}; over ${spec.curve} poses)` };
