@@ -7,29 +7,18 @@ poses after a change are the package's."""
 import numpy as np
 import pytest
 
-import _crawl
 import _live_chains_page
+import _live_page
 
 NAMES = ("watt", "jansen", "shaper", "sphsix", "rssr", "chain", "circles", "triad")
 
 
 @pytest.fixture(scope="module")
 def page(chromium, tmp_path_factory):
-    from playwright.sync_api import sync_playwright
-
     folder = tmp_path_factory.mktemp("live_chains")
     _live_chains_page.write(folder)
-    with _crawl.serve(folder) as base, sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=chromium)
-        tab = browser.new_page(viewport={"width": 1000, "height": 2600})
-        tab.problems = []
-        tab.on("console", lambda m: tab.problems.append(m.text) if m.type == "error" and "favicon" not in m.location.get("url", "") else None)
-        tab.on("pageerror", lambda e: tab.problems.append(str(e)))
-        tab.on("request", lambda r: None if r.url.startswith((base, "data:", "about:")) else tab.problems.append("outside: " + r.url))
-        tab.goto(base + "index.html")
-        tab.wait_for_function("[...document.querySelectorAll('.mech-fig')].every((d) => d.mechLive)", timeout=30000)
+    with _live_page.opened(chromium, folder) as tab:
         yield tab
-        browser.close()
 
 
 STATE = """(name) => {
