@@ -4,7 +4,9 @@ Each page of ``book/_build/html`` that holds a figure of `figures.animate` is lo
 headless Chromium. A figure counts as live when its page has wired its controls
 (``mechLive``) and moving one of its sliders changes the drawing; the test prints the count
 of players (``.mech-anim``, moving 3-D views included) and turnable views
-(``.mech-view3d``) and fails on any figure that is still a recording.
+(``.mech-view3d``) and fails on any figure that is still a recording. Measured on the book
+built with the step-built live figures: 24 of 24 players and 15 of 15 views on 16 pages,
+27 to 42 s with the machine's load average near 20 (before them: 10 of 24 and 4 of 15).
 """
 
 import re
