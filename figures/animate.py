@@ -191,8 +191,9 @@ def animate(points, links, *, trace=(), ground=(), blocks=(), lines=(), branches
     title : str
         A visible title above the figure (which linkage it is, when a page shows several).
     live : dict, optional
-        From `figures.live` (``fourbar``, ``slider_crank``, ``none``): the reader may change
-        the linkage in the page, which recomputes it with the JavaScript kernels.
+        From `figures.live` (``fourbar``, ``slider_crank``, ``guide_bar``, ``linkage``,
+        ``none``): the reader may change the linkage in the page, which recomputes it with
+        the JavaScript kernels.
 
     Returns
     -------
@@ -360,7 +361,8 @@ def view3d(points=None, links=(), *, arcs=(), still=(), sphere=False, trace=(), 
     yaw, pitch : float
         The initial view, degrees: turn about the z axis, then tilt towards the reader.
     live : dict, optional
-        From `figures.live` (``spherical_fourbar``, ``none``), as in `animate`.
+        From `figures.live` (``spherical_fourbar``, ``spherical_linkage``, ``hooke``, ``rssr``,
+        ``open_chain``, ``stephenson3``, ``great_circles``, ``none``), as in `animate`.
 
     Returns
     -------

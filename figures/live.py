@@ -8,7 +8,10 @@ positions and its smallest transmission angle with the generated JavaScript kern
 (``book/_static/kernels``, through the layer in ``book/_static/mech``; ``live.js`` wires
 them to the player). The build writes the first state, controls and read-out included,
 so the page is right before any script runs; the kernels load only on pages with a live
-figure. `none` marks a figure whose linkage has no kernel in the page, and says so.
+figure. The linkages built step by step (six-bars, Jansen's leg, the spherical six-bars,
+the RSSR, the open chain, the Stephenson-3 triad) and the great-circle view are described
+by `figures.live_chains`, re-exported here. `none` marks a figure whose linkage has no
+kernel in the page, and says so.
 
 The read-out is written by `readout` here and by ``live.js`` in the page, in the same words
 and to the same digits.
@@ -19,7 +22,8 @@ import math
 
 import numpy as np
 
-__all__ = ["fourbar", "slider_crank", "guide_bar", "hooke", "spherical_fourbar", "none", "readout", "controls"]
+__all__ = ["fourbar", "slider_crank", "guide_bar", "hooke", "spherical_fourbar", "linkage", "spherical_linkage", "rssr",
+           "open_chain", "great_circles", "stephenson3", "none", "readout", "controls"]
 
 CURVE_POINTS = 720  # poses of the coupler curve drawn by a live figure
 
@@ -144,6 +148,9 @@ def spherical_fourbar(linkage, theta, *, names="ABCDP", curve=False):
             "names": list(names), "curve": CURVE_POINTS, "drawCurve": bool(curve)}
 
 
+from figures.live_chains import great_circles, linkage, open_chain, rssr, spherical_linkage, stephenson3  # noqa: E402
+
+
 def none(what):
     """A figure that stays a recording because the page cannot solve `what` yet (six-bars,
     Jansen's linkage, ...: no hand-written layer composes their kernels in the page); the
@@ -165,6 +172,8 @@ def _deg(x):
 def readout(spec):
     """The read-out of a live figure: {"kind", "limits", "transmission"} as the page writes it."""
     kind = spec["type"]
+    if "first" in spec:  # figures.live_chains: computed with the linkage itself
+        return dict(spec["first"])
     if kind == "fourbar":
         from mech.planar import FourBar, grashof
 
@@ -291,19 +300,28 @@ def controls(spec):
     """The HTML of a live figure's controls and read-out, in their first state."""
     if spec["type"] == "none":
         return f'{_CSS}<div class="mech-live mech-live-none">{html.escape(spec["why"])}</div>'
-    values, ranges, step = _values(spec)
+    if "fields" in spec:  # figures.live_chains: [key, label, value, lo, hi, step]
+        fields = [(k, label) for k, label, *_ in spec["fields"]]
+        values = {k: v for k, _, v, *_ in spec["fields"]}
+        ranges = {k: (lo, hi) for k, _, _, lo, hi, _ in spec["fields"]}
+        steps = {k: s for k, *_, s in spec["fields"]}
+    else:
+        values, ranges, step = _values(spec)
+        fields, steps = _FIELDS[spec["type"]], {k: step for k in values}
     out = readout(spec)
     rows = []
-    for key, label in _FIELDS[spec["type"]]:
+    for key, label in fields:
         if key not in values:
             continue
         lo, hi = ranges[key]
+        step = steps[key]
         v = f"{values[key]:.6g}"
         rows.append(f'<label class="mech-live-field">{html.escape(label)} '
                     f'<input type="number" data-k="{key}" value="{v}" step="any" size="6">'
                     f'<input type="range" data-k="{key}" min="{lo:.6g}" max="{hi:.6g}" step="{step:.3g}" value="{v}" '
                     f'aria-label="{html.escape(label)}"></label>')
-    branch = f'<button type="button" class="mech-branch">branch {spec["branch"]:+d}</button>'
+    branch = ("" if spec["type"] in ("chain", "circles", "stephenson3") else
+              f'<button type="button" class="mech-branch">branch {spec["branch"]:+d}</button>')
     text = (f'<span class="mech-live-type">{html.escape(out["kind"])}</span> \u00b7 '
             f'<span class="mech-live-limits">{html.escape(out["limits"])}</span> \u00b7 '
             f'<span class="mech-live-gamma">{html.escape(out["transmission"])}</span>')

@@ -59,3 +59,24 @@ def test_bad_input_is_refused_with_the_argument_named():
         live.slider_crank(30, 100, 20, [np.nan])
     with pytest.raises(ValueError, match="`a` < `d`"):
         live.guide_bar(400, 300, [0.0])
+
+
+def test_step_built_linkage_spec_and_readout():
+    """figures.live_chains: the Watt six-bar's fields are its five lengths; its smallest
+    transmission angle is at C, where the first loop (20, 50, 45, 50) has it by the law of
+    cosines with BD = d - a = 30."""
+    from mech.planar import watt_six_bar
+
+    spec = live.linkage(watt_six_bar(), np.radians([0.0, 90.0]))
+    assert [f[2] for f in spec["fields"]] == [20.0, 50.0, 45.0, 24.0, 18.0]
+    gamma = np.degrees(np.arccos((50.0 ** 2 + 45.0 ** 2 - 30.0 ** 2) / (2 * 50.0 * 45.0)))
+    assert live.readout(spec)["transmission"].startswith(f"smallest transmission angle {gamma:.1f}° (joints C, G;")
+    out = animate({"A": 0, "B": 20 * np.exp(1j * np.radians([0.0, 90.0]))}, [("A", "B")], live=spec).data
+    assert 'type="range" data-k="L4"' in out and 'class="mech-branch"' in out
+
+
+def test_step_built_bad_input_is_refused():
+    with pytest.raises(ValueError, match="`sweep`"):
+        live.open_chain(0.4, 0.08, np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="`theta`"):
+        live.rssr(dict(l1=1.0, l2=4.0, l3=2.0, s0=0.5, s3=0.8, h0=3.0, lam=1.0), [np.inf])

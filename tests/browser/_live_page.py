@@ -7,6 +7,7 @@ on its sphere; next to it, ``_static/mech`` and ``_static/kernels`` as the book 
 """
 
 import shutil
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -71,3 +72,23 @@ def write(folder):
     page.write_text('<!DOCTYPE html><html lang="en" data-content_root="./"><head><meta charset="utf-8">'
                     f"<title>Live figures</title></head><body>{body}</body></html>", encoding="utf-8")
     return page
+
+
+@contextmanager
+def opened(chromium, folder):
+    """A Chromium tab on the page in `folder` (served locally), once every live figure is
+    wired; ``tab.problems`` collects errors and any request for something outside."""
+    import _crawl
+    from playwright.sync_api import sync_playwright
+
+    with _crawl.serve(folder) as base, sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=chromium)
+        tab = browser.new_page(viewport={"width": 1000, "height": 2600})
+        tab.problems = []
+        tab.on("console", lambda m: tab.problems.append(m.text) if m.type == "error" and "favicon" not in m.location.get("url", "") else None)
+        tab.on("pageerror", lambda e: tab.problems.append(str(e)))
+        tab.on("request", lambda r: None if r.url.startswith((base, "data:", "about:")) else tab.problems.append("outside: " + r.url))
+        tab.goto(base + "index.html")
+        tab.wait_for_function("[...document.querySelectorAll('.mech-fig')].every((d) => d.mechLive)", timeout=30000)
+        yield tab
+        browser.close()

@@ -15,7 +15,6 @@ import json
 import numpy as np
 import pytest
 
-import _crawl
 import _live_page
 
 FRAME_P95_MS = {"fourbar": 8.0, "spherical": 16.0}
@@ -23,21 +22,10 @@ FRAME_P95_MS = {"fourbar": 8.0, "spherical": 16.0}
 
 @pytest.fixture(scope="module")
 def page(chromium, tmp_path_factory):
-    from playwright.sync_api import sync_playwright
-
     folder = tmp_path_factory.mktemp("live")
     _live_page.write(folder)
-    with _crawl.serve(folder) as base, sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=chromium)
-        tab = browser.new_page(viewport={"width": 1000, "height": 2600})
-        tab.problems = []
-        tab.on("console", lambda m: tab.problems.append(m.text) if m.type == "error" and "favicon" not in m.location.get("url", "") else None)
-        tab.on("pageerror", lambda e: tab.problems.append(str(e)))
-        tab.on("request", lambda r: None if r.url.startswith((base, "data:", "about:")) else tab.problems.append("outside: " + r.url))
-        tab.goto(base + "index.html")
-        tab.wait_for_function("[...document.querySelectorAll('.mech-fig')].every((d) => d.mechLive)", timeout=30000)
+    with _live_page.opened(chromium, folder) as tab:
         yield tab
-        browser.close()
 
 
 def state(page, name):

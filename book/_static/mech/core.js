@@ -145,3 +145,17 @@ export function keepPromise(out) {
   }
   return out;
 }
+
+// --- 3-D views ----------------------------------------------------------------------------
+
+/** The point of the unit sphere under the user point (x, y) of a 3-D view, on the reader's
+ *  side: the inverse of the player's projection with its yaw, pitch and scale K. */
+export function unproject([yaw, pitch, K], x, y) {
+  let X = x / K, Y = -y / K, w = Math.sqrt(Math.max(0, 1 - X * X - Y * Y));
+  const n = Math.hypot(X, Y, w);
+  X /= n; Y /= n; w /= n;
+  const cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
+  // the projection: X = x', Y = sp y' + cp z, w = sp z - cp y', with x' = cy p0 + sy p1, y' = -sy p0 + cy p1
+  const yv = sp * Y - cp * w, z = cp * Y + sp * w;
+  return [cy * X - sy * yv, sy * X + cy * yv, z];
+}

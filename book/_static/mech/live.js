@@ -6,21 +6,33 @@
 // the limit positions and the smallest transmission angle, and the player draws them.
 // Written by hand; the formulas are in the kernels.
 
+import { unproject } from "./core.js";
+
 const deg = (x) => (x * 180 / Math.PI).toFixed(1).replace("-", "\u2212") + "\u00b0";
 const DEG = Math.PI / 180;
 
 /** Wire the live figure `div` (data `d`, player hooks `api`). */
 export async function attach(div, d, api) {
   const spec = d.live;
+  const chains = { linkage: "planarLinkage", sphlinkage: "sphericalLinkage", rssr: "rssr", chain: "openChain",
+    circles: "greatCircles", stephenson3: "stephenson3" };
   const kind = { fourbar: planarFourBar, slidercrank: sliderCrank, guidebar: guideBar, sphfourbar: sphericalFourBar,
-    hooke: hookeJoint }[spec.type];
+    hooke: hookeJoint }[spec.type] || (spec.type in chains && "chains");
   if (!kind) return;
+  if (kind === "chains") { // linkages built step by step (live_chains.js), the triad (live_triad.js)
+    const m = Object.assign({}, await import("./live_chains.js"), spec.type === "stephenson3" ? await import("./live_triad.js") : {});
+    return wire(div, d, api, m[chains[spec.type]](div, d, api, spec), m);
+  }
   const layer = Object.assign({}, await import(spec.type === "sphfourbar" ? "./spherical.js"
     : spec.type === "hooke" ? "./core.js" : "./planar.js"));
   if (spec.type === "hooke") layer.kernel = await import("../kernels/hooke.js");
   if (spec.type === "slidercrank" || spec.type === "guidebar") layer.kernel = await import("../kernels/slider_crank.js");
   if (spec.type === "guidebar") layer.core = await import("./core.js");
-  const fig = kind(div, d, api, spec, layer);
+  wire(div, d, api, kind(div, d, api, spec, layer), layer);
+}
+
+/** The controls, handles and read-out of the figure object `fig` of the player `api`. */
+function wire(div, d, api, fig, layer) {
   const box = div.querySelector(".mech-live");
   const msg = box.querySelector(".mech-live-msg");
   const stats = { times: [], updates: 0, parts: [] };
@@ -32,7 +44,8 @@ export async function attach(div, d, api) {
       const v = fig.shown()[input.dataset.k];
       if (v !== undefined && document.activeElement !== input) input.value = +v.toPrecision(6);
     });
-    box.querySelector(".mech-branch").textContent = "branch " + (fig.state.branch > 0 ? "+1" : "\u22121");
+    const button = box.querySelector(".mech-branch");
+    if (button) button.textContent = "branch " + (fig.state.branch > 0 ? "+1" : "\u22121");
   }
   // One change: recompute with the kernels, draw, or say why not and keep the last good state.
   function update(change) {
@@ -80,7 +93,8 @@ export async function attach(div, d, api) {
       update(fig.fromField(input.dataset.k, v));
     });
   });
-  box.querySelector(".mech-branch").addEventListener("click", () => update({ branch: -fig.state.branch }));
+  const button = box.querySelector(".mech-branch");
+  if (button) button.addEventListener("click", () => update({ branch: -fig.state.branch }));
   // A pose the player passes without a change still gets its message (it may not assemble).
   const svg = api.svg;
   const handles = document.createElementNS("http://www.w3.org/2000/svg", "g");
@@ -448,18 +462,6 @@ const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
 const cross = (u, v) => [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
 const angleOf = (u, v) => Math.atan2(Math.hypot(...cross(u, v)), dot(u, v));
 const tangent = (at, to) => { const k = dot(at, to); return [to[0] - k * at[0], to[1] - k * at[1], to[2] - k * at[2]]; };
-
-/** The point of the unit sphere under the user point (x, y) of a 3-D view, on the reader's
- *  side: the inverse of the player's projection with its yaw, pitch and scale K. */
-function unproject([yaw, pitch, K], x, y) {
-  let X = x / K, Y = -y / K, w = Math.sqrt(Math.max(0, 1 - X * X - Y * Y));
-  const n = Math.hypot(X, Y, w);
-  X /= n; Y /= n; w /= n;
-  const cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
-  // the projection: X = x', Y = sp y' + cp z, w = sp z - cp y', with x' = cy p0 + sy p1, y' = -sy p0 + cy p1
-  const yv = sp * Y - cp * w, z = cp * Y + sp * w;
-  return [cy * X - sy * yv, sy * X + cy * yv, z];
-}
 
 /** The input angles of SphericalFourBar.couplerCurve(n): n over the full turn, or spread
  *  over the assembly intervals with a NaN between intervals. */
