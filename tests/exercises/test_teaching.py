@@ -6,7 +6,7 @@ mpmath (not `FourBar`), the rolling mill's largest thickness of 2-20 from its ge
 unit conversions by mpmath's own degree constant. The exports are checked against the
 structure of their formats (Moodle's XML question format, QTI 1.2's elements and IMS
 content packaging) and, for the PDFs, by reading them back with poppler's pdftotext and
-rendering a page with pdftoppm.
+rendering every page of every file with pdftoppm.
 """
 
 import base64
@@ -240,8 +240,10 @@ def check_moodle(path, students, numbers):
 
 
 def check_qti(path, students, numbers):
-    """QTI 1.2 in an IMS content package: the manifest's files exist, the items hold the
-    required elements, identifiers are unique, the figures referred to are in the zip."""
+    """QTI 1.2 in an IMS content package, in Canvas's profile: the manifest's files exist;
+    a group (section drawing one item) per exercise and answer, each with an item per
+    student, a ``numerical_question`` whose value and margin are the key's and ``check``'s
+    tolerance; the figures referred to are PNGs in the zip; identifiers are unique."""
     with zipfile.ZipFile(path) as z:
         names = set(z.namelist())
         assert "imsmanifest.xml" in names
@@ -261,7 +263,9 @@ def check_qti(path, students, numbers):
         assert assessment.get("ident") and assessment.get("title")
         idents = [assessment.get("ident")]
         sections = assessment.findall("section")
-        assert [s.get("title") for s in sections] == [f"Exercise {n}" for n in numbers]
+        exercises = [s.get("title").split(":")[0] for s in sections]       # "Exercise N: key"
+        assert list(dict.fromkeys(exercises)) == [f"Exercise {n}" for n in numbers]
+        checked = 0
         for s in sections:
             idents.append(s.get("ident"))
             assert s.find("selection_ordering/selection/selection_number").text == "1"
@@ -269,24 +273,36 @@ def check_qti(path, students, numbers):
             assert len(items) == students
             for item in items:
                 idents.append(item.get("ident"))
+                meta = {f.findtext("fieldlabel"): f.findtext("fieldentry") for f in item.iter("qtimetadatafield")}
+                assert meta["question_type"] == "numerical_question"
                 pres = item.find("presentation")
                 text = pres.find("material/mattext").text
-                src = re.search(r'src="([^"]+)"', text).group(1)
-                assert f"mech_quiz/{src}" in names and _png(z.read(f"mech_quiz/{src}"))
-                responses = pres.findall("response_num")
-                assert responses and all(r.find("render_fib") is not None for r in responses)
-                rids = [r.get("ident") for r in responses]
-                assert len(rids) == len(set(rids))
+                src = re.search(r'src="\$IMS-CC-FILEBASE\$/([^"]+)"', text).group(1)
+                assert src in names and _png(z.read(src))
+                resp = pres.findall("response_str")
+                assert [r.get("ident") for r in resp] == ["response1"]
+                assert resp[0].find("render_fib").get("fibtype") == "Decimal"
                 proc = item.find("resprocessing")
                 assert proc.find("outcomes/decvar").get("varname") == "SCORE"
-                conds = proc.findall("respcondition")
-                assert len(conds) == len(rids)
-                for c, rid in zip(conds, rids):
-                    lo, hi = c.find("conditionvar/vargte"), c.find("conditionvar/varlte")
-                    assert lo.get("respident") == rid == hi.get("respident") and float(lo.text) < float(hi.text)
-                    assert c.find("setvar").get("action") == "Add"
-                assert item.find("itemfeedback/flow_mat/material/mattext").text.strip()
+                either = proc.find("respcondition[@continue='No']/conditionvar/or")
+                exact = float(either.find("varequal").text)
+                lo, hi = float(either.find("and/vargte").text), float(either.find("and/varlte").text)
+                assert lo < exact < hi
+                if checked < 40:                    # against the key, for the first items
+                    number, key, seed = _item_ident(item.get("ident"))
+                    q = next(q for q in answer_quantities(solved_variant(get(number), seed)[1]) if q.key == key)
+                    assert exact == pytest.approx(q.value, rel=1e-5, abs=1e-9)
+                    assert hi - exact == pytest.approx(q.tolerance(), rel=1e-4, abs=1e-9)
+                    checked += 1
+                assert item.find("itemfeedback[@ident='general_fb']/flow_mat/material/mattext").text.strip()
         assert len(idents) == len(set(idents))
+
+
+def _item_ident(ident):
+    """(exercise number, answer key, seed) of an item ident ``item_<number>_<key>_<seed>``."""
+    rest, seed = ident[len("item_"):].rsplit("_", 1)
+    number, key = rest.split("_", 1)
+    return number, key, int(seed)
 
 
 def _pdftext(path):
@@ -322,11 +338,20 @@ def check_pdfs(out, students):
             verdicts = check_answers(get(it.number), st.seed, given)
             assert all(v.right for v in verdicts), (it.number, [v.line() for v in verdicts])
     assert "seed" in _pdftext(out / "class_list.pdf")
-    subprocess.run(["pdftoppm", "-r", "40", "-png", "-f", "1", "-l", "1", str(out / f"{students[0].label}.pdf"),
-                    str(out / "page")], check=True)
-    img = Image.open(next(out.glob("page*.png"))).convert("L")
-    dark = sum(img.histogram()[:200])
-    assert dark > 0.01 * img.width * img.height                # text and a figure, not a blank page
+    pdfs = sorted(out.glob("*.pdf"))
+    assert len(pdfs) == 2 * len(students) + 1
+    pages = out / "pages"
+    pages.mkdir(exist_ok=True)
+    for pdf in pdfs:                                # every page of every file, as a picture
+        subprocess.run(["pdftoppm", "-r", "24", "-png", str(pdf), str(pages / pdf.stem)], check=True)
+        shots = sorted(pages.glob(f"{pdf.stem}-*.png"))
+        assert shots, pdf.name
+        for shot in shots:
+            img = Image.open(shot).convert("L")
+            dark = sum(img.histogram()[:200])
+            assert dark > 0.002 * img.width * img.height, shot.name     # ink on the page, not blank
+        first = Image.open(shots[0]).convert("L")
+        assert sum(first.histogram()[:200]) > 0.01 * first.width * first.height, pdf.name
 
 
 needs_poppler = pytest.mark.skipif(shutil.which("pdftotext") is None or shutil.which("pdftoppm") is None,
