@@ -350,8 +350,9 @@ def check_pdfs(out, students):
             img = Image.open(shot).convert("L")
             dark = sum(img.histogram()[:200])
             assert dark > 0.002 * img.width * img.height, shot.name     # ink on the page, not blank
-        first = Image.open(shots[0]).convert("L")
-        assert sum(first.histogram()[:200]) > 0.01 * first.width * first.height, pdf.name
+        if pdf.stem in {st.label for st in students}:            # a sheet's first page holds a figure
+            first = Image.open(shots[0]).convert("L")
+            assert sum(first.histogram()[:200]) > 0.01 * first.width * first.height, pdf.name
 
 
 needs_poppler = pytest.mark.skipif(shutil.which("pdftotext") is None or shutil.which("pdftoppm") is None,

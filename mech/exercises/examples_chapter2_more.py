@@ -1,0 +1,243 @@
+"""More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5) and the
+quick-return crank-rocker designed from a crank or a coupler (E2-17, E2-18).
+
+The same kind of records as :mod:`mech.exercises.examples_chapter2`: the example's numbers
+(or, where the textbook gives none, the numbers its page in this book chose, with the
+crank at a round angle) as defaults, a
+solver on :mod:`mech.planar` that works the example by the textbook's method, and a sampler
+of other numbers. Examples 2-4 and 2-5 locate the instant centres (Kennedy's theorem) and
+read the angular velocities off them; examples 2-17 and 2-18 design a crank-rocker from its
+time ratio, the rocker's length and swing, and one more length, by the analytic model
+(2-46) of §2.4 III.
+
+Examples
+--------
+>>> import math
+>>> from mech.exercises import get
+>>> s = get("E2-4").solve(theta1=math.degrees(0.7))     # the crank at 0.7 rad
+>>> round(float(s["ω3"].value), 6)
+-0.120816
+>>> round(float(get("E2-17").solve()["coupler BC"].value), 2)
+73.67
+"""
+
+from __future__ import annotations
+
+import math
+
+from mech._validate import positive_length, real_number
+from mech.exercises import _figures
+from mech.exercises._core import Parameter, Part, Result, Solution
+from mech.exercises.examples_chapter2 import _example, _int
+
+__all__ = ["EXAMPLES", "draw_example"]
+
+_DEG = math.pi / 180.0
+#: A centre farther than this (in link lengths) is taken as at infinity: the lines that
+#: locate it are nearly parallel, and a sheet would print a meaningless large number.
+_FAR = 50.0
+
+
+def _crank_angle(p):
+    theta = real_number("theta1", p["theta1"])
+    w1 = real_number("omega1", p["omega1"])
+    if w1 == 0.0:
+        raise ValueError("Expected a turning crank, `omega1` != 0, got 0.0")
+    return theta, w1
+
+
+def _off_axis(rng):
+    """A crank angle in steps of 5°, never a multiple of 90°: at 0° and 180° crank and rod
+    of a slider-crank are in line (the slider stands still), which makes a dull variant."""
+    return _int(rng, 5, 85, 5) + 90.0 * int(rng.integers(0, 4))
+
+
+def _near(name, z, scale):
+    """``z`` (complex), or ValueError when the centre is at infinity or nearly so."""
+    if z is None or not math.isfinite(abs(z)) or abs(z) > _FAR * scale:
+        raise ValueError(f"Expected the instant centre {name} at a finite place, got it at or near infinity")
+    return z
+
+
+# ----------------------------------------------------------------------------- E2-4
+def _solve_e2_4(p):
+    from mech.planar import FourBar, centre_velocities, grashof, instant_centres
+
+    a, b, c, d = (positive_length(n, p[n]) for n in "abcd")
+    theta, w1 = _crank_angle(p)
+    kind = grashof(a, b, c, d)
+    if kind.kind != "crank-rocker" or kind.change_point:
+        raise ValueError(f"Expected `a`, `b`, `c`, `d` of a crank-rocker with the crank `a`, got a={a!r}, b={b!r}, "
+                         f"c={c!r}, d={d!r} ({kind.kind})")
+    pose = FourBar(a, b, c, d).solve(theta * _DEG, order=1, omega=w1)
+    centres = instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): complex(d)})
+    p13 = _near("P13", None if centres[1, 3].at_infinity else complex(centres[1, 3].point), d)
+    p24 = _near("P24", None if centres[2, 4].at_infinity else complex(centres[2, 4].point), d)
+    motion = centre_velocities(centres, frame=4, driver=1, omega=w1)
+    how = "Kennedy's theorem: three centres of three links lie on one line"
+    return Solution("E2-4", EXAMPLES_BY_NUMBER["E2-4"].title, dict(p), (
+        "A at the origin, D on +x; C above the line AD; rates counter-clockwise positive.",
+        "P14 = A, P12 = B, P23 = C and P34 = D are the joints.",), (
+        Part("Instant centres", (
+            Result("P13 (x)", p13.real, "mm", "P13 = BC ∩ AD: on the frame line, x from A"),
+            Result("P24 (x)", p24.real, "mm", "P24 = AB ∩ CD"), Result("P24 (y)", p24.imag, "mm", "P24 = AB ∩ CD"),
+        ), ("P13 is the common point of crank and rocker; P24 that of coupler and frame.",)),
+        Part("Angular velocities", (
+            Result("ω2", float(motion.omega[2]), "rad/s", "ω2 = ω1 P12P14/P12P24 (" + how + ")"),
+            Result("ω3", float(motion.omega[3]), "rad/s", "ω3 = ω1 P13P14/P13P34"),
+        ), ("Link 3 turns the same way as the crank when P13 lies outside AD.",)),
+    ))
+
+
+def _sample_e2_4(rng):
+    return {"a": _int(rng, 8, 14), "b": _int(rng, 34, 46), "c": _int(rng, 25, 35), "d": _int(rng, 30, 40),
+            "theta1": _off_axis(rng), "omega1": -_int(rng, 1, 10)}
+
+
+# ----------------------------------------------------------------------------- E2-5
+def _solve_e2_5(p):
+    from mech.planar import SliderCrank, centre_velocities, instant_centres, prismatic
+
+    a, b = positive_length("a", p["a"]), positive_length("b", p["b"])
+    theta, w1 = _crank_angle(p)
+    if not b > a:
+        raise ValueError(f"Expected `b` > `a` so that the crank turns fully, got a={a!r}, b={b!r}")
+    pose = SliderCrank(a, b).solve(theta * _DEG, order=1, omega=w1)
+    centres = instant_centres(4, {(1, 4): 0j, (1, 2): pose.B, (2, 3): pose.C, (3, 4): prismatic(1.0)})
+    p13 = _near("P13", None if centres[1, 3].at_infinity else complex(centres[1, 3].point), b)
+    motion = centre_velocities(centres, frame=4, driver=1, omega=w1)
+    v3 = complex(motion.point_velocity(3, pose.C)).real
+    return Solution("E2-5", EXAMPLES_BY_NUMBER["E2-5"].title, dict(p), (
+        "A at the origin, the guide along +x through A (centric); B above the guide at small "
+        "crank angles; rates counter-clockwise positive, the slider's velocity positive along +x.",
+        "P34 lies at infinity, at right angles to the guide.",), (
+        Part("Instant centres", (
+            Result("P13 (y)", p13.imag, "mm", "P13 = BC ∩ the line through A at right angles to the guide"),
+        ), ()),
+        Part("Velocities", (
+            Result("ω2", float(motion.omega[2]), "rad/s", "ω2 = ω1 P12P14/P12P24"),
+            Result("v3", v3, "mm/s", "crank and slider share the velocity of P13: v3 = ω1 P14P13, eq. (F35)"),
+        ), ()),
+    ))
+
+
+def _sample_e2_5(rng):
+    return {"a": _int(rng, 20, 40), "b": _int(rng, 70, 120, 5), "theta1": _off_axis(rng),
+            "omega1": _int(rng, 1, 10)}
+
+
+# ----------------------------------------------------------------------------- E2-17, E2-18
+def _design(number, p, given):
+    from mech.planar.synthesis import quick_return_crank_rocker
+
+    K, c = real_number("K", p["K"]), positive_length("c", p["c"])
+    phi = real_number("phi", p["phi"])
+    if not 1.0 < K < 3.0:
+        raise ValueError(f"Expected a time ratio 1 < `K` < 3, got {K!r}")
+    if not 0.0 < phi < 180.0:
+        raise ValueError(f"Expected a swing 0 < `phi` < 180 degrees, got {phi!r}")
+    length = positive_length(given, p[given])
+    q = quick_return_crank_rocker(K, c, phi * _DEG, **({"crank": length} if given == "a" else {"coupler": length}))
+    m = q.check()
+    a, b, _, d = q.lengths
+    how = "the model of eq. (2-46): A on the circle through C1 and C2 that sees C1C2 under θ"
+    found = (Result("coupler BC", b, "mm", how),) if given == "a" else (Result("crank AB", a, "mm", how),)
+    return Solution(number, EXAMPLES_BY_NUMBER[number].title, dict(p), (
+        "The frame pivot D on the side of A of the chord C1C2 (the textbook's family).",), (
+        Part("Design", found + (
+            Result("frame AD", d, "mm", how), Result("angle α = ∠AOC1", q.alpha, "rad", "fixed by the given length"),
+            Result("extreme-position angle θ", math.pi * (K - 1.0) / (K + 1.0), "rad", "θ = 180° (K − 1)/(K + 1)"),
+        ), ()),
+        Part("Check by analysis", (
+            Result("minimum transmission angle γ_min", m.min_transmission_angle, "rad",
+                   "`FourBar` over a crank turn"),
+        ), (f"Simulated over a crank turn: K = {m.time_ratio:.6g}, swing {math.degrees(m.output_range):.6g}°.",)),
+    ))
+
+
+def _sample_task(rng):
+    return {"K": _int(rng, 110, 150, 5) / 100.0, "c": _int(rng, 80, 120, 5), "phi": _int(rng, 30, 60, 5)}
+
+
+def _sample_e2_17(rng):
+    p = _sample_task(rng)
+    top = p["c"] * math.sin(p["phi"] * _DEG / 2)            # a < c sin(φ/2)
+    return p | {"a": _int(rng, 0.3 * top, 0.95 * top, 0.5)}
+
+
+def _sample_e2_18(rng):
+    p = _sample_task(rng)
+    low = p["c"] * math.sin(p["phi"] * _DEG / 2)            # c sin(φ/2) < b < c sin(φ/2)/sin(θ/2)
+    high = low / math.sin(math.pi * (p["K"] - 1) / (p["K"] + 1) / 2)
+    return p | {"b": _int(rng, low + 0.05 * (high - low), min(high, 4 * low), 0.5)}
+
+
+# ----------------------------------------------------------------------------- records
+_TASK = ("a crank-rocker whose time ratio is K = {K}, whose rocker CD = {c} mm swings through "
+         "φ = {phi}°, and ")
+EXAMPLES = (
+    _example("E2-4", "Worked example 2-4: angular velocities of a four-bar by instant centres",
+             "In the four-bar ABCD the crank AB = {a} mm (link 1), the coupler BC = {b} mm (link 2), the "
+             "rocker CD = {c} mm (link 3) and the frame AD = {d} mm (link 4). The crank is at θ1 = {theta1}° "
+             "from AD and turns at ω1 = {omega1} rad/s (negative: clockwise). Locate the instant centres "
+             "P13 and P24 and find from them ω2 and ω3 (counter-clockwise positive).",
+             (Parameter("a", 10.0), Parameter("b", 40.0), Parameter("c", 30.0), Parameter("d", 35.0),
+              Parameter("theta1", 40.0, "deg"), Parameter("omega1", -3.0, "rad/s")),
+             _solve_e2_4, _sample_e2_4, tag="A"),     # the text gives no dimensions: they are chosen
+    _example("E2-5", "Worked example 2-5: a slider-crank's velocities by instant centres",
+             "In the centric slider-crank ABC the crank AB = {a} mm (link 1) and the rod BC = {b} mm "
+             "(link 2) drive the slider C (link 3) along a guide through A. The crank is at θ1 = {theta1}° "
+             "from the guide and turns at ω1 = {omega1} rad/s (counter-clockwise). Locate the instant centre "
+             "P13 and find ω2 (counter-clockwise positive) and the slider's velocity v3 (positive along the "
+             "guide, away from A at θ1 = 0).",
+             (Parameter("a", 30.0), Parameter("b", 80.0), Parameter("theta1", 45.0, "deg"),
+              Parameter("omega1", 2.0, "rad/s")), _solve_e2_5, _sample_e2_5, tag="A"),
+    _example("E2-17", "Worked example 2-17: a quick-return crank-rocker with a given crank",
+             "Design " + _TASK + "whose crank AB = {a} mm: find the coupler BC, the frame AD and the "
+             "minimum transmission angle γ_min.",
+             (Parameter("K", 1.3, ""), Parameter("c", 100.0), Parameter("phi", 40.0, "deg"), Parameter("a", 31.4)),
+             lambda p: _design("E2-17", p, "a"), _sample_e2_17),
+    _example("E2-18", "Worked example 2-18: a quick-return crank-rocker with a given coupler",
+             "Design " + _TASK + "whose coupler BC = {b} mm: find the crank AB, the frame AD and the "
+             "minimum transmission angle γ_min.",
+             (Parameter("K", 1.3, ""), Parameter("c", 100.0), Parameter("phi", 40.0, "deg"), Parameter("b", 73.67)),
+             lambda p: _design("E2-18", p, "b"), _sample_e2_18),
+)
+
+#: The examples by number (the solvers read their titles here).
+EXAMPLES_BY_NUMBER = {ex.number: ex for ex in EXAMPLES}
+
+
+# ----------------------------------------------------------------------------- figures
+def draw_example(number, p, fig):
+    """Draw the figure of worked example ``number`` with the givens ``p`` into ``fig``
+    (Matplotlib; the givens only, never an answer)."""
+    from mech.exercises import _figures as F
+
+    ax = fig.add_subplot(111)
+    if number == "E2-4":
+        lk, th = F._fourbar(p["a"], p["b"], p["c"], p["d"], p["theta1"])
+        F.linkage(ax, lk, th, title=f"four-bar (a, b, c, d) = ({p['a']:g}, {p['b']:g}, {p['c']:g}, {p['d']:g}) mm, "
+                                    f"θ1 = {p['theta1']:.4g}°")
+    elif number == "E2-5":
+        F.linkage(ax, F._slider_crank(p["a"], p["b"], 0.0), p["theta1"] * _DEG,
+                  title=f"slider-crank, a = {p['a']:g} mm, b = {p['b']:g} mm, θ1 = {p['theta1']:.4g}°")
+    elif number in ("E2-17", "E2-18"):
+        c, phi = p["c"], p["phi"] * _DEG
+        ax.plot([0.0, c * math.cos(math.pi / 2 + phi / 2)], [0.0, c * math.sin(math.pi / 2 + phi / 2)], "r-", lw=2)
+        ax.plot([0.0, c * math.cos(math.pi / 2 - phi / 2)], [0.0, c * math.sin(math.pi / 2 - phi / 2)], "r-", lw=2)
+        ax.plot([0.0], [0.0], "k^", ms=10)
+        ax.annotate("D", (0.0, 0.0), textcoords="offset points", xytext=(6, -12))
+        for name, s in (("C1", 1), ("C2", -1)):
+            ax.annotate(name, (c * math.cos(math.pi / 2 + s * phi / 2), c * math.sin(math.pi / 2 + s * phi / 2)),
+                        textcoords="offset points", xytext=(4, 4))
+        ax.set_aspect("equal")
+        ax.set_axis_off()
+        given = f"AB = {p['a']:g} mm" if number == "E2-17" else f"BC = {p['b']:g} mm"
+        ax.set_title(f"rocker CD = {c:g} mm at its limit positions, φ = {p['phi']:g}°, K = {p['K']:g}, {given}")
+    else:
+        raise ValueError(f"Expected `number` to be a worked example with a figure, got {number!r}")
+
+
+for _ex in EXAMPLES:
+    _figures.EXAMPLE_DRAWERS[_ex.number] = draw_example

@@ -1,0 +1,163 @@
+"""Worked examples 2-4, 2-5, 2-17 and 2-18 with variants, each checked by another route.
+
+Oracles: for E2-4 and E2-5 the linkage closed in mpmath at 50 digits (the four-bar's C as
+the intersection of two circles, to the left of B->D; the slider's place by Pythagoras),
+its angles differentiated numerically (mpmath.diff) for the rates, and the instant centres
+as intersections of lines through the joints; for E2-17 and E2-18 the design put back into
+the law of cosines at its two limit positions (the swing, K and the transmission angle
+must be the givens). At the defaults: the angular velocities the book's instant-centre page
+recomputed independently (E2-4, E2-5, at the crank angles it chose) and the textbook's
+corrected numbers of examples 2-17 and 2-18 (b = 73.67 mm, d = 95.98 mm, α = 28.50°).
+"""
+
+import math
+
+import mpmath
+import pytest
+
+from mech.exercises import EXAMPLES, get
+from mech.exercises._answers import answers
+from mech.exercises._sheet import solved_variant
+from tests.exercises.test_worked_example_variants import _fourbar_mp
+
+mpmath.mp.dps = 50
+SEEDS = [0, 1, 2, 3, 5, 8, 13, 21]
+
+
+def _keys(number, params):
+    return {a[0]: a[2] for a in answers(get(number).solve(params))}
+
+
+def _six(x):
+    """``x`` to the six significant digits the page prints."""
+    return float(f"{x:.6g}")
+
+
+def _meet(p1, p2, q1, q2):
+    """The point where line p1p2 meets line q1q2 (complex mpmath numbers)."""
+    d1, d2 = p2 - p1, q2 - q1
+    cross = lambda u, v: u.real * v.imag - u.imag * v.real
+    return p1 + d1 * cross(q1 - p1, d2) / cross(d1, d2)
+
+
+# ----------------------------------------------------------------------------- E2-4
+def _fourbar_rates(p):
+    a, b, c, d = (mpmath.mpf(p[k]) for k in "abcd")
+    w1 = mpmath.mpf(p["omega1"])
+
+    def joints(t):
+        B, D = a * mpmath.expj(t), mpmath.mpc(d, 0)
+        s = abs(D - B)
+        along = (b * b - c * c + s * s) / (2 * s)                  # from B towards D
+        across = mpmath.sqrt(b * b - along * along)
+        u = (D - B) / s
+        return B, B + u * (along + 1j * across)                    # C to the left of B->D
+
+    angle = lambda z: mpmath.atan2(z.imag, z.real)
+    t0 = mpmath.radians(mpmath.mpf(p["theta1"]))
+    B, C = joints(t0)
+    D = mpmath.mpc(d, 0)
+    return {"omega2": w1 * mpmath.diff(lambda t: angle(joints(t)[1] - joints(t)[0]), t0),
+            "omega3": w1 * mpmath.diff(lambda t: angle(joints(t)[1] - D), t0),
+            "P13": _meet(B, C, mpmath.mpc(0), D), "P24": _meet(mpmath.mpc(0), B, C, D)}
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_4_against_the_closed_loop(seed):
+    p = get("E2-4").defaults if seed is None else get("E2-4").variant(seed)
+    got, ref = _keys("E2-4", p), _fourbar_rates(p)
+    assert got["omega2"] == pytest.approx(float(ref["omega2"]), rel=1e-9, abs=1e-12)
+    assert got["omega3"] == pytest.approx(float(ref["omega3"]), rel=1e-9, abs=1e-12)
+    assert got["P13_x"] == pytest.approx(float(ref["P13"].real), rel=1e-9, abs=1e-9)
+    assert float(abs(ref["P13"].imag)) < 1e-30
+    assert (got["P24_x"], got["P24_y"]) == pytest.approx((float(ref["P24"].real), float(ref["P24"].imag)),
+                                                         rel=1e-9, abs=1e-9)
+
+
+@pytest.mark.parametrize("theta, omega2, omega3", [(0.7, 0.682725, -0.120816), (2.0, -0.213381, -1.06914),
+                                                   (4.0, -0.764037, -0.0701034)])
+def test_e2_4_the_book_page_numbers(theta, omega2, omega3):
+    got = _keys("E2-4", get("E2-4").params({"theta1": math.degrees(theta)}))
+    assert (_six(got["omega2"]), _six(got["omega3"])) == (omega2, omega3)
+
+
+# ----------------------------------------------------------------------------- E2-5
+def _slider_rates(p):
+    a, b, w1 = (mpmath.mpf(p[k]) for k in ("a", "b", "omega1"))
+    x = lambda t: a * mpmath.cos(t) + mpmath.sqrt(b * b - (a * mpmath.sin(t)) ** 2)
+    rod = lambda t: mpmath.atan2(-a * mpmath.sin(t), mpmath.sqrt(b * b - (a * mpmath.sin(t)) ** 2))
+    t0 = mpmath.radians(mpmath.mpf(p["theta1"]))
+    B, C = a * mpmath.expj(t0), mpmath.mpc(x(t0), 0)
+    return {"v_C": w1 * mpmath.diff(x, t0), "omega2": w1 * mpmath.diff(rod, t0),
+            "P13": _meet(B, C, mpmath.mpc(0), mpmath.mpc(0, 1))}
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_5_against_pythagoras(seed):
+    p = get("E2-5").defaults if seed is None else get("E2-5").variant(seed)
+    got, ref = _keys("E2-5", p), _slider_rates(p)
+    assert got["v_C"] == pytest.approx(float(ref["v_C"]), rel=1e-9, abs=1e-9)
+    assert got["omega2"] == pytest.approx(float(ref["omega2"]), rel=1e-9, abs=1e-12)
+    assert got["P13_y"] == pytest.approx(float(ref["P13"].imag), rel=1e-9, abs=1e-9)
+    # F35: the slider moves as fast as the crank's point at P13
+    assert abs(got["v_C"]) == pytest.approx(abs(p["omega1"] * got["P13_y"]), rel=1e-9)
+
+
+@pytest.mark.parametrize("theta, omega2, speed", [(0.8, -0.542529, 54.7170), (2.5, 0.616586, 24.8380)])
+def test_e2_5_the_book_page_numbers(theta, omega2, speed):
+    got = _keys("E2-5", get("E2-5").params({"theta1": math.degrees(theta)}))
+    assert (_six(got["omega2"]), _six(abs(got["v_C"]))) == (omega2, speed)
+
+
+# ----------------------------------------------------------------------------- E2-17, E2-18
+def _design_meets_its_task(p, lengths, gamma_min):
+    ref = _fourbar_mp(dict(zip("abcd", lengths)))
+    assert float(mpmath.degrees(ref["phi"])) == pytest.approx(p["phi"], rel=1e-9)
+    assert float(ref["K"]) == pytest.approx(p["K"], rel=1e-9)
+    assert gamma_min == pytest.approx(float(mpmath.degrees(ref["gamma_min"])), rel=1e-6)
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_17_design_meets_its_task(seed):
+    p = get("E2-17").defaults if seed is None else get("E2-17").variant(seed)
+    got = _keys("E2-17", p)
+    _design_meets_its_task(p, (p["a"], got["l_BC"], p["c"], got["l_AD"]), got["gamma_min"])
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_18_design_meets_its_task(seed):
+    p = get("E2-18").defaults if seed is None else get("E2-18").variant(seed)
+    got = _keys("E2-18", p)
+    _design_meets_its_task(p, (got["l_AB"], p["b"], p["c"], got["l_AD"]), got["gamma_min"])
+
+
+def test_e2_17_e2_18_textbook_numbers():
+    """The textbook's corrected answers (its printed d = 95.95 mm is 0.03 mm short)."""
+    s17 = get("E2-17").solve()
+    got = _keys("E2-17", get("E2-17").defaults)
+    assert (got["l_BC"], got["l_AD"]) == pytest.approx((73.67, 95.98), abs=0.005)
+    assert math.degrees(s17["angle α = ∠AOC1"].value) == pytest.approx(28.50, abs=0.005)
+    got = _keys("E2-18", get("E2-18").defaults)
+    assert (got["l_AB"], got["l_AD"]) == pytest.approx((31.40, 95.98), abs=0.005)
+
+
+# ----------------------------------------------------------------------------- registry
+def test_new_examples_registered_with_figures_and_keys():
+    from mech.exercises._figures import figure_png
+
+    for number in ("E2-4", "E2-5", "E2-17", "E2-18"):
+        assert number in EXAMPLES
+        params, solution = solved_variant(get(number), 4)
+        assert {a[0] for a in answers(solution)} >= {"omega2"} or number in ("E2-17", "E2-18")
+        assert all(math.isfinite(a[2]) for a in answers(solution))
+    assert figure_png("E2-17", get("E2-17").defaults)[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize("number, bad, message", [
+    ("E2-4", {"a": 30.0}, "crank-rocker"), ("E2-4", {"omega1": 0.0}, "omega1"),
+    ("E2-5", {"b": 20.0}, "`b` > `a`"), ("E2-17", {"a": 60.0}, "crank"), ("E2-18", {"K": 0.5}, "`K`"),
+    ("E2-17", {"phi": 200.0}, "`phi`"),
+])
+def test_new_examples_refuse_bad_givens_by_name(number, bad, message):
+    with pytest.raises(ValueError, match=message):
+        get(number).solve(**bad)
