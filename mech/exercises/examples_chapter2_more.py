@@ -1,5 +1,6 @@
-"""More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5) and the
-quick-return crank-rocker designed from a crank or a coupler (E2-17, E2-18).
+"""More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5), the wedge
+press (E2-11), the quick-return crank-rocker designed from a crank or a coupler (E2-17,
+E2-18) and the gripper point of an open-chain manipulator (E2-25).
 
 The same kind of records as :mod:`mech.exercises.examples_chapter2`: the example's numbers
 (or, where the textbook gives none, the numbers its page in this book chose, with the
@@ -8,7 +9,8 @@ solver on :mod:`mech.planar` that works the example by the textbook's method, an
 of other numbers. Examples 2-4 and 2-5 locate the instant centres (Kennedy's theorem) and
 read the angular velocities off them; examples 2-17 and 2-18 design a crank-rocker from its
 time ratio, the rocker's length and swing, and one more length, by the analytic model
-(2-46) of §2.4 III.
+(2-46) of §2.4 III; example 2-11 balances the forces on two wedges with friction, and
+example 2-25 multiplies the manipulator's H-D matrices.
 
 Examples
 --------
@@ -172,6 +174,69 @@ def _sample_e2_18(rng):
     return p | {"b": _int(rng, low + 0.05 * (high - low), min(high, 4 * low), 0.5)}
 
 
+# ----------------------------------------------------------------------------- E2-11
+def _solve_e2_11(p):
+    from mech.planar import friction_angle, wedge_press, wedge_press_forces
+
+    Q, lam, mu = (real_number(n, p[n]) for n in ("Q", "lam", "mu"))
+    if not Q > 0.0:
+        raise ValueError(f"Expected a pressing force `Q` > 0, got {Q!r}")
+    if not 0.0 < mu < 1.0:
+        raise ValueError(f"Expected a friction coefficient 0 < `mu` < 1, got {mu!r}")
+    phi = friction_angle(mu)
+    if not 0.0 < lam * _DEG < math.pi / 2 - 2 * phi:
+        raise ValueError(f"Expected a wedge angle 0 < `lam` < 90° − 2φ = {90 - 2 * math.degrees(phi):.6g}° "
+                         f"(else the push cannot press, eq. 2-27), got {lam!r}")
+    w = wedge_press(lam * _DEG, phi)
+    press = wedge_press_forces(Q, lam * _DEG, phi)
+    return Solution("E2-11", EXAMPLES_BY_NUMBER["E2-11"].title, dict(p), (
+        f"The friction angle φ = arctan μ = {math.degrees(phi):.6g}° on all three sliding faces.",), (
+        Part("Pressing", (
+            Result("push P", press.P.real, "N", "the force polygons of wedges 2 and 3: P = Q tan(λ + 2φ), (2-25)"),
+            Result("efficiency η", w.efficiency, "", "η = tan λ / tan(λ + 2φ), (2-26)"),
+        ), ()),
+        Part("Release", (
+            Result("push P′ on the release", Q * w.reverse_ratio, "N",
+                   "friction reversed: P′ = Q tan(λ − 2φ); negative, a pull is needed to let go"),
+            Result("efficiency η′", w.reverse_efficiency, "", "η′ = tan(λ − 2φ) / tan λ, (2-28)"),
+        ), ("The press holds the workpiece by itself after the push is removed exactly when "
+            f"η′ ≤ 0, that is λ ≤ 2φ (2-29): here it {'holds' if w.reverse_locks else 'does not hold'}.",)),
+    ))
+
+
+def _sample_e2_11(rng):
+    return {"Q": _int(rng, 500, 5000, 100), "lam": _int(rng, 4, 30), "mu": _int(rng, 5, 20) / 100.0}
+
+
+# ----------------------------------------------------------------------------- E2-25
+def _solve_e2_25(p):
+    import numpy as np
+
+    from mech.spatial import example_2_25_manipulator, example_2_25_reach
+
+    s0, s2, pt = positive_length("S0", p["S0"]), positive_length("S2", p["S2"]), positive_length("p", p["p"])
+    q = np.array([real_number("phi01", p["phi01"]) * _DEG, real_number("phi12", p["phi12"]) * _DEG, s2,
+                  real_number("phi34", p["phi34"]) * _DEG])
+    pose = example_2_25_manipulator(s0).pose(q, point=(0.0, 0.0, pt))
+    x, y, z = (float(v) for v in np.ravel(pose.P))
+    how = "the product M01 M12 M23 M34 of the H-D matrices, eq. (2-73)"
+    return Solution("E2-25", EXAMPLES_BY_NUMBER["E2-25"].title, dict(p), (
+        "Base frame 0 at A, z0 up; the gripper point P lies p along z4.",), (
+        Part("Gripper point", (
+            Result("P (x0)", x, "mm", how), Result("P (y0)", y, "mm", how), Result("P (z0)", z, "mm", how),
+        ), ("The gripper's own turn φ34 moves its jaws, not the point P on its axis.",)),
+        Part("Distance from the base", (
+            Result("AP", float(example_2_25_reach(q[1], s2, s0, pt)), "mm",
+                   "AP² = S0² + (p + S2)² − 2 S0 (p + S2) cos φ12, the triangle ABP"),
+        ), ()),
+    ))
+
+
+def _sample_e2_25(rng):
+    return {"S0": _int(rng, 300, 500, 10), "p": _int(rng, 50, 120, 10), "phi01": _off_axis(rng) - 180.0,
+            "phi12": _int(rng, 20, 160, 5), "S2": _int(rng, 100, 400, 10), "phi34": _int(rng, -180, 180, 15)}
+
+
 # ----------------------------------------------------------------------------- records
 _TASK = ("a crank-rocker whose time ratio is K = {K}, whose rocker CD = {c} mm swings through "
          "φ = {phi}°, and ")
@@ -192,6 +257,14 @@ EXAMPLES = (
              "guide, away from A at θ1 = 0).",
              (Parameter("a", 30.0), Parameter("b", 80.0), Parameter("theta1", 45.0, "deg"),
               Parameter("omega1", 2.0, "rad/s")), _solve_e2_5, _sample_e2_5, tag="A"),
+    _example("E2-11", "Worked example 2-11: forces and efficiency of a wedge press",
+             "In a wedge press a horizontal wedge 2 of angle λ = {lam}°, pushed by P, lifts a vertical "
+             "wedge 3 that presses the workpiece with Q = {Q} N. The base, the inclined face and the "
+             "vertical guide all have the friction coefficient μ = {mu}. Find the push P and the "
+             "efficiency η while pressing, and the push P′ and the efficiency η′ on the release (when the "
+             "workpiece drives back). Does the press hold the workpiece by itself?",
+             (Parameter("Q", 1000.0, "N"), Parameter("lam", 10.0, "deg"), Parameter("mu", 0.1, "")),
+             _solve_e2_11, _sample_e2_11, tag="A"),   # the text gives no numbers: they are chosen
     _example("E2-17", "Worked example 2-17: a quick-return crank-rocker with a given crank",
              "Design " + _TASK + "whose crank AB = {a} mm: find the coupler BC, the frame AD and the "
              "minimum transmission angle γ_min.",
@@ -202,6 +275,17 @@ EXAMPLES = (
              "minimum transmission angle γ_min.",
              (Parameter("K", 1.3, ""), Parameter("c", 100.0), Parameter("phi", 40.0, "deg"), Parameter("b", 73.67)),
              lambda p: _design("E2-18", p, "b"), _sample_e2_18),
+    _example("E2-25", "Worked example 2-25: the gripper point of an RRPR manipulator",
+             "A manipulator (joints R, R, P, R) turns its column about the vertical axis z0 through the base "
+             "A by φ01 = {phi01}°; the shoulder B lies S0 = {S0} mm above A and tilts the arm by φ12 = "
+             "{phi12}° (at φ12 = 0 the arm points straight down, at 90° it is level, along x0 when φ01 = 0); "
+             "the forearm slides out S2 = {S2} mm from B along the arm and the gripper turns about the arm "
+             "by φ34 = {phi34}°. Its H-D parameters (φ, λ, S, h) are (φ01, 90°, S0, 0), (φ12, 90°, 0, 0), "
+             "(0, 0, S2, 0) and (φ34, 0, 0, 0). Find the coordinates (x0, y0, z0) of the gripper point P, "
+             "p = {p} mm out along the gripper's axis z4, and its distance AP from the base.",
+             (Parameter("S0", 400.0), Parameter("p", 80.0), Parameter("phi01", 30.0, "deg"),
+              Parameter("phi12", 60.0, "deg"), Parameter("S2", 250.0), Parameter("phi34", 45.0, "deg")),
+             _solve_e2_25, _sample_e2_25, tag="A"),   # the text gives no dimensions: they are chosen
 )
 
 #: The examples by number (the solvers read their titles here).
@@ -235,8 +319,47 @@ def draw_example(number, p, fig):
         ax.set_axis_off()
         given = f"AB = {p['a']:g} mm" if number == "E2-17" else f"BC = {p['b']:g} mm"
         ax.set_title(f"rocker CD = {c:g} mm at its limit positions, φ = {p['phi']:g}°, K = {p['K']:g}, {given}")
+    elif number == "E2-11":
+        _draw_wedge_press(ax, p)
+    elif number == "E2-25":
+        _draw_manipulator(ax, p)
     else:
         raise ValueError(f"Expected `number` to be a worked example with a figure, got {number!r}")
+
+
+def _draw_wedge_press(ax, p):
+    """Wedge 2 on the base with its face at λ, wedge 3 above it in its vertical guide."""
+    t = math.tan(p["lam"] * _DEG)
+    w, h0 = 10.0, 2.0
+    # the push P drives the thick end: the face under wedge 3 rises as wedge 2 moves right
+    ax.fill([0, w, w, 0], [0, 0, h0, h0 + w * t], color="tab:blue", alpha=0.4)        # wedge 2
+    ax.fill([3, 7, 7, 3], [h0 + 7 * t, h0 + 3 * t, 12, 12], color="tab:green", alpha=0.4)  # wedge 3
+    ax.plot([-1, 12], [0, 0], "k-", lw=2)
+    ax.plot([2.6, 2.6], [6, 13], "k-", lw=2)
+    ax.plot([7.4, 7.4], [6, 13], "k-", lw=2)
+    ax.annotate("P", xy=(0, 1), xytext=(-4, 1), arrowprops={"arrowstyle": "->"})
+    ax.annotate("Q", xy=(5, 12), xytext=(4.8, 14.2), arrowprops={"arrowstyle": "->"})     # the load on wedge 3
+    ax.set_ylim(-1.0, 15.0)
+    ax.text(w - 2.5, 0.5, "λ", fontsize=12)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    ax.set_title(f"wedge press, λ = {p['lam']:g}°, μ = {p['mu']:g}, Q = {p['Q']:g} N")
+
+
+def _draw_manipulator(ax, p):
+    """The manipulator seen from the side, in the plane of the arm: column AB, arm B->P."""
+    s0, r = p["S0"], p["S2"] + p["p"]
+    t = p["phi12"] * _DEG
+    tip = (r * math.sin(t), s0 - r * math.cos(t))
+    ax.plot([0, 0], [0, s0], "k-", lw=4)
+    ax.plot([0, tip[0]], [s0, tip[1]], "-", color="tab:blue", lw=3)
+    ax.plot([0], [0], "k^", ms=12)
+    for name, xy in (("A", (0, 0)), ("B", (0, s0)), ("P", tip)):
+        ax.annotate(name, xy, textcoords="offset points", xytext=(6, 4))
+    ax.plot([-0.3 * s0, 0.3 * s0], [0, 0], "k-", lw=1)
+    ax.set_aspect("equal")
+    ax.set_title(f"RRPR manipulator in the plane of its arm: S0 = {s0:g} mm, φ12 = {p['phi12']:g}°, "
+                 f"S2 + p = {r:g} mm", fontsize=9)
 
 
 for _ex in EXAMPLES:

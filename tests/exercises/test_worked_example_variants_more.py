@@ -1,13 +1,18 @@
-"""Worked examples 2-4, 2-5, 2-17 and 2-18 with variants, each checked by another route.
+"""Worked examples 2-4, 2-5, 2-11, 2-17, 2-18 and 2-25 with variants, each checked by
+another route.
 
 Oracles: for E2-4 and E2-5 the linkage closed in mpmath at 50 digits (the four-bar's C as
 the intersection of two circles, to the left of B->D; the slider's place by Pythagoras),
 its angles differentiated numerically (mpmath.diff) for the rates, and the instant centres
 as intersections of lines through the joints; for E2-17 and E2-18 the design put back into
 the law of cosines at its two limit positions (the swing, K and the transmission angle
-must be the givens). At the defaults: the angular velocities the book's instant-centre page
+must be the givens); for E2-11 the equilibrium of the two wedges solved as linear systems
+in mpmath (each reaction tilted by the friction angle) besides the closed forms (2-25) to
+(2-29); for E2-25 the gripper point by spherical coordinates about the shoulder and AP by
+the law of cosines, not by the H-D matrices. At the defaults: the angular velocities the book's instant-centre page
 recomputed independently (E2-4, E2-5, at the crank angles it chose) and the textbook's
-corrected numbers of examples 2-17 and 2-18 (b = 73.67 mm, d = 95.98 mm, α = 28.50°).
+corrected numbers of examples 2-17 and 2-18 (b = 73.67 mm, d = 95.98 mm, α = 28.50°), and
+the pose the book's open-chain page chose for example 2-25.
 """
 
 import math
@@ -16,7 +21,7 @@ import mpmath
 import pytest
 
 from mech.exercises import EXAMPLES, get
-from mech.exercises._answers import answers
+from mech.exercises._answers import ANSWER_KEYS, answers
 from mech.exercises._sheet import solved_variant
 from tests.exercises.test_worked_example_variants import _fourbar_mp
 
@@ -141,14 +146,79 @@ def test_e2_17_e2_18_textbook_numbers():
     assert (got["l_AB"], got["l_AD"]) == pytest.approx((31.40, 95.98), abs=0.005)
 
 
+# ----------------------------------------------------------------------------- E2-11
+def _wedge_mp(p):
+    """The two wedges' equilibrium solved as linear systems in mpmath: each total reaction
+    tilted by φ from its face's normal against the sliding (pressing: wedge 2 moves +x,
+    wedge 3 moves +y; the release reverses every friction force). Built from the geometry
+    here, not from the code's force routine."""
+    Q, lam, phi = mpmath.mpf(p["Q"]), mpmath.radians(mpmath.mpf(p["lam"])), mpmath.atan(mpmath.mpf(p["mu"]))
+    out = {}
+    for name, s in (("P", 1), ("P_release", -1)):
+        u = lambda ang: mpmath.matrix([mpmath.cos(ang), mpmath.sin(ang)])
+        # the incline falls towards +x (the thick end is pushed), so wedge 2 slides along it
+        r_base = u(mpmath.pi / 2 + s * phi)             # on wedge 2 from the base, against its +x motion
+        r_face = u(-mpmath.pi / 2 - lam - s * phi)      # on wedge 2 from wedge 3, against sliding down the face
+        r_guide = u(mpmath.pi + s * phi)                # on wedge 3 from the guide it leans on, against +y
+        # wedge 3: Q (down) + F23 (-r_face) + F_guide r_guide = 0 -> F23, F_guide
+        A = mpmath.matrix([[-r_face[0], r_guide[0]], [-r_face[1], r_guide[1]]])
+        f23, _ = mpmath.lu_solve(A, mpmath.matrix([0, Q]))
+        # wedge 2: P (+x) + F_base r_base + f23 r_face = 0
+        B = mpmath.matrix([[1, r_base[0]], [0, r_base[1]]])
+        push, _ = mpmath.lu_solve(B, -f23 * r_face)
+        out[name] = push
+    p0 = Q * mpmath.tan(lam)                            # no friction
+    out["eta"], out["eta_release"] = p0 / out["P"], out["P_release"] / p0
+    return out
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_11_against_the_force_polygons(seed):
+    p = get("E2-11").defaults if seed is None else get("E2-11").variant(seed)
+    got, ref = _keys("E2-11", p), _wedge_mp(p)
+    for key in ("P", "P_release", "eta", "eta_release"):
+        assert got[key] == pytest.approx(float(ref[key]), rel=1e-9, abs=1e-9), key
+    # the textbook's closed forms (2-25), (2-26)
+    lam, phi = mpmath.radians(mpmath.mpf(p["lam"])), mpmath.atan(mpmath.mpf(p["mu"]))
+    assert got["P"] == pytest.approx(float(p["Q"] * mpmath.tan(lam + 2 * phi)), rel=1e-12)
+    assert (got["eta_release"] <= 0) == (lam <= 2 * phi)            # (2-29): it holds by itself
+
+
+# ----------------------------------------------------------------------------- E2-25
+def _gripper_mp(p):
+    """The gripper point by spherical coordinates about the shoulder B (φ12 from the
+    downward vertical, φ01 about z0), and AP by the law of cosines in the triangle ABP."""
+    s0, r = mpmath.mpf(p["S0"]), mpmath.mpf(p["S2"]) + mpmath.mpf(p["p"])
+    t, az = mpmath.radians(mpmath.mpf(p["phi12"])), mpmath.radians(mpmath.mpf(p["phi01"]))
+    P = (r * mpmath.sin(t) * mpmath.cos(az), r * mpmath.sin(t) * mpmath.sin(az), s0 - r * mpmath.cos(t))
+    return P, mpmath.sqrt(s0**2 + r**2 - 2 * s0 * r * mpmath.cos(t))
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_25_against_spherical_coordinates(seed):
+    p = get("E2-25").defaults if seed is None else get("E2-25").variant(seed)
+    got = _keys("E2-25", p)
+    P, ap = _gripper_mp(p)
+    assert (got["P_x"], got["P_y"], got["P_z"]) == pytest.approx(tuple(float(v) for v in P), rel=1e-12, abs=1e-9)
+    assert got["l_AP"] == pytest.approx(float(ap), rel=1e-12)
+    assert got["l_AP"] == pytest.approx(math.hypot(got["P_x"], got["P_y"], got["P_z"]), rel=1e-12)
+
+
+def test_e2_25_the_book_page_numbers():
+    """The book's chosen pose: P = (0.2475, 0.142894, 0.235) m and AP = 0.37 m."""
+    got = _keys("E2-25", get("E2-25").defaults)
+    assert (_six(got["P_x"]), _six(got["P_y"]), _six(got["P_z"]), _six(got["l_AP"])) == (247.5, 142.894, 235.0,
+                                                                                        370.0)
+
+
 # ----------------------------------------------------------------------------- registry
 def test_new_examples_registered_with_figures_and_keys():
     from mech.exercises._figures import figure_png
 
-    for number in ("E2-4", "E2-5", "E2-17", "E2-18"):
+    for number in ("E2-4", "E2-5", "E2-11", "E2-17", "E2-18", "E2-25"):
         assert number in EXAMPLES
         params, solution = solved_variant(get(number), 4)
-        assert {a[0] for a in answers(solution)} >= {"omega2"} or number in ("E2-17", "E2-18")
+        assert {a[0] for a in answers(solution)} == {k for k, _, _ in ANSWER_KEYS[number]}
         assert all(math.isfinite(a[2]) for a in answers(solution))
     assert figure_png("E2-17", get("E2-17").defaults)[:8] == b"\x89PNG\r\n\x1a\n"
 
@@ -156,7 +226,8 @@ def test_new_examples_registered_with_figures_and_keys():
 @pytest.mark.parametrize("number, bad, message", [
     ("E2-4", {"a": 30.0}, "crank-rocker"), ("E2-4", {"omega1": 0.0}, "omega1"),
     ("E2-5", {"b": 20.0}, "`b` > `a`"), ("E2-17", {"a": 60.0}, "crank"), ("E2-18", {"K": 0.5}, "`K`"),
-    ("E2-17", {"phi": 200.0}, "`phi`"),
+    ("E2-17", {"phi": 200.0}, "`phi`"), ("E2-11", {"lam": 80.0}, "`lam`"), ("E2-11", {"mu": 1.5}, "`mu`"),
+    ("E2-25", {"S2": -1.0}, "S2"),
 ])
 def test_new_examples_refuse_bad_givens_by_name(number, bad, message):
     with pytest.raises(ValueError, match=message):
