@@ -40,6 +40,14 @@ def _k_2_3(p):
     return float((mpmath.pi + theta) / (mpmath.pi - theta)), theta
 
 
+def _gamma_min_2_3(p):
+    """The smallest transmission angle of 2-3's four-bar, at the crank along the frame line
+    (the law of cosines in the triangle BCD, with BD = AD - AB or AD + AB)."""
+    a, b, c, d = (mpmath.mpf(p[k]) for k in ("AB", "BC", "CD", "AD"))
+    delta = [mpmath.acos((b * b + c * c - s * s) / (2 * b * c)) for s in (d - a, d + a)]
+    return min(min(x, mpmath.pi - x) for x in delta)
+
+
 def _h_max_2_20(p):
     return float(p["D"] * (1 - mpmath.cos(mpmath.atan(mpmath.mpf(p["mu"])))) + p["a"])
 
@@ -96,7 +104,8 @@ def test_units_converted(text, unit, expected):
 
 @pytest.mark.parametrize("text, unit, message", [
     ("3 N", "deg", "Expected an angle"), ("3..2", "mm", "to be a number"), ("12 furlongs", "mm", "known unit"),
-    ("1 rad", "mm", "Expected a length"), ("", "mm", "to be a number"),
+    ("1 rad", "mm", "Expected a length"), ("", "mm", "to be a number"), ("1e400 mm", "mm", "finite number"),
+    ("nan", "deg", "to be a number"), ("1,5", "mm", "to be a number"),
 ])
 def test_units_malformed_named(text, unit, message):
     with pytest.raises(ValueError, match=message):
@@ -131,8 +140,13 @@ def _class_csv(path, students=30, class_seed=2026):
             planted[who, "theta"] = "right"
         row.append("" if kind == 4 else "400 N")         # phi: missing, or a force (malformed)
         planted[who, "phi"] = "missing" if kind == 4 else "malformed"
-        row.append("")                                   # gamma_min left empty by all
-        planted[who, "gamma_min"] = "missing"
+        # gamma_min: right in degrees or radians, wrong in radians, malformed three ways, missing
+        g = _gamma_min_2_3(get("2-3").variant(s))
+        cell, verdict = [(f"{float(mpmath.degrees(g)):.4f}", "right"), (f"{float(g):.6f} rad", "right"),
+                         (f"{float(g) * 1.2:.6f}rad", "wrong"), ("1e400 deg", "malformed"),
+                         ("12 parsec", "malformed"), ("", "missing"), ("30,5", "malformed")][k % 7]
+        row.append(cell)
+        planted[who, "gamma_min"] = verdict
         row.append(f"{h / 1000:.6f} m" if kind == 0 else f"{h * 0.8:.3f}")  # metres (right) or wrong
         planted[who, "h_max"] = "right" if kind == 0 else "wrong"
         rows.append(row)
@@ -164,13 +178,22 @@ def test_class_csv_graded_every_row(tmp_path):
 
 
 def test_class_check_command_names_malformed(tmp_path, capsys):
-    _class_csv(tmp_path / "class.csv", students=6)
+    """The command line on the class of 30: every malformed entry is printed with its
+    student, its answer name and its text, and no other entry is called malformed."""
+    planted = _class_csv(tmp_path / "class.csv")
     code = main(["check", "--answers", str(tmp_path / "class.csv"), "--gradebook", str(tmp_path / "g.csv")])
     out = capsys.readouterr().out
     assert code == 1
     assert "malformed: student s03, 2-3:theta = '18..5 deg'" in out
     assert "malformed: student s01, 2-3:phi = '400 N': Expected an angle" in out
-    assert "7 students, 35 answers:" in out and (tmp_path / "g.csv").exists()
+    assert "malformed: student s03, 2-3:gamma_min = '1e400 deg': Expected `text` to be a finite number" in out
+    assert "malformed: student s04, 2-3:gamma_min = '12 parsec': Expected `text` in a known unit" in out
+    named = set(re.findall(r"malformed: student (\S+), [0-9-]+:(\w+) = ", out))
+    assert named == {who_key for who_key, verdict in planted.items() if verdict == "malformed"}
+    counts = {v: list(planted.values()).count(v) for v in ("right", "wrong", "missing", "malformed")}
+    assert (f"31 students, 155 answers: {counts['right']} right, {counts['wrong']} wrong, "
+            f"{counts['missing']} missing, {counts['malformed']} malformed") in out
+    assert (tmp_path / "g.csv").exists()
 
 
 def test_answer_file_per_student(tmp_path, capsys):
