@@ -224,6 +224,8 @@ def write_moodle(students, path, *, rtol=0.01, atol=0.01, category="mech"):
 #: Canvas's folder token: its importer points a reference that starts with it at the
 #: package's root, where the figures are stored.
 CANVAS_FILEBASE = "$IMS-CC-FILEBASE$"
+#: The namespace of the QTI 1.2 ASI XML binding, which Canvas's own export declares.
+QTI_ASI_NAMESPACE = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
 
 
 def _qti_meta(item, fields):
@@ -277,8 +279,9 @@ def write_qti(students, path, *, rtol=0.01, atol=0.01, title="mech exercises"):
     with a single number and a margin; a question with several numerical blanks does not
     exist there (its fill-in-multiple-blanks and dropdown types match text or choices,
     not a number within a tolerance). So each answer of an exercise is a question of its
-    own: the section (a question group that draws one item) ``Exercise N: key`` holds one
-    item per student variant, each with the full statement, its figure and the one
+    own: the section (a question group that draws one item, inside the assessment's
+    ``root_section`` as Canvas writes it) ``Exercise N: key`` holds one item per student
+    variant, each with the full statement, its figure and the one
     quantity asked, scored within the tolerance ``check`` uses (``rtol * |value| + atol``).
     The groups draw independently, so the answers of one exercise may come from different
     variants; every item stands alone. The figures are referred to through Canvas's
@@ -287,17 +290,19 @@ def write_qti(students, path, *, rtol=0.01, atol=0.01, title="mech exercises"):
     import zipfile
 
     quiz = "mech_quiz"
-    qroot = ET.Element("questestinterop")
+    qroot = ET.Element("questestinterop", xmlns=QTI_ASI_NAMESPACE)
     assessment = _sub(qroot, "assessment", ident=quiz, title=title)
+    root_section = _sub(assessment, "section", ident="root_section")    # as Canvas nests its groups
     files = {}
     numbers = [it.number for it in students[0].items] if students else []
     for j, number in enumerate(numbers):
         keys = [q.key for q in students[0].items[j].quantities]
         for p, key in enumerate(keys):
             part = f"Exercise {number}" + (f": {key}" if len(keys) > 1 else "")
-            section = _sub(assessment, "section", ident=f"section_{number}_{key}", title=part)
+            section = _sub(root_section, "section", ident=f"section_{number}_{key}", title=part)
             sel = _sub(_sub(section, "selection_ordering"), "selection")
             _sub(sel, "selection_number").text = "1"              # one variant per student
+            _sub(_sub(sel, "selection_extension"), "points_per_item").text = "1.0"
             for st in students:
                 it = st.items[j]
                 qq = it.quantities[p]
