@@ -197,7 +197,8 @@ def _solve_e2_11(p):
         ), ()),
         Part("Release", (
             Result("push P′ on the release", Q * w.reverse_ratio, "N",
-                   "friction reversed: P′ = Q tan(λ − 2φ); negative, a pull is needed to let go"),
+                   "friction reversed: P′ = Q tan(λ − 2φ)" + ("; negative: a pull is needed to let go"
+                                                                 if w.reverse_locks else "")),
             Result("efficiency η′", w.reverse_efficiency, "", "η′ = tan(λ − 2φ) / tan λ, (2-28)"),
         ), ("The press holds the workpiece by itself after the push is removed exactly when "
             f"η′ ≤ 0, that is λ ≤ 2φ (2-29): here it {'holds' if w.reverse_locks else 'does not hold'}.",)),
