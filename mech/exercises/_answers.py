@@ -172,6 +172,8 @@ ANSWER_KEYS = {
     "E2-5": (("P13_y", _r("P13 (y)"), "y of the instant centre P13 (on the line through A across the guide)"),
              ("omega2", _r("ω2"), "angular velocity ω2 of the rod (counter-clockwise positive)"),
              ("v_C", _r("v3"), "velocity of the slider C along the guide (signed)")),
+    "E2-7": (("P12_x", _r("P12 (x)"), "x of the instant centre P12 (on the line through A across the path)"),
+             ("v2", _r("v2"), "velocity v2 of the follower (positive upwards)")),
     "E2-8": (("omega2", _r("ω2"), "angular velocity ω2 of the coupler (counter-clockwise positive)"),
              ("omega3", _r("ω3"), "angular velocity ω3 of the rocker (counter-clockwise positive)"),
              ("alpha2", _r("α2"), "angular acceleration α2 of the coupler (counter-clockwise positive)"),

@@ -1,4 +1,4 @@
-"""More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5), the wedge
+"""More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5, E2-7), the wedge
 press (E2-11), the quick-return crank-rocker designed from a crank or a coupler (E2-17,
 E2-18) and the gripper point of an open-chain manipulator (E2-25).
 
@@ -6,7 +6,7 @@ The same kind of records as :mod:`mech.exercises.examples_chapter2`: the example
 (or, where the textbook gives none, the numbers its page in this book chose, with the
 crank at a round angle) as defaults, a
 solver on :mod:`mech.planar` that works the example by the textbook's method, and a sampler
-of other numbers. Examples 2-4 and 2-5 locate the instant centres (Kennedy's theorem) and
+of other numbers. Examples 2-4, 2-5 and 2-7 locate the instant centres (Kennedy's theorem) and
 read the angular velocities off them; examples 2-17 and 2-18 design a crank-rocker from its
 time ratio, the rocker's length and swing, and one more length, by the analytic model
 (2-46) of §2.4 III; example 2-11 balances the forces on two wedges with friction, and
@@ -174,6 +174,37 @@ def _sample_e2_18(rng):
     return p | {"b": _int(rng, low + 0.05 * (high - low), min(high, 4 * low), 0.5)}
 
 
+# ----------------------------------------------------------------------------- E2-7
+def _solve_e2_7(p):
+    from mech.planar import centre_velocities, higher_pair, instant_centres, prismatic
+
+    R, e = positive_length("R", p["R"]), positive_length("e", p["e"])
+    theta, w1 = _crank_angle(p)
+    if not e < R:
+        raise ValueError(f"Expected the disc's centre inside it, `e` < `R`, got e={e!r}, R={R!r}")
+    K = e * complex(math.cos(theta * _DEG), math.sin(theta * _DEG))
+    T = 1j * (K.imag + math.sqrt(R * R - K.real * K.real))     # the tip on the upper side of the disc
+    centres = instant_centres(3, {(1, 3): 0j, (2, 3): prismatic(1j), (1, 2): higher_pair(T, T - K)})
+    p12 = _near("P12", None if centres[1, 2].at_infinity else complex(centres[1, 2].point), R)
+    v2 = complex(centre_velocities(centres, frame=3, driver=1, omega=w1).point_velocity(2, T)).imag
+    return Solution("E2-7", EXAMPLES_BY_NUMBER["E2-7"].title, dict(p), (
+        "A at the origin, the follower on the vertical line through A, its tip T on the upper side "
+        "of the disc; θ is the angle of A→K from +x; velocities positive upwards.",
+        "P13 = A; P23 lies at infinity, across the follower's path.",), (
+        Part("Instant centre P12", (
+            Result("P12 (x)", p12.real, "mm", "on the line through A across the path (Kennedy) and on the "
+                                               "common normal at T, which passes through K"),
+        ), ()),
+        Part("Follower", (
+            Result("v2", v2, "mm/s", "the follower moves as the cam's point P12: v2 = ω1 P13P12, (F37)"),
+        ), ()),
+    ))
+
+
+def _sample_e2_7(rng):
+    return {"R": _int(rng, 20, 40), "e": _int(rng, 5, 15), "theta1": _off_axis(rng), "omega1": _int(rng, 1, 6)}
+
+
 # ----------------------------------------------------------------------------- E2-11
 def _solve_e2_11(p):
     from mech.planar import friction_angle, wedge_press, wedge_press_forces
@@ -258,6 +289,14 @@ EXAMPLES = (
              "guide, away from A at θ1 = 0).",
              (Parameter("a", 30.0), Parameter("b", 80.0), Parameter("theta1", 45.0, "deg"),
               Parameter("omega1", 2.0, "rad/s")), _solve_e2_5, _sample_e2_5, tag="A"),
+    _example("E2-7", "Worked example 2-7: a disc cam's follower velocity by instant centres",
+             "A circular disc cam (link 1) of radius R = {R} mm turns about A, e = {e} mm from its centre K, "
+             "at ω1 = {omega1} rad/s (counter-clockwise). A knife-edge follower (link 2) slides on the "
+             "vertical line through A, its tip on the upper side of the disc; the frame is link 3. With the "
+             "line A→K at θ = {theta1}° from the horizontal, locate the instant centre P12 and find the "
+             "follower's velocity v2 (positive upwards).",
+             (Parameter("R", 30.0), Parameter("e", 12.0), Parameter("theta1", 40.0, "deg"),
+              Parameter("omega1", 2.5, "rad/s")), _solve_e2_7, _sample_e2_7, tag="A"),
     _example("E2-11", "Worked example 2-11: forces and efficiency of a wedge press",
              "In a wedge press a horizontal wedge 2 of angle λ = {lam}°, pushed by P, lifts a vertical "
              "wedge 3 that presses the workpiece with Q = {Q} N. The base, the inclined face and the "
@@ -320,6 +359,19 @@ def draw_example(number, p, fig):
         ax.set_axis_off()
         given = f"AB = {p['a']:g} mm" if number == "E2-17" else f"BC = {p['b']:g} mm"
         ax.set_title(f"rocker CD = {c:g} mm at its limit positions, φ = {p['phi']:g}°, K = {p['K']:g}, {given}")
+    elif number == "E2-7":
+        k = p["e"] * complex(math.cos(p["theta1"] * _DEG), math.sin(p["theta1"] * _DEG))
+        tip = k.imag + math.sqrt(p["R"] ** 2 - k.real**2)
+        t = [2 * math.pi * i / 120 for i in range(121)]
+        ax.plot([k.real + p["R"] * math.cos(a) for a in t], [k.imag + p["R"] * math.sin(a) for a in t], "-",
+                color="tab:blue")
+        ax.plot([0, k.real], [0, k.imag], "-", color="tab:blue")
+        ax.plot([0, 0], [tip, tip + p["R"]], "-", color="tab:green", lw=3)
+        ax.plot([0], [0], "k^", ms=10)
+        for name, z in (("A", 0j), ("K", k)):
+            ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(5, -10))
+        ax.set_aspect("equal")
+        ax.set_title(f"disc cam R = {p['R']:g} mm, e = {p['e']:g} mm, θ = {p['theta1']:g}°, knife-edge follower")
     elif number == "E2-11":
         _draw_wedge_press(ax, p)
     elif number == "E2-25":

@@ -1,10 +1,11 @@
-"""Worked examples 2-4, 2-5, 2-11, 2-17, 2-18 and 2-25 with variants, each checked by
-another route.
+"""Worked examples 2-4, 2-5, 2-7, 2-11, 2-17, 2-18 and 2-25 with variants, each checked
+by another route.
 
 Oracles: for E2-4 and E2-5 the linkage closed in mpmath at 50 digits (the four-bar's C as
 the intersection of two circles, to the left of B->D; the slider's place by Pythagoras),
 its angles differentiated numerically (mpmath.diff) for the rates, and the instant centres
-as intersections of lines through the joints; for E2-17 and E2-18 the design put back into
+as intersections of lines through the joints; for E2-7 the follower tip's height on the
+disc differentiated by mpmath.diff; for E2-17 and E2-18 the design put back into
 the law of cosines at its two limit positions (the swing, K and the transmission angle
 must be the givens); for E2-11 the equilibrium of the two wedges solved as linear systems
 in mpmath (each reaction tilted by the friction angle) besides the closed forms (2-25) to
@@ -146,6 +147,28 @@ def test_e2_17_e2_18_textbook_numbers():
     assert (got["l_AB"], got["l_AD"]) == pytest.approx((31.40, 95.98), abs=0.005)
 
 
+# ----------------------------------------------------------------------------- E2-7
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_7_against_the_tip_height(seed):
+    """The tip's height y(θ) = e sin θ + √(R² − e² cos² θ) differentiated by mpmath.diff;
+    P12 where the normal T->K meets the horizontal through A."""
+    p = get("E2-7").defaults if seed is None else get("E2-7").variant(seed)
+    R, e, w1 = (mpmath.mpf(p[k]) for k in ("R", "e", "omega1"))
+    y = lambda t: e * mpmath.sin(t) + mpmath.sqrt(R * R - (e * mpmath.cos(t)) ** 2)
+    t0 = mpmath.radians(mpmath.mpf(p["theta1"]))
+    K = e * mpmath.expj(t0)
+    p12 = _meet(mpmath.mpc(0, y(t0)), K, mpmath.mpc(0), mpmath.mpc(1))
+    got = _keys("E2-7", p)
+    assert got["v2"] == pytest.approx(float(w1 * mpmath.diff(y, t0)), rel=1e-9, abs=1e-9)
+    assert got["P12_x"] == pytest.approx(float(p12.real), rel=1e-9, abs=1e-9)
+
+
+def test_e2_7_the_book_page_numbers():
+    """At the page's data the velocity is ω1 times the distance of P12 from A (F37)."""
+    got = _keys("E2-7", get("E2-7").defaults)
+    assert got["v2"] == pytest.approx(2.5 * abs(got["P12_x"]), rel=1e-12)
+
+
 # ----------------------------------------------------------------------------- E2-11
 def _wedge_mp(p):
     """The two wedges' equilibrium solved as linear systems in mpmath: each total reaction
@@ -215,7 +238,7 @@ def test_e2_25_the_book_page_numbers():
 def test_new_examples_registered_with_figures_and_keys():
     from mech.exercises._figures import figure_png
 
-    for number in ("E2-4", "E2-5", "E2-11", "E2-17", "E2-18", "E2-25"):
+    for number in ("E2-4", "E2-5", "E2-7", "E2-11", "E2-17", "E2-18", "E2-25"):
         assert number in EXAMPLES
         params, solution = solved_variant(get(number), 4)
         assert {a[0] for a in answers(solution)} == {k for k, _, _ in ANSWER_KEYS[number]}
