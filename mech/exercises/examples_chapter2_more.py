@@ -1,5 +1,5 @@
 """More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5, E2-7), the wedge
-press (E2-11), the quick-return crank-rocker designed from a crank or a coupler (E2-17,
+press (E2-11), the self-locking double slider (E2-14), the quick-return crank-rocker designed from a crank or a coupler (E2-17,
 E2-18) and the gripper point of an open-chain manipulator (E2-25).
 
 The same kind of records as :mod:`mech.exercises.examples_chapter2`: the example's numbers
@@ -10,7 +10,8 @@ of other numbers. Examples 2-4, 2-5 and 2-7 locate the instant centres (Kennedy'
 read the angular velocities off them; examples 2-17 and 2-18 design a crank-rocker from its
 time ratio, the rocker's length and swing, and one more length, by the analytic model
 (2-46) of §2.4 III; example 2-11 balances the forces on two wedges with friction, and
-example 2-25 multiplies the manipulator's H-D matrices.
+example 2-14 searches the distance at which the force analysis finds the linkage locked,
+and example 2-25 multiplies the manipulator's H-D matrices.
 
 Examples
 --------
@@ -126,6 +127,53 @@ def _solve_e2_5(p):
 def _sample_e2_5(rng):
     return {"a": _int(rng, 20, 40), "b": _int(rng, 70, 120, 5), "theta1": _off_axis(rng),
             "omega1": _int(rng, 1, 10)}
+
+
+# ----------------------------------------------------------------------------- E2-14
+def _solve_e2_14(p):
+    import numpy as np
+
+    from mech.planar import Guide, Linkage, friction_circle, static_forces
+
+    l, r = positive_length("l", p["l"]), positive_length("r", p["r"])
+    mu0, mu = real_number("mu0", p["mu0"]), real_number("mu", p["mu"])
+    for name, v in (("mu0", mu0), ("mu", mu)):
+        if not 0.0 < v < 1.0:
+            raise ValueError(f"Expected a friction coefficient 0 < `{name}` < 1, got {v!r}")
+    if not 2.0 * r * mu0 < l:
+        raise ValueError(f"Expected the friction circles to fit the link, 2 `r` `mu0` < `l`, got r={r!r}, "
+                         f"mu0={mu0!r}, l={l!r}")
+    # slider 2 on the vertical guide through A, slider 3 on the horizontal one; x = AB's run
+    ds = (Linkage({}).slider("slider2", guide=Guide("ground", 1j * l, -math.pi / 2), point="A")
+          .rrp(("coupler", "slider3"), pin="A", guide=Guide("ground", 0j, 0.0), joint="B", length=l))
+    rho = friction_circle(mu0, r)
+
+    def locked(x):
+        sol = ds.solve(np.array([l - math.sqrt(l * l - x * x)]), order=1)   # A moves down, B right
+        return bool(np.all(static_forces(sol, {"B": -1.0}, rho=rho, mu=mu).self_locking))
+
+    lo, hi = 1e-6 * l, (1.0 - 1e-6) * l
+    if not locked(lo) or locked(hi):
+        raise ValueError(f"Expected slider 3 to lock near x = 0 and run near x = l, got l={l!r}, r={r!r}, "
+                         f"mu0={mu0!r}, mu={mu!r}")
+    for _ in range(60):                    # bisection on the solver's self-locking verdict
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if locked(mid) else (lo, mid)
+    return Solution("E2-14", EXAMPLES_BY_NUMBER["E2-14"].title, dict(p), (
+        "x is the horizontal distance from A to B; a small resistance on slider 3 (without one every "
+        "force vanishes).",), (
+        Part("Self-locking", (
+            Result("x_lock", 0.5 * (lo + hi), "mm",
+                   "the largest x at which no push P moves slider 3: the link's force along the crossing "
+                   "tangent of the friction circles falls inside slider 3's friction cone; found by bisection "
+                   "on `static_forces(...).self_locking`"),
+        ), ("The textbook's condition: x ≤ l sin[arctan μ + arcsin(2 r μ0 / l)].",)),
+    ))
+
+
+def _sample_e2_14(rng):
+    return {"l": _int(rng, 80, 150, 5), "r": _int(rng, 5, 15), "mu0": _int(rng, 10, 20) / 100.0,
+            "mu": _int(rng, 10, 30) / 100.0}
 
 
 # ----------------------------------------------------------------------------- E2-17, E2-18
@@ -305,6 +353,14 @@ EXAMPLES = (
              "workpiece drives back). Does the press hold the workpiece by itself?",
              (Parameter("Q", 1000.0, "N"), Parameter("lam", 10.0, "deg"), Parameter("mu", 0.1, "")),
              _solve_e2_11, _sample_e2_11, tag="A"),   # the text gives no numbers: they are chosen
+    _example("E2-14", "Worked example 2-14: when a double slider locks itself",
+             "A link AB of length l = {l} mm joins slider 2 at A, which a push P drives down a vertical guide, "
+             "to slider 3 at B on a horizontal guide through the foot of that vertical guide. Both pins have "
+             "the radius r = {r} mm and the friction coefficient μ0 = {mu0}; both sliders have the friction "
+             "coefficient μ = {mu}. Up to which horizontal distance x from A to B does the linkage lock "
+             "itself (no push, however large, moves slider 3)?",
+             (Parameter("l", 100.0), Parameter("r", 10.0), Parameter("mu0", 0.15, ""), Parameter("mu", 0.2, "")),
+             _solve_e2_14, _sample_e2_14, tag="A"),   # the text gives no numbers: they are chosen
     _example("E2-17", "Worked example 2-17: a quick-return crank-rocker with a given crank",
              "Design " + _TASK + "whose crank AB = {a} mm: find the coupler BC, the frame AD and the "
              "minimum transmission angle γ_min.",
@@ -372,6 +428,22 @@ def draw_example(number, p, fig):
             ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(5, -10))
         ax.set_aspect("equal")
         ax.set_title(f"disc cam R = {p['R']:g} mm, e = {p['e']:g} mm, θ = {p['theta1']:g}°, knife-edge follower")
+    elif number == "E2-14":
+        from matplotlib.patches import Circle
+
+        l, x = p["l"], 0.5 * p["l"]
+        a, b = (0.0, math.sqrt(l * l - x * x)), (x, 0.0)
+        ax.plot([-0.1 * l, 1.1 * l], [-0.05 * l, -0.05 * l], "k-", lw=1)
+        ax.plot([-0.08 * l, -0.08 * l], [0, 1.1 * l], "k-", lw=1)
+        ax.plot([a[0], b[0]], [a[1], b[1]], "-", color="tab:blue", lw=3)
+        for (cx, cy), name in ((a, "A"), (b, "B")):
+            ax.add_patch(Circle((cx, cy), p["r"], fill=False))             # the pin
+            ax.annotate(name, (cx, cy), textcoords="offset points", xytext=(8, 6))
+        ax.annotate("P", xy=(0, a[1] + p["r"]), xytext=(0.1 * l, a[1] + 0.25 * l), arrowprops={"arrowstyle": "->"})
+        ax.set_aspect("equal")
+        ax.set_axis_off()
+        ax.set_title(f"double slider, l = {l:g} mm, r = {p['r']:g} mm, μ0 = {p['mu0']:g}, μ = {p['mu']:g} "
+                     "(drawn at x = l/2)", fontsize=9)
     elif number == "E2-11":
         _draw_wedge_press(ax, p)
     elif number == "E2-25":

@@ -1,5 +1,5 @@
-"""Worked examples 2-4, 2-5, 2-7, 2-11, 2-17, 2-18 and 2-25 with variants, each checked
-by another route.
+"""Worked examples 2-4, 2-5, 2-7, 2-11, 2-14, 2-17, 2-18 and 2-25 with variants, each
+checked by another route.
 
 Oracles: for E2-4 and E2-5 the linkage closed in mpmath at 50 digits (the four-bar's C as
 the intersection of two circles, to the left of B->D; the slider's place by Pythagoras),
@@ -9,7 +9,8 @@ disc differentiated by mpmath.diff; for E2-17 and E2-18 the design put back into
 the law of cosines at its two limit positions (the swing, K and the transmission angle
 must be the givens); for E2-11 the equilibrium of the two wedges solved as linear systems
 in mpmath (each reaction tilted by the friction angle) besides the closed forms (2-25) to
-(2-29); for E2-25 the gripper point by spherical coordinates about the shoulder and AP by
+(2-29); for E2-14, whose answer the solver finds by bisection on its force analysis, the
+textbook's closed self-locking condition; for E2-25 the gripper point by spherical coordinates about the shoulder and AP by
 the law of cosines, not by the H-D matrices. At the defaults: the angular velocities the book's instant-centre page
 recomputed independently (E2-4, E2-5, at the crank angles it chose) and the textbook's
 corrected numbers of examples 2-17 and 2-18 (b = 73.67 mm, d = 95.98 mm, α = 28.50°), and
@@ -113,6 +114,17 @@ def test_e2_5_against_pythagoras(seed):
 def test_e2_5_the_book_page_numbers(theta, omega2, speed):
     got = _keys("E2-5", get("E2-5").params({"theta1": math.degrees(theta)}))
     assert (_six(got["omega2"]), _six(abs(got["v_C"]))) == (omega2, speed)
+
+
+# ----------------------------------------------------------------------------- E2-14
+@pytest.mark.parametrize("seed", [None] + SEEDS[:4])
+def test_e2_14_against_the_textbook_condition(seed):
+    """The solver's bisection on its own self-locking verdict lands on the textbook's
+    closed condition x = l sin[arctan μ + arcsin(2 r μ0 / l)] (in mpmath)."""
+    p = get("E2-14").defaults if seed is None else get("E2-14").variant(seed)
+    l, r, mu0, mu = (mpmath.mpf(p[k]) for k in ("l", "r", "mu0", "mu"))
+    x = l * mpmath.sin(mpmath.atan(mu) + mpmath.asin(2 * r * mu0 / l))
+    assert _keys("E2-14", p)["x_lock"] == pytest.approx(float(x), rel=1e-9)
 
 
 # ----------------------------------------------------------------------------- E2-17, E2-18
@@ -238,7 +250,7 @@ def test_e2_25_the_book_page_numbers():
 def test_new_examples_registered_with_figures_and_keys():
     from mech.exercises._figures import figure_png
 
-    for number in ("E2-4", "E2-5", "E2-7", "E2-11", "E2-17", "E2-18", "E2-25"):
+    for number in ("E2-4", "E2-5", "E2-7", "E2-11", "E2-14", "E2-17", "E2-18", "E2-25"):
         assert number in EXAMPLES
         params, solution = solved_variant(get(number), 4)
         assert {a[0] for a in answers(solution)} == {k for k, _, _ in ANSWER_KEYS[number]}
