@@ -185,6 +185,8 @@ ANSWER_KEYS = {
     "E2-11": (("P", _r("push P"), "push P while pressing"), ("eta", _r("efficiency η"), "efficiency η"),
               ("P_release", _r("push P′ on the release"), "push P′ on the release (signed)"),
               ("eta_release", _r("efficiency η′"), "efficiency η′ of the release")),
+    "E2-12": (("R12", _r("R12"), "size of the force R12 between crank and coupler"),
+              ("M_d", _r("M_d"), "driving moment M_d on the crank (counter-clockwise positive)")),
     "E2-14": (("x_lock", _r("x_lock"), "largest distance x at which the linkage locks itself"),),
     "E2-17": (("l_BC", _r("coupler BC"), "coupler BC"), ("l_AD", _r("frame AD"), "frame AD"),
               ("gamma_min", _r("minimum transmission angle γ_min"), "minimum transmission angle γ_min")),

@@ -1,5 +1,5 @@
-"""More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5, E2-7), the wedge
-press (E2-11), the self-locking double slider (E2-14), the quick-return crank-rocker designed from a crank or a coupler (E2-17,
+"""More worked examples of chapter 2 with variants: instant centres (E2-4, E2-5, E2-7), the forces of
+a four-bar (E2-12), the wedge press (E2-11), the self-locking double slider (E2-14), the quick-return crank-rocker designed from a crank or a coupler (E2-17,
 E2-18) and the gripper point of an open-chain manipulator (E2-25).
 
 The same kind of records as :mod:`mech.exercises.examples_chapter2`: the example's numbers
@@ -10,7 +10,7 @@ of other numbers. Examples 2-4, 2-5 and 2-7 locate the instant centres (Kennedy'
 read the angular velocities off them; examples 2-17 and 2-18 design a crank-rocker from its
 time ratio, the rocker's length and swing, and one more length, by the analytic model
 (2-46) of §2.4 III; example 2-11 balances the forces on two wedges with friction, and
-example 2-14 searches the distance at which the force analysis finds the linkage locked,
+example 2-14 brackets the distance at which the force analysis finds the linkage locked,
 and example 2-25 multiplies the manipulator's H-D matrices.
 
 Examples
@@ -129,6 +129,46 @@ def _sample_e2_5(rng):
             "omega1": _int(rng, 1, 10)}
 
 
+# ----------------------------------------------------------------------------- E2-12
+def _solve_e2_12(p):
+    import numpy as np
+
+    from mech.planar import FourBar, as_linkage, static_forces
+
+    ab, bc, cd, ad, de = (positive_length(n, p[n]) for n in ("AB", "BC", "CD", "AD", "DE"))
+    theta, Q = real_number("theta1", p["theta1"]), real_number("Q", p["Q"])
+    if not Q > 0.0:
+        raise ValueError(f"Expected a resistance `Q` > 0, got {Q!r}")
+    if not de <= cd:
+        raise ValueError(f"Expected E on the rocker, `DE` <= `CD`, got DE={de!r}, CD={cd!r}")
+    lk = as_linkage(FourBar(ab, bc, cd, ad)).point("E", link="rocker", at=de)
+    sol = lk.solve(theta * _DEG, order=1)                # ω1 = 1 rad/s; statics do not depend on it
+    if not bool(np.all(sol.valid)):
+        raise ValueError(f"Expected `theta1` at which the four-bar assembles, got {theta!r}")
+    w3 = float(np.ravel(sol.omegas["rocker"])[0])
+    if abs(w3) < 1e-3:
+        raise ValueError(f"Expected the rocker to move at `theta1` = {theta!r} (it stands at a limit position)")
+    u = complex(np.ravel(sol.direction("rocker"))[0])
+    load = -math.copysign(1.0, w3) * 1j * u * Q          # across DE, against the rocker's motion
+    sf = static_forces(sol, {"E": load})
+    r12 = complex(np.ravel(sf.reactions[("crank", "coupler")])[0])
+    return Solution("E2-12", EXAMPLES_BY_NUMBER["E2-12"].title, dict(p), (
+        "A at the origin, D on +x, C above AD; the crank turns counter-clockwise; moments "
+        "counter-clockwise positive; no friction, no weights, no inertia.",), (
+        Part("Forces", (
+            Result("R12", abs(r12), "N", "the coupler carries forces at its two pins only: R12 along BC; "
+                                         "the rocker's three forces R23, Q and R43 meet in one point"),
+            Result("M_d", float(np.ravel(sf.balancing)[0]), "N·mm", "the crank's balance about A; "
+                                                                     "virtual work: M_d ω1 + Q·v_E = 0"),
+        ), ()),
+    ))
+
+
+def _sample_e2_12(rng):
+    return {"AB": _int(rng, 20, 35), "BC": _int(rng, 60, 80), "CD": _int(rng, 50, 70), "AD": _int(rng, 70, 90),
+            "theta1": _off_axis(rng), "DE": _int(rng, 20, 45), "Q": _int(rng, 50, 500, 10)}
+
+
 # ----------------------------------------------------------------------------- E2-14
 def _solve_e2_14(p):
     import numpy as np
@@ -149,23 +189,26 @@ def _solve_e2_14(p):
     rho = friction_circle(mu0, r)
 
     def locked(x):
-        sol = ds.solve(np.array([l - math.sqrt(l * l - x * x)]), order=1)   # A moves down, B right
-        return bool(np.all(static_forces(sol, {"B": -1.0}, rho=rho, mu=mu).self_locking))
+        x = np.asarray(x, dtype=float)
+        sol = ds.solve(l - np.sqrt(l * l - x * x), order=1)       # A moves down, B moves right
+        return np.asarray(static_forces(sol, {"B": np.full(x.shape, -1.0)}, rho=rho, mu=mu).self_locking)
 
     lo, hi = 1e-6 * l, (1.0 - 1e-6) * l
-    if not locked(lo) or locked(hi):
+    ends = locked(np.array([lo, hi]))
+    if not ends[0] or ends[1]:
         raise ValueError(f"Expected slider 3 to lock near x = 0 and run near x = l, got l={l!r}, r={r!r}, "
                          f"mu0={mu0!r}, mu={mu!r}")
-    for _ in range(60):                    # bisection on the solver's self-locking verdict
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if locked(mid) else (lo, mid)
+    for _ in range(8):                     # 64 solves at once per round: the bracket shrinks 64-fold
+        x = np.linspace(lo, hi, 65)
+        k = int(np.flatnonzero(locked(x))[-1])     # the verdict flips once, from locked to free
+        lo, hi = x[k], x[min(k + 1, 64)]
     return Solution("E2-14", EXAMPLES_BY_NUMBER["E2-14"].title, dict(p), (
         "x is the horizontal distance from A to B; a small resistance on slider 3 (without one every "
         "force vanishes).",), (
         Part("Self-locking", (
             Result("x_lock", 0.5 * (lo + hi), "mm",
                    "the largest x at which no push P moves slider 3: the link's force along the crossing "
-                   "tangent of the friction circles falls inside slider 3's friction cone; found by bisection "
+                   "tangent of the friction circles falls inside slider 3's friction cone; found by bracketing "
                    "on `static_forces(...).self_locking`"),
         ), ("The textbook's condition: x ≤ l sin[arctan μ + arcsin(2 r μ0 / l)].",)),
     ))
@@ -353,6 +396,16 @@ EXAMPLES = (
              "workpiece drives back). Does the press hold the workpiece by itself?",
              (Parameter("Q", 1000.0, "N"), Parameter("lam", 10.0, "deg"), Parameter("mu", 0.1, "")),
              _solve_e2_11, _sample_e2_11, tag="A"),   # the text gives no numbers: they are chosen
+    _example("E2-12", "Worked example 2-12: the forces of a four-bar without friction",
+             "A four-bar ABCD (AB = {AB} mm crank 1, BC = {BC} mm coupler 2, CD = {CD} mm rocker 3, AD = {AD} mm "
+             "frame 4) turns slowly, its crank counter-clockwise, driven by a moment M_d on the crank. A "
+             "resistance Q = {Q} N acts at the point E of the rocker, DE = {DE} mm from D, at right angles to "
+             "DE and against the rocker's motion. With the crank at θ1 = {theta1}° from AD and no friction, "
+             "find the force R12 between crank and coupler and the driving moment M_d (counter-clockwise "
+             "positive).",
+             (Parameter("AB", 30.0), Parameter("BC", 70.0), Parameter("CD", 60.0), Parameter("AD", 80.0),
+              Parameter("theta1", 60.0, "deg"), Parameter("DE", 40.0), Parameter("Q", 100.0, "N")),
+             _solve_e2_12, _sample_e2_12, tag="A"),   # the text gives no numbers: they are chosen
     _example("E2-14", "Worked example 2-14: when a double slider locks itself",
              "A link AB of length l = {l} mm joins slider 2 at A, which a push P drives down a vertical guide, "
              "to slider 3 at B on a horizontal guide through the foot of that vertical guide. Both pins have "
@@ -428,6 +481,10 @@ def draw_example(number, p, fig):
             ax.annotate(name, (z.real, z.imag), textcoords="offset points", xytext=(5, -10))
         ax.set_aspect("equal")
         ax.set_title(f"disc cam R = {p['R']:g} mm, e = {p['e']:g} mm, θ = {p['theta1']:g}°, knife-edge follower")
+    elif number == "E2-12":
+        lk, th = F._fourbar(p["AB"], p["BC"], p["CD"], p["AD"], p["theta1"])
+        F.linkage(ax, lk, th, title=f"four-bar ({p['AB']:g}, {p['BC']:g}, {p['CD']:g}, {p['AD']:g}) mm, "
+                                    f"θ1 = {p['theta1']:g}°, Q = {p['Q']:g} N at DE = {p['DE']:g} mm")
     elif number == "E2-14":
         from matplotlib.patches import Circle
 

