@@ -32,6 +32,11 @@ mpmath.mp.dps = 50
 SEEDS = [0, 1, 2, 3, 5, 8, 13, 21]
 
 
+def _givens(number, seed):
+    """The example's own numbers (seed None) or the variant ``seed``."""
+    return get(number).defaults if seed is None else get(number).variant(seed)
+
+
 def _keys(number, params):
     return {a[0]: a[2] for a in answers(get(number).solve(params))}
 
@@ -72,7 +77,7 @@ def _fourbar_rates(p):
 
 @pytest.mark.parametrize("seed", [None] + SEEDS)
 def test_e2_4_against_the_closed_loop(seed):
-    p = get("E2-4").defaults if seed is None else get("E2-4").variant(seed)
+    p = _givens("E2-4", seed)
     got, ref = _keys("E2-4", p), _fourbar_rates(p)
     assert got["omega2"] == pytest.approx(float(ref["omega2"]), rel=1e-9, abs=1e-12)
     assert got["omega3"] == pytest.approx(float(ref["omega3"]), rel=1e-9, abs=1e-12)
@@ -102,7 +107,7 @@ def _slider_rates(p):
 
 @pytest.mark.parametrize("seed", [None] + SEEDS)
 def test_e2_5_against_pythagoras(seed):
-    p = get("E2-5").defaults if seed is None else get("E2-5").variant(seed)
+    p = _givens("E2-5", seed)
     got, ref = _keys("E2-5", p), _slider_rates(p)
     assert got["v_C"] == pytest.approx(float(ref["v_C"]), rel=1e-9, abs=1e-9)
     assert got["omega2"] == pytest.approx(float(ref["omega2"]), rel=1e-9, abs=1e-12)
@@ -145,7 +150,7 @@ def _four_bar_statics_mp(p):
 
 @pytest.mark.parametrize("seed", [None] + SEEDS)
 def test_e2_12_against_virtual_work(seed):
-    p = get("E2-12").defaults if seed is None else get("E2-12").variant(seed)
+    p = _givens("E2-12", seed)
     got, ref = _keys("E2-12", p), _four_bar_statics_mp(p)
     assert got["M_d"] == pytest.approx(float(ref["M_d"]), rel=1e-8, abs=1e-8)
     assert got["R12"] == pytest.approx(float(ref["R12"]), rel=1e-8)
@@ -156,7 +161,7 @@ def test_e2_12_against_virtual_work(seed):
 def test_e2_14_against_the_textbook_condition(seed):
     """The solver's bisection on its own self-locking verdict lands on the textbook's
     closed condition x = l sin[arctan μ + arcsin(2 r μ0 / l)] (in mpmath)."""
-    p = get("E2-14").defaults if seed is None else get("E2-14").variant(seed)
+    p = _givens("E2-14", seed)
     l, r, mu0, mu = (mpmath.mpf(p[k]) for k in ("l", "r", "mu0", "mu"))
     x = l * mpmath.sin(mpmath.atan(mu) + mpmath.asin(2 * r * mu0 / l))
     # near the boundary the push grows like 1/(x - x_lock) and rounding decides the verdict
@@ -174,14 +179,14 @@ def _design_meets_its_task(p, lengths, gamma_min):
 
 @pytest.mark.parametrize("seed", [None] + SEEDS)
 def test_e2_17_design_meets_its_task(seed):
-    p = get("E2-17").defaults if seed is None else get("E2-17").variant(seed)
+    p = _givens("E2-17", seed)
     got = _keys("E2-17", p)
     _design_meets_its_task(p, (p["a"], got["l_BC"], p["c"], got["l_AD"]), got["gamma_min"])
 
 
 @pytest.mark.parametrize("seed", [None] + SEEDS)
 def test_e2_18_design_meets_its_task(seed):
-    p = get("E2-18").defaults if seed is None else get("E2-18").variant(seed)
+    p = _givens("E2-18", seed)
     got = _keys("E2-18", p)
     _design_meets_its_task(p, (got["l_AB"], p["b"], p["c"], got["l_AD"]), got["gamma_min"])
 
@@ -201,7 +206,7 @@ def test_e2_17_e2_18_textbook_numbers():
 def test_e2_7_against_the_tip_height(seed):
     """The tip's height y(θ) = e sin θ + √(R² − e² cos² θ) differentiated by mpmath.diff;
     P12 where the normal T->K meets the horizontal through A."""
-    p = get("E2-7").defaults if seed is None else get("E2-7").variant(seed)
+    p = _givens("E2-7", seed)
     R, e, w1 = (mpmath.mpf(p[k]) for k in ("R", "e", "omega1"))
     y = lambda t: e * mpmath.sin(t) + mpmath.sqrt(R * R - (e * mpmath.cos(t)) ** 2)
     t0 = mpmath.radians(mpmath.mpf(p["theta1"]))
@@ -246,7 +251,7 @@ def _wedge_mp(p):
 
 @pytest.mark.parametrize("seed", [None] + SEEDS)
 def test_e2_11_against_the_force_polygons(seed):
-    p = get("E2-11").defaults if seed is None else get("E2-11").variant(seed)
+    p = _givens("E2-11", seed)
     got, ref = _keys("E2-11", p), _wedge_mp(p)
     for key in ("P", "P_release", "eta", "eta_release"):
         assert got[key] == pytest.approx(float(ref[key]), rel=1e-9, abs=1e-9), key
@@ -268,7 +273,7 @@ def _gripper_mp(p):
 
 @pytest.mark.parametrize("seed", [None] + SEEDS)
 def test_e2_25_against_spherical_coordinates(seed):
-    p = get("E2-25").defaults if seed is None else get("E2-25").variant(seed)
+    p = _givens("E2-25", seed)
     got = _keys("E2-25", p)
     P, ap = _gripper_mp(p)
     assert (got["P_x"], got["P_y"], got["P_z"]) == pytest.approx(tuple(float(v) for v in P), rel=1e-12, abs=1e-9)
