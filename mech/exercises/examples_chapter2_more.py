@@ -485,6 +485,16 @@ def draw_example(number, p, fig):
         lk, th = F._fourbar(p["AB"], p["BC"], p["CD"], p["AD"], p["theta1"])
         F.linkage(ax, lk, th, title=f"four-bar ({p['AB']:g}, {p['BC']:g}, {p['CD']:g}, {p['AD']:g}) mm, "
                                     f"θ1 = {p['theta1']:g}°, Q = {p['Q']:g} N at DE = {p['DE']:g} mm")
+        import numpy as np
+
+        c = complex(np.ravel(lk.solve(np.array([th])).points["C"])[0])
+        u = (c - p["AD"]) / abs(c - p["AD"])
+        e = p["AD"] + p["DE"] * u
+        ax.plot([e.real], [e.imag], "ko", ms=5)
+        ax.annotate("E", (e.real, e.imag), textcoords="offset points", xytext=(6, -4))
+        tip = e + 0.3 * p["CD"] * 1j * u          # Q's line, across DE (its sense is the solution's)
+        ax.annotate("", xy=(tip.real, tip.imag), xytext=(e.real, e.imag), arrowprops={"arrowstyle": "<->"})
+        ax.annotate("line of Q", (tip.real, tip.imag), textcoords="offset points", xytext=(-20, 6), fontsize=8)
     elif number == "E2-14":
         from matplotlib.patches import Circle
 
