@@ -8,8 +8,9 @@ of :func:`~mech.exercises._sheet.student_seeds`); the writers turn that into fil
   (so that a quiz's random question draws one variant per student), numerical answers with
   the tolerance ``check`` uses and units, the variant's figure embedded as a base64
   ``<file>``, and the worked solution as general feedback;
-- :func:`write_qti`: a zip with ``imsmanifest.xml`` and a QTI 1.2 assessment whose sections
-  (one per exercise, drawing one item) hold an item per student variant, figures as files;
+- :func:`write_qti`: a zip with ``imsmanifest.xml`` and a QTI 1.2 assessment in the profile
+  Canvas imports: a ``numerical_question`` per answer and student variant, in sections (one
+  per exercise and answer, drawing one item), the figures as files;
 - :func:`write_pdf`: Typst sources compiled to a sheet and a key per student and a class
   list;
 - :func:`write_markdown`: a sheet and a key per student in Markdown and HTML.
@@ -220,74 +221,113 @@ def write_moodle(students, path, *, rtol=0.01, atol=0.01, category="mech"):
 
 
 # ----------------------------------------------------------------------------- QTI 1.2
+#: Canvas's folder token: its importer points a reference that starts with it at the
+#: package's root, where the figures are stored.
+CANVAS_FILEBASE = "$IMS-CC-FILEBASE$"
+#: The namespace of the QTI 1.2 ASI XML binding, which Canvas's own export declares.
+QTI_ASI_NAMESPACE = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
+
+
+def _qti_meta(item, fields):
+    meta = _sub(_sub(item, "itemmetadata"), "qtimetadata")
+    for label, entry in fields:
+        field = _sub(meta, "qtimetadatafield")
+        _sub(field, "fieldlabel").text = label
+        _sub(field, "fieldentry").text = entry
+
+
+def _sub(parent, tag, **attrs):
+    import xml.etree.ElementTree as ET
+
+    return ET.SubElement(parent, tag, **attrs)
+
+
+def _qti_numerical_item(section, ident, title, html_text, value, tol, feedback):
+    """One item in the profile Canvas writes and reads for a ``numerical_question``: a
+    ``response_str`` with a decimal blank, and one condition ``value`` exactly or within
+    ``[value - tol, value + tol]`` that sets the score to 100; the worked solution as the
+    general feedback shown whatever the answer."""
+    item = _sub(section, "item", ident=ident, title=title)
+    _qti_meta(item, (("question_type", "numerical_question"), ("points_possible", "1.0")))
+    pres = _sub(item, "presentation")
+    _sub(_sub(pres, "material"), "mattext", texttype="text/html").text = html_text
+    resp = _sub(pres, "response_str", ident="response1", rcardinality="Single")
+    _sub(_sub(resp, "render_fib", fibtype="Decimal"), "response_label", ident="answer1")
+    proc = _sub(item, "resprocessing")
+    _sub(_sub(proc, "outcomes"), "decvar", maxvalue="100", minvalue="0", varname="SCORE", vartype="Decimal")
+    general = _sub(proc, "respcondition", **{"continue": "Yes"})
+    _sub(_sub(general, "conditionvar"), "other")
+    _sub(general, "displayfeedback", feedbacktype="Response", linkrefid="general_fb")
+    cond = _sub(proc, "respcondition", **{"continue": "No"})
+    either = _sub(_sub(cond, "conditionvar"), "or")
+    # ten digits: Canvas takes the margin as upper bound minus the exact value
+    _sub(either, "varequal", respident="response1").text = f"{value:.10g}"
+    both = _sub(either, "and")
+    _sub(both, "vargte", respident="response1").text = f"{value - tol:.10g}"
+    _sub(both, "varlte", respident="response1").text = f"{value + tol:.10g}"
+    _sub(cond, "setvar", action="Set", varname="SCORE").text = "100"
+    fb = _sub(item, "itemfeedback", ident="general_fb")
+    _sub(_sub(_sub(fb, "flow_mat"), "material"), "mattext", texttype="text/html").text = feedback
+    return item
+
+
 def write_qti(students, path, *, rtol=0.01, atol=0.01, title="mech exercises"):
     """Write a QTI 1.2 zip for Canvas to ``path``: ``imsmanifest.xml``, the assessment
-    ``mech_quiz/mech_quiz.xml`` (a section per exercise that draws one item, an item per
-    student variant with a ``response_num`` per answer scored within the tolerance) and the
-    figures as files that the items' HTML refers to."""
+    ``mech_quiz/mech_quiz.xml`` and the figures in ``images/``.
+
+    Canvas's classic quizzes have one numerical question type, ``numerical_question``,
+    with a single number and a margin; a question with several numerical blanks does not
+    exist there (its fill-in-multiple-blanks and dropdown types match text or choices,
+    not a number within a tolerance). So each answer of an exercise is a question of its
+    own: the section (a question group that draws one item, inside the assessment's
+    ``root_section`` as Canvas writes it) ``Exercise N: key`` holds one item per student
+    variant, each with the full statement, its figure and the one
+    quantity asked, scored within the tolerance ``check`` uses (``rtol * |value| + atol``).
+    The groups draw independently, so the answers of one exercise may come from different
+    variants; every item stands alone. The figures are referred to through Canvas's
+    ``$IMS-CC-FILEBASE$`` token. Returns ``path``."""
     import xml.etree.ElementTree as ET
     import zipfile
 
     quiz = "mech_quiz"
-    qroot = ET.Element("questestinterop")
-    assessment = ET.SubElement(qroot, "assessment", ident=quiz, title=title)
+    qroot = ET.Element("questestinterop", xmlns=QTI_ASI_NAMESPACE)
+    assessment = _sub(qroot, "assessment", ident=quiz, title=title)
+    root_section = _sub(assessment, "section", ident="root_section")    # as Canvas nests its groups
     files = {}
     numbers = [it.number for it in students[0].items] if students else []
     for j, number in enumerate(numbers):
-        section = ET.SubElement(assessment, "section", ident=f"section_{number}", title=f"Exercise {number}")
-        sel = ET.SubElement(ET.SubElement(section, "selection_ordering"), "selection")
-        ET.SubElement(sel, "selection_number").text = "1"          # one variant per student
-        for st in students:
-            it = st.items[j]
-            ident = f"item_{number}_{st.seed}"
-            item = ET.SubElement(section, "item", ident=ident, title=f"Exercise {number}, variant {st.seed}")
-            meta = ET.SubElement(ET.SubElement(item, "itemmetadata"), "qtimetadata")
-            for label, entry in (("question_type", "numerical_question" if len(it.quantities) == 1
-                                  else "fill_in_multiple_blanks_question"),
-                                 ("points_possible", str(len(it.quantities)))):
-                field = ET.SubElement(meta, "qtimetadatafield")
-                ET.SubElement(field, "fieldlabel").text = label
-                ET.SubElement(field, "fieldentry").text = entry
-            fig = f"{quiz}/figures/{ident}.png"
-            files[fig] = it.figure
-            pres = ET.SubElement(item, "presentation")
-            mat = ET.SubElement(ET.SubElement(pres, "material"), "mattext", texttype="text/html")
-            mat.text = (f"<p>{html.escape(it.statement)}</p><p><img src=\"figures/{ident}.png\" "
-                        f"alt=\"Figure of exercise {number}\"></p>")
-            proc = ET.SubElement(item, "resprocessing")
-            outcomes = ET.SubElement(proc, "outcomes")
-            ET.SubElement(outcomes, "decvar", maxvalue=str(len(it.quantities)), minvalue="0", varname="SCORE",
-                          vartype="Decimal")
-            for qq in it.quantities:
-                rid = f"response_{qq.key}"
-                label = ET.SubElement(ET.SubElement(pres, "material"), "mattext", texttype="text/plain")
-                label.text = f"{qq.what} ({qq.key})" + (f", in {qq.unit}" if qq.unit else "")
-                resp = ET.SubElement(pres, "response_num", ident=rid, rcardinality="Single", numtype="Decimal")
-                ET.SubElement(resp, "render_fib", fibtype="Decimal")
-                tol = qq.tolerance(rtol, atol)
-                cond = ET.SubElement(proc, "respcondition", title=qq.key)
-                var = ET.SubElement(cond, "conditionvar")
-                ET.SubElement(var, "vargte", respident=rid).text = _fmt(qq.value - tol)
-                ET.SubElement(var, "varlte", respident=rid).text = _fmt(qq.value + tol)
-                ET.SubElement(cond, "setvar", action="Add", varname="SCORE").text = "1"
-            fb = ET.SubElement(item, "itemfeedback", ident=f"{ident}_solution")
-            fm = ET.SubElement(ET.SubElement(ET.SubElement(fb, "flow_mat"), "material"), "mattext",
-                               texttype="text/html")
-            fm.text = _solution_html(it)
+        keys = [q.key for q in students[0].items[j].quantities]
+        for p, key in enumerate(keys):
+            part = f"Exercise {number}" + (f": {key}" if len(keys) > 1 else "")
+            section = _sub(root_section, "section", ident=f"section_{number}_{key}", title=part)
+            sel = _sub(_sub(section, "selection_ordering"), "selection")
+            _sub(sel, "selection_number").text = "1"              # one variant per student
+            _sub(_sub(sel, "selection_extension"), "points_per_item").text = "1.0"
+            for st in students:
+                it = st.items[j]
+                qq = it.quantities[p]
+                fig = f"images/exercise_{number}_{st.seed}.png"
+                files[fig] = it.figure
+                text = (f"<p>{html.escape(it.statement)}</p><p><img src=\"{CANVAS_FILEBASE}/{fig}\" "
+                        f"alt=\"Figure of exercise {number}\"></p><p>Answer {p + 1} of {len(keys)}: "
+                        f"{html.escape(qq.what)} (<code>{qq.key}</code>)"
+                        + (f", in {html.escape(qq.unit)}" if qq.unit else "") + ".</p>")
+                _qti_numerical_item(section, f"item_{number}_{key}_{st.seed}", f"{part}, variant {st.seed}",
+                                    text, qq.value, qq.tolerance(rtol, atol), _solution_html(it))
     ns = "http://www.imsglobal.org/xsd/imscp_v1p1"
     manifest = ET.Element("manifest", identifier=f"{quiz}_manifest", xmlns=ns)
-    md = ET.SubElement(manifest, "metadata")
-    ET.SubElement(md, "schema").text = "IMS Content"
-    ET.SubElement(md, "schemaversion").text = "1.1.3"
-    ET.SubElement(manifest, "organizations")
-    resources = ET.SubElement(manifest, "resources")
-    res = ET.SubElement(resources, "resource", identifier=quiz, type="imsqti_xmlv1p2")
-    ET.SubElement(res, "file", href=f"{quiz}/{quiz}.xml")
-    ET.SubElement(res, "dependency", identifierref=f"{quiz}_figures")
-    figs = ET.SubElement(resources, "resource", identifier=f"{quiz}_figures", type="webcontent",
-                         href=next(iter(files), f"{quiz}/figures"))
-    for name in files:
-        ET.SubElement(figs, "file", href=name)
+    md = _sub(manifest, "metadata")
+    _sub(md, "schema").text = "IMS Content"
+    _sub(md, "schemaversion").text = "1.1.3"
+    _sub(manifest, "organizations")
+    resources = _sub(manifest, "resources")
+    res = _sub(resources, "resource", identifier=quiz, type="imsqti_xmlv1p2")
+    _sub(res, "file", href=f"{quiz}/{quiz}.xml")
+    for k, name in enumerate(files):
+        _sub(res, "dependency", identifierref=f"{quiz}_figure_{k}")
+    for k, name in enumerate(files):             # one webcontent resource per figure
+        _sub(_sub(resources, "resource", identifier=f"{quiz}_figure_{k}", type="webcontent", href=name),
+             "file", href=name)
     with zipfile.ZipFile(path, "w", compression=zipfile.ZIP_DEFLATED) as z:
         z.writestr("imsmanifest.xml", ET.tostring(manifest, encoding="utf-8", xml_declaration=True))
         z.writestr(f"{quiz}/{quiz}.xml", ET.tostring(qroot, encoding="utf-8", xml_declaration=True))

@@ -152,7 +152,8 @@ def _axes_off(ax):
     ax.set_yticks([])
 
 
-#: Drawers of figures defined outside this module, by number prefix ("E": the worked examples).
+#: Drawers of figures defined outside this module, by example number or by the prefix "E"
+#: (the worked examples).
 EXAMPLE_DRAWERS = {}
 
 
@@ -167,9 +168,10 @@ def draw(number, p, fig):
     if number.startswith("E"):
         # the worked examples draw their own figures with the helpers here, and register the
         # drawer when their module is imported (this module does not import theirs: no cycle)
-        if "E" not in EXAMPLE_DRAWERS:
+        drawer = EXAMPLE_DRAWERS.get(number, EXAMPLE_DRAWERS.get("E"))
+        if drawer is None:
             raise ValueError(f"Expected `number` to be an exercise with a figure, got {number!r}")
-        return EXAMPLE_DRAWERS["E"](number, p, fig)
+        return drawer(number, p, fig)
     ax = fig.add_subplot(111) if number not in ("2-1", "2-8", "2-23", "2-30") else None
     if number == "2-1":
         axs = fig.subplots(1, 3)

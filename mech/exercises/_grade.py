@@ -101,6 +101,8 @@ def parse_answer(text, unit):
     if m.group(2)[:1] in set("0123456789.,+-−"):
         raise ValueError(f"Expected `text` to be a number with an optional unit, got {text!r}")
     value = float(m.group(1).replace("−", "-"))
+    if not math.isfinite(value):                 # "1e400" reads as infinity
+        raise ValueError(f"Expected `text` to be a finite number, got {text!r}")
     spelt = _unit_key(m.group(2))
     if spelt is None:
         raise ValueError(f"Expected `text` in a known unit (deg, rad, mm, m, N, N m, N mm, m/s, m/s^2, rad/s, rpm ...), "

@@ -403,7 +403,7 @@ def test_main_unknown_number(capsys):
     with pytest.raises(SystemExit) as info:
         main(["variant", "2-99"])
     assert info.value.code == 2
-    assert "Expected `number` among 2-1, 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-8, 2-9, 2-10, 2-11, 2-12, 2-13, 2-14, 2-15, 2-16, 2-17, 2-18, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-25, 2-26, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32 (or a worked example among E2-1, E2-2, E2-3, E2-8, E2-9, E2-19, E2-20), got '2-99'" in capsys.readouterr().err
+    assert "Expected `number` among 2-1, 2-2, 2-3, 2-4, 2-5, 2-6, 2-7, 2-8, 2-9, 2-10, 2-11, 2-12, 2-13, 2-14, 2-15, 2-16, 2-17, 2-18, 2-19, 2-20, 2-21, 2-22, 2-23, 2-24, 2-25, 2-26, 2-27, 2-28, 2-29, 2-30, 2-31, 2-32 (or a worked example among E2-1, E2-2, E2-3, E2-4, E2-5, E2-7, E2-8, E2-9, E2-11, E2-12, E2-14, E2-17, E2-18, E2-19, E2-20, E2-25), got '2-99'" in capsys.readouterr().err
 
 
 def test_main_invalid_values(capsys):

@@ -9,6 +9,13 @@ with numbers as Moodle's Cloze parser reads them; for QTI 1.2 (ASI), the content
 and enumerated attributes of the ASI DTD for every element used, and for the IMS content
 package, those of ``imsmanifest.xml`` (IMS CP 1.1). A model is a regular expression over
 the sequence of an element's child tags; an element not in the models is an error.
+
+On top of QTI 1.2, the profile Canvas's classic quizzes export and import: the item's
+``question_type`` metadata one of Canvas's types, a ``numerical_question`` answered in one
+``response_str`` (ident ``response1``) with a decimal ``render_fib``, figures referred to
+through ``$IMS-CC-FILEBASE$``. A small ASI scorer (:func:`qti_score`) runs each item's
+response processing on a response, so that the QTI's grading can be compared with
+``check``'s. Neither Moodle nor Canvas runs here: these checks stand in for an import.
 """
 
 import base64
@@ -136,6 +143,20 @@ def validate_moodle(path):
 
 # ----------------------------------------------------------------------------- QTI 1.2 (ASI DTD)
 _ENUM_VARTYPE = {"Integer", "String", "Decimal", "Scientific", "Boolean", "Enumerated", "Set"}
+_CONDITIONS = ("(not |and |or |unanswered |other |varequal |varlt |varlte |vargt |vargte |varsubset |varinside "
+               "|varsubstring |durequal |durlt |durlte |durgt |durgte |var_extension )")
+
+
+def _RESPONSE(*extra):
+    """The ASI content model shared by response_lid, response_str and response_num."""
+    attrs = {"ident": bool, "rcardinality": {"Single", "Multiple", "Ordered"}, "rtiming": {"Yes", "No"}}
+    if "numtype" in extra:
+        attrs["numtype"] = {"Integer", "Decimal", "Scientific"}
+    return ("(material |material_ref )?((render_choice |render_hotspot |render_slider |render_fib "
+            "|render_extension ))(material |material_ref )?", attrs, ("ident",))
+
+
+_VAR = ("", {"respident": bool, "index": bool, "case": {"Yes", "No"}}, ("respident",))
 QTI = {
     "questestinterop": ("(qticomment )?(objectbank |assessment |((section |item )+))", {}, ()),
     "assessment": ("(qticomment )?(duration )?(qtimetadata )*(objectives )*(assessmentcontrol )*(rubric )*"
@@ -150,6 +171,7 @@ QTI = {
     "selection": ("(sourcebank_ref )?(selection_number )?(selection_metadata )?"
                   "((and_selection |or_selection |not_selection |selection_extension ))?", {}, ()),
     "selection_number": _TEXT_ONLY,
+    "selection_extension": ("(points_per_item )?", {}, ()), "points_per_item": _TEXT_ONLY,     # Canvas's
     "item": ("(qticomment )?(duration )?(itemmetadata )?(objectives )*(itemcontrol )*(itemprecondition )*"
              "(itempostcondition )*((itemrubric |rubric ))*(presentation )?(resprocessing )*"
              "(itemproc_extension )?(itemfeedback )*(reference )?",
@@ -163,10 +185,15 @@ QTI = {
     "material": ("(qticomment )?((mattext |matemtext |matimage |mataudio |matvideo |matapplet |matapplication "
                  "|matref |matbreak |mat_extension )+)(altmaterial )*", {"label": bool}, ()),
     "mattext": ("", {"texttype": bool, "label": bool, "charset": bool, "uri": bool}, ()),
-    "response_num": ("(material |material_ref )?((render_choice |render_hotspot |render_slider |render_fib "
-                     "|render_extension ))(material |material_ref )?",
-                     {"ident": bool, "rcardinality": {"Single", "Multiple", "Ordered"},
-                      "numtype": {"Integer", "Decimal", "Scientific"}, "rtiming": {"Yes", "No"}}, ("ident",)),
+    "response_num": _RESPONSE("numtype"),
+    "response_str": _RESPONSE(),
+    "response_lid": _RESPONSE(),
+    "render_choice": ("((material |material_ref |response_label |flow_label ))*",
+                      {"shuffle": {"Yes", "No"}, "minnumber": bool, "maxnumber": bool}, ()),
+    "response_label": ("((qticomment |material |material_ref |flow_mat ))*",
+                       {"ident": bool, "rshuffle": {"Yes", "No"}, "rarea": {"Ellipse", "Rectangle", "Bounded"},
+                        "rrange": {"Exact", "Range"}, "labelrefid": bool, "match_group": bool, "match_max": bool},
+                       ("ident",)),
     "render_fib": ("((material |material_ref |response_label |flow_label ))*",
                    {"fibtype": {"String", "Integer", "Decimal", "Scientific"}, "prompt": bool, "rows": bool,
                     "columns": bool, "maxchars": bool, "minnumber": bool, "maxnumber": bool}, ()),
@@ -176,10 +203,11 @@ QTI = {
                     "maxvalue": _NUM.match, "members": bool, "cutvalue": bool}, ()),
     "respcondition": ("(qticomment )?conditionvar (setvar )*(displayfeedback )*(respcond_extension )?",
                       {"title": bool, "continue": {"Yes", "No"}}, ()),
-    "conditionvar": ("((not |and |or |unanswered |other |varequal |varlt |varlte |vargt |vargte |varsubset "
-                     "|varinside |varsubstring |durequal |durlt |durlte |durgt |durgte |var_extension ))+", {}, ()),
-    "vargte": ("", {"respident": bool, "index": bool}, ("respident",)),
-    "varlte": ("", {"respident": bool, "index": bool}, ("respident",)),
+    "conditionvar": (f"({_CONDITIONS})+", {}, ()),
+    "or": (f"({_CONDITIONS})+", {}, ()), "and": (f"({_CONDITIONS})+", {}, ()), "not": (_CONDITIONS, {}, ()),
+    "other": _TEXT_ONLY, "unanswered": ("", {"respident": bool}, ("respident",)),
+    "varequal": _VAR, "vargte": _VAR, "varlte": _VAR, "vargt": _VAR, "varlt": _VAR,
+    "displayfeedback": ("", {"feedbacktype": {"Response", "Solution", "Hint"}, "linkrefid": bool}, ("linkrefid",)),
     "setvar": ("", {"varname": bool, "action": {"Set", "Add", "Subtract", "Multiply", "Divide"}}, ()),
     "itemfeedback": ("((flow_mat |material |solution |hint ))+", {"ident": bool, "view": bool, "title": bool},
                      ("ident",)),
@@ -200,11 +228,20 @@ MANIFEST = {
 _CP = "{http://www.imsglobal.org/xsd/imscp_v1p1}"
 
 
-def _strip_ns(el):
+_ASI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
+
+
+def _strip_ns(el, ns=_CP):
     for e in el.iter():
-        if e.tag.startswith(_CP):
-            e.tag = e.tag[len(_CP):]
+        if e.tag.startswith(ns):
+            e.tag = e.tag[len(ns):]
     return el
+
+
+def read_qti(data):
+    """The QTI document ``data`` (bytes) parsed, with the ASI namespace (which the XML
+    binding declares and the DTD form leaves out) removed from the tags."""
+    return _strip_ns(ET.fromstring(data), _ASI)
 
 
 def validate_qti(path):
@@ -231,30 +268,107 @@ def validate_qti(path):
         href = qti[0].find("file").get("href")
         if href not in names:
             return errors
-        root = ET.fromstring(z.read(href))
+        raw = ET.fromstring(z.read(href))
+        if raw.tag not in ("questestinterop", _ASI + "questestinterop"):
+            errors.append(f"root {raw.tag!r} is not questestinterop (in the ASI namespace or none)")
+        root = _strip_ns(raw, _ASI)
         errors += _conform(root, QTI)
         idents = [e.get("ident") for e in root.iter() if e.tag in ("assessment", "section", "item")]
         if len(idents) != len(set(idents)):
             errors.append("assessment, section and item idents repeat")
-        base = href.rsplit("/", 1)[0]
         for item in root.iter("item"):
-            rids = [r.get("ident") for r in item.iter("response_num")]
-            if len(rids) != len(set(rids)) or not rids:
-                errors.append(f"{item.get('ident')}: responses missing or repeated")
-            for c in item.iter("respcondition"):
-                for v in c.find("conditionvar"):
-                    if v.get("respident") not in rids:
-                        errors.append(f"{item.get('ident')}: condition on an unknown response")
-                    if not _NUM.match((v.text or "").strip()):
-                        errors.append(f"{item.get('ident')}: bound {v.text!r} not a number")
-            for src in re.findall(r'src="([^"]+)"', "".join(m.text or "" for m in item.iter("mattext"))):
-                if f"{base}/{src}" not in names:
-                    errors.append(f"{item.get('ident')}: image {src} not in the zip")
+            errors += _item_errors(item, names)
     return errors
 
 
+# ----------------------------------------------------------------------------- Canvas's profile
+#: The question types of Canvas's classic quizzes, as its QTI export and import name them
+#: in the item's ``question_type`` metadata.
+CANVAS_TYPES = {"multiple_choice_question", "true_false_question", "short_answer_question",
+                "fill_in_multiple_blanks_question", "multiple_answers_question", "multiple_dropdowns_question",
+                "matching_question", "numerical_question", "calculated_question", "essay_question",
+                "file_upload_question", "text_only_question"}
+CANVAS_FILEBASE = "$IMS-CC-FILEBASE$/"
+
+
+def _item_errors(item, names):
+    """Errors of one item against the ASI rules that cross elements and Canvas's profile
+    of a ``numerical_question``: one ``response_str`` named response1 with a decimal blank,
+    scored by conditions on that response, its figures under ``$IMS-CC-FILEBASE$``."""
+    who = item.get("ident")
+    errors = []
+    meta = {f.findtext("fieldlabel"): f.findtext("fieldentry") for f in item.iter("qtimetadatafield")}
+    kind = meta.get("question_type")
+    if kind not in CANVAS_TYPES:
+        errors.append(f"{who}: question_type {kind!r} is not a Canvas question type")
+    try:
+        if not float(meta.get("points_possible", "")) > 0:
+            errors.append(f"{who}: points_possible not positive")
+    except ValueError:
+        errors.append(f"{who}: points_possible {meta.get('points_possible')!r} not a number")
+    responses = [r for r in item.iter() if r.tag in ("response_lid", "response_str", "response_num")]
+    rids = [r.get("ident") for r in responses]
+    if len(rids) != len(set(rids)) or not rids:
+        errors.append(f"{who}: responses missing or repeated")
+    if kind == "numerical_question":
+        if [(r.tag, r.get("ident")) for r in responses] != [("response_str", "response1")]:
+            errors.append(f"{who}: a numerical_question has one response_str response1, got "
+                          f"{[(r.tag, r.get('ident')) for r in responses]}")
+        elif responses[0].find("render_fib") is None or responses[0].find("render_fib").get("fibtype") != "Decimal":
+            errors.append(f"{who}: the blank of a numerical_question is not a decimal render_fib")
+    feedback = {f.get("ident") for f in item.iter("itemfeedback")}
+    for c in item.iter("respcondition"):
+        for v in c.find("conditionvar").iter():
+            if v.tag.startswith("var"):
+                if v.get("respident") not in rids:
+                    errors.append(f"{who}: condition on an unknown response")
+                if kind == "numerical_question" and not _NUM.match((v.text or "").strip()):
+                    errors.append(f"{who}: bound {v.text!r} not a number")
+        errors += [f"{who}: feedback {d.get('linkrefid')} not in the item" for d in c.iter("displayfeedback")
+                   if d.get("linkrefid") not in feedback]
+    for src in re.findall(r'src="([^"]+)"', "".join(m.text or "" for m in item.iter("mattext"))):
+        if not src.startswith(CANVAS_FILEBASE):
+            errors.append(f"{who}: image {src} not under {CANVAS_FILEBASE}")
+        elif src[len(CANVAS_FILEBASE):] not in names:
+            errors.append(f"{who}: image {src} not in the zip")
+    return errors
+
+
+def _holds(cond, response):
+    """Whether the ASI condition ``cond`` holds for a decimal ``response`` (a string)."""
+    tag = cond.tag
+    if tag in ("conditionvar", "and"):
+        return all(_holds(c, response) for c in cond)
+    if tag == "or":
+        return any(_holds(c, response) for c in cond)
+    if tag == "not":
+        return not _holds(cond[0], response)
+    if tag == "other":
+        return True
+    x, bound = float(response), float(cond.text)
+    return {"varequal": x == bound, "vargte": x >= bound, "varlte": x <= bound, "vargt": x > bound,
+            "varlt": x < bound}[tag]
+
+
+def qti_score(item, response):
+    """The SCORE an ASI processor gives ``response`` on ``item``, as a fraction of the
+    ``decvar``'s maximum: the conditions in order, ``continue="No"`` (the default) stops."""
+    proc = item.find("resprocessing")
+    decvar = proc.find("outcomes/decvar")
+    score = float(decvar.get("defaultval", "0"))
+    for c in proc.findall("respcondition"):
+        if _holds(c.find("conditionvar"), response):
+            for sv in c.findall("setvar"):
+                v = float(sv.text)
+                score = {"Set": v, "Add": score + v, "Subtract": score - v, "Multiply": score * v,
+                         "Divide": score / v}[sv.get("action", "Set")]
+            if c.get("continue", "No") == "No":
+                break
+    return score / float(decvar.get("maxvalue"))
+
+
 # ----------------------------------------------------------------------------- the tests
-NUMBERS = ["2-3", "2-20", "2-24", "E2-1", "E2-9"]       # numerical (2-20) and Cloze questions
+NUMBERS = ["2-3", "2-20", "2-24", "E2-1", "E2-9"]       # one answer (2-20) and several
 
 
 @pytest.fixture(scope="module")
@@ -277,6 +391,46 @@ def test_moodle_xml_conforms(quiz_files):
 
 def test_qti_zip_conforms(quiz_files):
     assert validate_qti(quiz_files / "quiz.zip") == []
+
+
+def _qti_items(path):
+    with zipfile.ZipFile(path) as z:
+        root = read_qti(z.read("mech_quiz/mech_quiz.xml"))
+    return [s for s in root.iter("section") if s.find("selection_ordering") is not None]
+
+
+def test_qti_multiple_answers_one_numerical_question_each(quiz_files):
+    """Canvas has no question with several numerical blanks: an exercise with k answers is
+    k groups (one per answer) of numerical_question items, one item per student variant,
+    and the ASI scoring of each item agrees with ``check`` on four responses: the answer,
+    a number just inside and just outside ``check``'s tolerance, and a far one."""
+    from mech.exercises import get
+    from mech.exercises._sheet import answer_quantities, check_answers, solved_variant, student_seeds
+
+    sections = _qti_items(quiz_files / "quiz.zip")
+    seeds = student_seeds(11, 2)
+    multi = 0
+    for number in NUMBERS:
+        ex = get(number)
+        keyed = {s: answer_quantities(solved_variant(ex, s)[1]) for s in seeds}
+        keys = [q.key for q in keyed[seeds[0]]]
+        groups = [sec for sec in sections if sec.get("ident").startswith(f"section_{number}_")]
+        assert [sec.get("ident") for sec in groups] == [f"section_{number}_{k}" for k in keys]
+        multi += len(keys) > 1
+        for sec, key in zip(groups, keys):
+            assert sec.findtext("selection_ordering/selection/selection_number") == "1"
+            items = sec.findall("item")
+            assert [i.get("ident") for i in items] == [f"item_{number}_{key}_{s}" for s in seeds]
+            for item, s in zip(items, seeds):
+                q = next(q for q in keyed[s] if q.key == key)
+                tol = q.tolerance()
+                for response, right in ((q.value, True), (q.value + 0.98 * tol, True),
+                                        (q.value - 1.02 * tol, False), (q.value + 10 * tol + 1, False)):
+                    text = f"{response:.9g}"
+                    assert qti_score(item, text) == (1.0 if right else 0.0), (item.get("ident"), text)
+                    verdict, = check_answers(ex, s, {key: text + (f" {q.unit}" if q.unit else "")})
+                    assert verdict.right == right, (item.get("ident"), text)
+    assert multi >= 3                                  # 2-3, 2-24 and E2-9 ask for several
 
 
 def _edit_xml(src, dst, edit):
@@ -308,14 +462,16 @@ def test_moodle_validator_finds_planted_faults(quiz_files, tmp_path, edit, messa
 
 @pytest.mark.parametrize("fault, message", [
     ("item_order", "do not fit"), ("setvar", "action='Plus' not allowed"), ("figure", "not in the zip"),
-    ("manifest", "missing file"),
+    ("manifest", "missing file"), ("response_num", "one response_str response1"),
+    ("type", "not a Canvas question type"), ("filebase", "not under $IMS-CC-FILEBASE$"),
+    ("feedback", "feedback general_fb not in the item"), ("bound", "not a number"),
 ])
 def test_qti_validator_finds_planted_faults(quiz_files, tmp_path, fault, message):
     src, dst = quiz_files / "quiz.zip", tmp_path / "bad.zip"
     with zipfile.ZipFile(src) as z:
         parts = {n: z.read(n) for n in z.namelist()}
     quiz = "mech_quiz/mech_quiz.xml"
-    root = ET.fromstring(parts[quiz])
+    root = read_qti(parts[quiz])
     item = root.find(".//item")
     if fault == "item_order":                    # resprocessing before presentation
         pres = item.find("presentation")
@@ -325,6 +481,17 @@ def test_qti_validator_finds_planted_faults(quiz_files, tmp_path, fault, message
         item.find(".//setvar").set("action", "Plus")
     elif fault == "figure":
         del parts[next(n for n in parts if n.endswith(".png"))]
+    elif fault == "response_num":                # the blank as QTI allows, not as Canvas reads
+        item.find(".//response_str").tag = "response_num"
+    elif fault == "type":
+        next(f for f in item.iter("fieldentry") if f.text == "numerical_question").text = "numeric"
+    elif fault == "filebase":
+        m = item.find("presentation/material/mattext")
+        m.text = m.text.replace("$IMS-CC-FILEBASE$/", "")
+    elif fault == "feedback":
+        item.remove(item.find("itemfeedback"))
+    elif fault == "bound":
+        item.find(".//vargte").text = "about 3"
     else:
         del parts[quiz]
     if fault != "manifest":

@@ -159,10 +159,11 @@ def test_e2_9_text_result(seed):
 
 # ----------------------------------------------------------------------------- registry and inputs
 def test_examples_in_the_registry():
-    assert list(EXAMPLES) == ["E2-1", "E2-2", "E2-3", "E2-8", "E2-9", "E2-19", "E2-20"]
+    assert list(EXAMPLES) == ["E2-1", "E2-2", "E2-3", "E2-4", "E2-5", "E2-7", "E2-8", "E2-9", "E2-11", "E2-12",
+                              "E2-14", "E2-17", "E2-18", "E2-19", "E2-20", "E2-25"]
     assert get("e2-8") is get("E2-8") is EXAMPLES["E2-8"]
     with pytest.raises(ValueError, match="worked example among E2-1"):
-        get("E2-4")
+        get("E2-6")
 
 
 @pytest.mark.parametrize("number", list(EXAMPLES))
