@@ -334,18 +334,47 @@ def _conditioning(K, u, w):
     return S[-1] / S[0]
 
 
-def _pair_is_real(K, u, w):
-    """Whether the two solutions merged at the crank (u, w) (a double root, or two roots too
-    close to tell apart) are real: the quadratic model of the equations along the
-    Jacobian's null direction, ``l . F(p + t v) = g0 + g1 t + g2 t^2 / 2``, has real roots."""
-    F, J = _chord_system(K, u, w)
-    U, S, Vt = np.linalg.svd(J)
+def _pair_model(K, u, w):
+    """The quadratic model of the crank equations along their null direction at (u, w):
+    ``l . F(p + t v) = g0 + g1 t + g2 t^2 / 2``, as (v, g0, g1, g2)."""
+    U, S, Vt = np.linalg.svd(_chord_system(K, u, w)[1])
     l, v = U[:, -1], Vt[-1]
     tau = 1e-3 * max(np.linalg.norm(u - w), np.finfo(float).tiny)
     g = [l @ _chord_system(K, u + t * v[:3], w + t * v[3:])[0] for t in (-tau, 0.0, tau)]
-    g1 = (g[2] - g[0]) / (2 * tau)
-    g2 = (g[2] + g[0] - 2 * g[1]) / tau ** 2
-    return g1 * g1 - 2.0 * g2 * g[1] >= 0.0
+    return v, g[1], (g[2] - g[0]) / (2 * tau), (g[2] + g[0] - 2 * g[1]) / tau ** 2
+
+
+def _pair_is_real(K, u, w):
+    """Whether the two solutions merged at the crank (u, w) (a double root, or two roots too
+    close to tell apart) are real: the quadratic model of the equations along the
+    Jacobian's null direction (`_pair_model`) has real roots."""
+    _, g0, g1, g2 = _pair_model(K, u, w)
+    return g1 * g1 - 2.0 * g2 * g0 >= 0.0
+
+
+def _snapped(R, K, u, w):
+    """The crank (u, w) moved to the nearest root of its quadratic model (`_pair_model`) and
+    polished there by steps shorter than a quarter of the distance to the model's other
+    root, with its error (`_dyad_error`); None when the model has no real root.
+
+    A start between two real cranks a little apart may stop where the equations are small
+    but not zero; this takes it to one of the two (a simple crank is moved by rounding only).
+    """
+    v, g0, g1, g2 = _pair_model(K, u, w)
+    disc = g1 * g1 - 2.0 * g2 * g0
+    if not disc >= 0.0:
+        return None
+    if g2 == 0.0:
+        t, gap = (-g0 / g1 if g1 != 0.0 else 0.0), np.inf
+    else:
+        # the root of smaller size, without cancellation
+        q = -(g1 + np.copysign(np.sqrt(disc), g1))
+        t = 2.0 * g0 / q if q != 0.0 else -g1 / g2
+        gap = 2.0 * np.sqrt(disc) / abs(g2)
+    u1, w1 = u + t * v[:3], w + t * v[3:]
+    u1, w1 = _polish_chords(K, u1, w1, limit=min(0.25 * gap, 0.1 * np.linalg.norm(u1 - w1)))
+    u1 = u1 if u1 @ w1 >= 0.0 else -u1
+    return _dyad_error(R, u1, w1), u1, w1
 
 
 def _polish_chords(K, u, w, limit=0.5):
@@ -532,11 +561,18 @@ def burmester(R, *, imag_tol=1e-9):
         error, u, w = _polished(R, K, K0, u0, w, close)
         if error <= imag_tol and arc_between(u, w) > 0.0:
             found.append((u, w, error))
+    # near a complex pair of nearly equal solutions the equations nearly vanish at its real
+    # part (by the square of the pair's imaginary part: 1e-10 for pairs 1e-5 of the arcs
+    # apart), so such points pass the verification above, from several starts; the quadratic
+    # model along the equations' null direction tells them from real cranks (at a real
+    # crank it has a real root, at the real part of a complex pair none); a point between
+    # two real cranks close together is moved onto the nearer one (`_snapped`)
+    found = [f for f in (_snapped(R, K0, u, w) for u, w, _ in found) if f is not None and f[0] <= imag_tol]
     # one crank reached from several starts (or its antipode) is one solution
     # (two cranks are one when they differ by 1e-6 of their arcs: near the planar limit all
     # of them lie within a small cap, and only their own size measures them)
     keep = []
-    for u, w, error in sorted(found, key=lambda f: f[2]):
+    for error, u, w in sorted(found, key=lambda f: f[0]):
         if not any(min(np.linalg.norm(u - k * a) + np.linalg.norm(w - k * b) for k in (1.0, -1.0))
                    <= 1e-6 * (arc_between(u, w) + arc_between(a, b)) for a, b, _ in keep):
             keep.append((u, w, error))
