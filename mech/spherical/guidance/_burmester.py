@@ -690,7 +690,10 @@ def _common_point(Ma, Mb, P, e1, e2, x):
     (h1,), (h2,), (h3,) = _cubic_on_circles(Ma, P, vv[None])
     (k1,), (k2,), (k3,) = _cubic_on_circles(Mb, P, vv[None])
     w = (h2 * k3 - h3 * k2) * P - (h1 * k3 - h3 * k1) * vv
-    return w / np.linalg.norm(w)
+    size = np.linalg.norm(w)
+    # both coefficients vanish (orientations 1e-200 apart): no point here; P is a start that
+    # verification refuses, as any other wrong one
+    return w / size if size > 0.0 else P
 
 
 def slider_dyads(R, *, imag_tol=1e-7):
