@@ -1,7 +1,8 @@
 """Acceptance sweeps of the planar guidance functions (issue 24, item 3): 200 random and 50
 near-degenerate pose sets each.
 
-- `guidance_fourbars`: every passing four-bar, analysed by the test's own geometry (plain
+- `guidance_fourbars` (pose sets from the coupler of a random crank-rocker, so that
+  designs pass): every passing four-bar, analysed by the test's own geometry (plain
   complex arithmetic), carries its two circle points on circles about its fixed pivots
   through the five poses, on one assembly branch (the sign of the triangle B C D never
   changes), with the link lengths it reports.
@@ -19,6 +20,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+from mech.planar import FourBar
 from mech.planar.synthesis import guidance_fourbars, slider_dyads
 from tests.planar.synthesis.test_synthesis_properties import _near_degenerate, _pose_set
 
@@ -28,6 +30,27 @@ def _sets(n, seed, size=5):
     out = [_pose_set(rng, size) for _ in range(n)]
     near = [_near_degenerate(rng, k % 4) for k in range(n // 4)]
     return out + [(t[:size], d[:size]) for t, d in near]
+
+
+def _linkage_sets(n, seed):
+    """Five poses of the coupler of a random crank-rocker (crank 1, other links 2 to 4) at
+    increasing crank angles (random sets seldom have a passing design; these have one):
+    `n` spread over up to 300 deg, and `n // 4` with two crank angles 1e-3 rad apart."""
+    rng = np.random.default_rng(seed)
+    out = []
+    while len(out) < n + n // 4:
+        b, c, d = rng.uniform(2.0, 4.0, 3)
+        if 1.0 + max(b, c, d) > b + c + d - max(b, c, d):
+            continue                                        # not a crank-rocker
+        crank = np.sort(rng.uniform(0.0, np.radians(300.0), 5))
+        if len(out) >= n:
+            crank[2] = crank[1] + 1e-3
+        pose = FourBar(1.0, b, c, d, branch=int(rng.choice([-1, 1]))).solve(crank)
+        B, C = np.asarray(pose.B, complex), np.asarray(pose.C, complex)
+        theta = np.angle(C - B)
+        offset = rng.normal() + 1j * rng.normal()
+        out.append((theta, B + np.exp(1j * theta) * offset))
+    return out
 
 
 def _fourbar_problems(theta, d):
@@ -101,6 +124,13 @@ def _slider_problems(theta, d):
             if abs(complex(k.slider_point) - z) > 1e-7 * max(size, abs(z))]
 
 
+def test_passing_fourbars_of_a_few_linkage_sets_meet_their_poses():
+    sets = _linkage_sets(4, seed=3)
+    assert sum(len(guidance_fourbars(t, d).passing) for t, d in sets) >= 4
+    wrong = {k: p for k, (t, d) in enumerate(sets) if (p := _fourbar_problems(t, d))}
+    assert not wrong, wrong
+
+
 def test_slider_points_of_a_few_sets_agree_with_the_60_digit_solve():
     wrong = {k: p for k, (t, d) in enumerate(_sets(8, seed=3, size=4)) if (p := _slider_problems(t, d))}
     assert not wrong, wrong
@@ -108,7 +138,10 @@ def test_slider_points_of_a_few_sets_agree_with_the_60_digit_solve():
 
 @pytest.mark.exhaustive
 def test_guidance_fourbars_sweep():
-    wrong = {k: p for k, (t, d) in enumerate(_sets(200, seed=24)) if (p := _fourbar_problems(t, d))}
+    sets = _linkage_sets(200, seed=24)
+    wrong = {k: p for k, (t, d) in enumerate(sets) if (p := _fourbar_problems(t, d))}
+    assert sum(len(guidance_fourbars(t, d).passing) for t, d in sets) >= 200
+    assert not wrong, wrong
     assert not wrong, wrong
 
 
