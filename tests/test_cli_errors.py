@@ -31,6 +31,8 @@ def _one_line_error(result):
 
 @pytest.mark.parametrize("argv, shown", [
     (["build", "-n", "10", "/dev/null/atlas", "--quiet"], "/dev/null/atlas"),
+    # without --quiet the progress bar was drawn before the folder was found unwritable
+    (["build", "-n", "10", "/dev/null/atlas"], "`atlas`"),
     (["build", "-n", "10", "--seed", str(10**29), "ATLAS", "--quiet"], "seed"),
     (["build", "-n", "10", "--seed", str(2**63), "ATLAS", "--quiet"], "seed"),
     (["build", "-n", "-3", "ATLAS", "--quiet"], "-3"),
@@ -85,3 +87,13 @@ def test_index_cli_bad_command_lines(tmp_path, argv, shown):
 def test_index_cli_good_query_still_answers():
     result = _run("-m", "mech.index", "eq", "2-19")
     assert result.returncode == 0 and "2-19" in result.stdout, result.stderr
+
+
+@pytest.mark.parametrize("argv, shown", [
+    (["sheet", "--out", "/dev/null/sheet"], "/dev/null/sheet"),
+    (["frobnicate"], "frobnicate"),
+    ([], "required"),
+])
+def test_exercises_cli_bad_command_lines(argv, shown):
+    line = _one_line_error(_run("-m", "mech.exercises", *argv))
+    assert shown in line

@@ -9,7 +9,7 @@ wrong type are TypeErrors naming them.
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from mech.index import Index, build_index, lookup, parse_query
+from mech.index import Index, build_index, lookup, make_id, parse, parse_query
 
 NOT_STRINGS = st.one_of(st.none(), st.integers(), st.floats(allow_nan=True), st.booleans(), st.binary(max_size=8),
                         st.lists(st.text(max_size=3), max_size=2), st.complex_numbers(),
@@ -74,3 +74,12 @@ def test_root_of_the_wrong_type(bad):
 
 def test_index_is_the_public_class(index):
     assert isinstance(index, Index)
+
+
+@settings(max_examples=60, deadline=None)
+@given(text=NOT_STRINGS)
+def test_parse_and_make_id_of_a_non_string_name_text(text):
+    """`parse(None)` raised AttributeError, `make_id(None)` re's TypeError naming nothing."""
+    for call in (lambda: parse(text), lambda: make_id(text)):
+        with pytest.raises(TypeError, match="`text`"):
+            call()

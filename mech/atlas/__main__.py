@@ -23,6 +23,7 @@ stores its index of windows in ``ATLAS_DIR/arcs/``; later queries load it.
 import argparse
 import contextlib
 import math
+import os
 import sys
 import time
 
@@ -34,6 +35,12 @@ def _build(args):
 
     if args.append and args.resume:
         raise ValueError("Expected one of `--append` and `--resume`, got both")
+    # an unwritable folder is refused before minutes of sampling, not after
+    try:
+        os.makedirs(args.atlas, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"Expected `atlas` to be a folder that can be written, got {args.atlas!r} "
+                         f"({exc.strerror})") from None
     started = time.perf_counter()
     options = dict(seed=args.seed, harmonics=args.harmonics, samples=args.samples, block=args.block,
                    min_transmission=math.radians(args.min_transmission), progress=not args.quiet,

@@ -57,7 +57,10 @@ def build_block(seed, index, block, harmonics, samples, lengths, coupler, min_tr
         drawn = sample_fourbars(block, seed=block_seed(seed, index), lengths=lengths, coupler=coupler,
                                 min_transmission=min_transmission)
     good = drawn.take(drawn.usable)
-    sig, _ = signatures_of(good, harmonics, samples)
+    # a curve that did not assemble, or shrank to a point (a link 1e-200 of the others),
+    # has no signature: its NaN row is dropped below, quietly
+    with np.errstate(invalid="ignore", divide="ignore"):
+        sig, _ = signatures_of(good, harmonics, samples)
     finite = np.all(np.isfinite(sig), axis=1)          # a pose that did not assemble
     return good.take(finite).columns(), sig[finite]
 

@@ -114,6 +114,11 @@ class Constraints:
         fixed pivots in the target's frame (complex), needed when `pivot_box` is set.
         """
         a, b, c, d = (float(x) for x in (fourbar.a, fourbar.b, fourbar.c, fourbar.d))
+        # every test below compares ratios: in units of the longest link, no square overflows
+        # or underflows (a linkage of 1e200 or 1e-200)
+        longest = max(a, b, c, d)
+        if longest > 0.0:
+            a, b, c, d = a / longest, b / longest, c / longest, d / longest
         out = []
         if self.driven:
             g0, gpi = transmission_margins(a, b, c, d, 0.0)

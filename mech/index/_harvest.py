@@ -91,6 +91,8 @@ def make_id(text):
     """
     import unicodedata
 
+    if not isinstance(text, str):
+        raise TypeError(f"Expected `text` to be a string, got {text!r} of type {type(text).__name__}")
     text = _plain(text)
     text = unicodedata.normalize("NFKD", text).encode("ascii", "ignore").decode("ascii")
     text = _NON_ID.sub("-", " ".join(text.lower().split()))

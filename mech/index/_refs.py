@@ -133,6 +133,8 @@ def parse(text, *, spherical=False, known_sections=()):
     >>> parse("the monograph's chapter 5, §§1.3 to 1.5", spherical=True)
     [('chapter', '5'), ('section', '1.3'), ('section', '1.4'), ('section', '1.5')]
     """
+    if not isinstance(text, str):
+        raise TypeError(f"Expected `text` to be a string, got {text!r} of type {type(text).__name__}")
     text = text.replace("\\text{-}", "-").replace("\u2011", "-")
     found = []
     spans = []

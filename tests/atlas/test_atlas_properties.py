@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from mech.atlas import (build_atlas, build_sphere_atlas, curve_signature, query, query_sphere, refine, resample,
+from mech.atlas import (build_atlas, build_sphere_atlas, curve_signature, find_linkages, query, query_sphere, refine, resample,
                         sample_fourbars, sample_slider_cranks, sample_sphere_fourbars)
 
 EXPONENTS = st.integers(min_value=-300, max_value=300)
@@ -169,3 +169,16 @@ def test_subnormal_target(atlas, target, s):
     assert np.isfinite(best.relative_error) and np.isfinite(best.error) and np.all(np.isfinite(best.curve))
     assert np.all(np.isfinite(_quiet(curve_signature, target * s)))
     assert best.index == 17 if s > 1e-315 else True
+
+
+@pytest.mark.parametrize("s", [1e-200, 1e200])
+def test_find_linkages_is_unit_free(atlas, target, s):
+    """The driven-crank check of `find_linkages` squared the link lengths: a target of 1e200
+    overflowed (OverflowError) and one of 1e-200 divided by zero."""
+    ref = find_linkages(atlas, target, starts=2, samples=32, iterations=3)
+    got = _quiet(find_linkages, atlas, target * s, starts=2, samples=32, iterations=3)
+    assert len(got) == len(ref)
+    for m, r in zip(got, ref):
+        assert np.isfinite(m.relative_error)
+        assert m.relative_error == pytest.approx(r.relative_error, rel=1e-6, abs=1e-12)
+        assert m.linkage.fourbar.d / s == pytest.approx(r.linkage.fourbar.d, rel=1e-6)

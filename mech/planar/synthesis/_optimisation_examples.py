@@ -82,7 +82,10 @@ def steering_trapezoid_model(a=1480.0, h=2960.0, *, theta_max=np.radians(30.0), 
     steps = nonnegative_int("steps", steps, 10**6)
     if steps < 1:
         raise ValueError(f"Expected `steps` >= 1, got {steps}")
-    lo, hi = finite_array("arm_range", arm_range)
+    bounds = finite_array("arm_range", arm_range)
+    if bounds.shape != (2,):
+        raise ValueError(f"Expected `arm_range` of two numbers (low, high), got shape {bounds.shape}: {arm_range!r}")
+    lo, hi = bounds
     if not 0.0 < lo < hi < 0.5:
         raise ValueError(f"Expected `arm_range` with 0 < low < high < 0.5, got {arm_range!r}")
     clearance = real_number("clearance", clearance)

@@ -244,7 +244,10 @@ def path_design(A, B1, C1, D, points, *, rtol=1e-9):
     for name, (u, v) in (("B1", (B1, A)), ("C1", (C1, B1)), ("D", (D, C1)), ("A", (A, D))):
         if u == v:
             raise ValueError(f"Expected `{name}` distinct from its neighbouring pivot, got {u}")
-    rot = _locate(A, B1, C1, D, points)
+    # the rotations are angles: found in units of the task's size, so that squares of
+    # lengths near the float range neither overflow nor underflow
+    size = max(abs(A), abs(B1), abs(C1), abs(D), float(np.max(np.abs(points))))
+    rot = _locate(A / size, B1 / size, C1 / size, D / size, points / size)
     B = points + np.exp(1j * rot) * (B1 - points[0])
     design = _analyse(A, B1, C1, D, points, np.angle(B - A), rot, rtol)
     if design is None:
@@ -306,6 +309,9 @@ def path_residuals(design, points, crank_angles):
         raise ValueError(
             f"Expected `points` and `crank_angles` of one shape (n,), got {points.shape} and {crank_angles.shape}"
         )
+    for name, (u, v) in (("B1", (B1, A)), ("C1", (C1, B1)), ("D", (D, C1)), ("A", (A, D))):
+        if u == v:
+            raise ValueError(f"Expected `design` with `{name}` distinct from its neighbouring pivot, got {u}")
     first = _analyse(A, B1, C1, D, np.array([P1]), np.array([np.angle(B1 - A)]), np.zeros(1), 1.0)
     if first is None:
         lengths = (abs(B1 - A), abs(C1 - B1), abs(C1 - D), abs(D - A))
@@ -528,7 +534,11 @@ def path_untimed(points, *, A=None, D=None, initial=(), starts=100, seed=0, max_
     for g in guesses:
         Ag = g[0] if norm["A"] is None else norm["A"]
         Dg = g[3] if norm["D"] is None else norm["D"]
-        t0 = _cramer_rotations(Ag, g[1], g[2], Dg, p)
+        # a guess (or fixed pivot) far beyond the task's size may overflow: no start there
+        with np.errstate(all="ignore"):
+            t0 = _cramer_rotations(Ag, g[1], g[2], Dg, p)
+        if not np.all(np.isfinite(t0)):
+            continue
         free = [v for v, f in ((Ag, norm["A"]), (Dg, norm["D"])) if f is None] + [g[1], g[2]]
         x0 = np.concatenate([np.ravel([[v.real, v.imag] for v in free]), t0])
         with np.errstate(all="ignore"):
@@ -540,7 +550,7 @@ def path_untimed(points, *, A=None, D=None, initial=(), starts=100, seed=0, max_
         Ar, B1r, C1r, Dr, _, t = unpack(sol.x)
         piv = np.array([Ar, B1r, C1r, Dr])
         links = np.abs(piv - np.roll(piv, 1))
-        if res > tol or np.min(links) <= distinct_tol or np.max(np.abs(piv)) > 1.0 / distinct_tol:
+        if not res <= tol or np.min(links) <= distinct_tol or np.max(np.abs(piv)) > 1.0 / distinct_tol:
             continue
         if any(np.max(np.abs(piv - q)) <= distinct_tol for q, _, _ in roots):
             continue

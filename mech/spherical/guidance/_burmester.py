@@ -334,18 +334,47 @@ def _conditioning(K, u, w):
     return S[-1] / S[0]
 
 
-def _pair_is_real(K, u, w):
-    """Whether the two solutions merged at the crank (u, w) (a double root, or two roots too
-    close to tell apart) are real: the quadratic model of the equations along the
-    Jacobian's null direction, ``l . F(p + t v) = g0 + g1 t + g2 t^2 / 2``, has real roots."""
-    F, J = _chord_system(K, u, w)
-    U, S, Vt = np.linalg.svd(J)
+def _pair_model(K, u, w):
+    """The quadratic model of the crank equations along their null direction at (u, w):
+    ``l . F(p + t v) = g0 + g1 t + g2 t^2 / 2``, as (v, g0, g1, g2)."""
+    U, S, Vt = np.linalg.svd(_chord_system(K, u, w)[1])
     l, v = U[:, -1], Vt[-1]
     tau = 1e-3 * max(np.linalg.norm(u - w), np.finfo(float).tiny)
     g = [l @ _chord_system(K, u + t * v[:3], w + t * v[3:])[0] for t in (-tau, 0.0, tau)]
-    g1 = (g[2] - g[0]) / (2 * tau)
-    g2 = (g[2] + g[0] - 2 * g[1]) / tau ** 2
-    return g1 * g1 - 2.0 * g2 * g[1] >= 0.0
+    return v, g[1], (g[2] - g[0]) / (2 * tau), (g[2] + g[0] - 2 * g[1]) / tau ** 2
+
+
+def _pair_is_real(K, u, w):
+    """Whether the two solutions merged at the crank (u, w) (a double root, or two roots too
+    close to tell apart) are real: the quadratic model of the equations along the
+    Jacobian's null direction (`_pair_model`) has real roots."""
+    _, g0, g1, g2 = _pair_model(K, u, w)
+    return g1 * g1 - 2.0 * g2 * g0 >= 0.0
+
+
+def _snapped(R, K, u, w):
+    """The crank (u, w) moved to the nearest root of its quadratic model (`_pair_model`) and
+    polished there by steps shorter than a quarter of the distance to the model's other
+    root, with its error (`_dyad_error`); None when the model has no real root.
+
+    A start between two real cranks a little apart may stop where the equations are small
+    but not zero; this takes it to one of the two (a simple crank is moved by rounding only).
+    """
+    v, g0, g1, g2 = _pair_model(K, u, w)
+    disc = g1 * g1 - 2.0 * g2 * g0
+    if not disc >= 0.0:
+        return None
+    if g2 == 0.0:
+        t, gap = (-g0 / g1 if g1 != 0.0 else 0.0), np.inf
+    else:
+        # the root of smaller size, without cancellation
+        q = -(g1 + np.copysign(np.sqrt(disc), g1))
+        t = 2.0 * g0 / q if q != 0.0 else -g1 / g2
+        gap = 2.0 * np.sqrt(disc) / abs(g2)
+    u1, w1 = u + t * v[:3], w + t * v[3:]
+    u1, w1 = _polish_chords(K, u1, w1, limit=min(0.25 * gap, 0.1 * np.linalg.norm(u1 - w1)))
+    u1 = u1 if u1 @ w1 >= 0.0 else -u1
+    return _dyad_error(R, u1, w1), u1, w1
 
 
 def _polish_chords(K, u, w, limit=0.5):
@@ -410,8 +439,12 @@ def burmester(R, *, imag_tol=1e-9):
     displacements lie within a small cap (arcs of 0.1 rad or less), the cranks of the planar
     task the orientations approach (`_planar_starts`) are polished and verified too: they lie
     within the square of the cap of the spherical ones, where the sextic's roots may have
-    drifted too far to lead to them. A crank reached from several starts (or its antipode)
-    is one solution; the real solutions are the distinct verified cranks. Complex solutions
+    drifted too far to lead to them. Each verified crank is then moved to the nearest root
+    of the quadratic model of the equations along their null direction and polished again
+    (`_snapped`): a point where a complex pair of nearly equal solutions nearly vanishes
+    (its real part passes the verification) has a model without real roots and is dropped,
+    and a start stopped between two real cranks close together reaches one of them. A crank
+    reached from several starts (or its antipode) is one solution; the real solutions are the distinct verified cranks. Complex solutions
     come in pairs, so an odd number of cranks means two solutions meet at one of them (the
     one where the equations are nearest singular): the quadratic model of the equations
     along their null direction there says whether the two are real (the dyad is listed once
@@ -457,6 +490,10 @@ def burmester(R, *, imag_tol=1e-9):
     onto caps of 1e-5 to 1e-8 rad per unit length, the count of real cranks agrees with a
     60-digit solve of the same orientations (each float64 matrix read as the rotation
     nearest it: at such caps its rounding off a rotation is as large as the task) (tested).
+    For sets 1e-9 to 1e-11 (in a pose's position) from a planar double root, carried onto
+    caps of 1e-5 to 1e-8 (two solutions about 1e-5 of the arcs apart), 191 of 192 counts
+    agree with that solve (six such families); the one left, at a cap of 1e-8, is a real
+    pair about 3e-6 apart that no start reaches.
     For Example 2-15 carried to the sphere
     by `planar_orientations` at scale s, all four cranks are found from s = 1e-3 to 3e-8;
     the best four-bar reproduces the orientations to 1e-15 rad at s = 1e-3, 2e-14 at 1e-4,
@@ -532,11 +569,18 @@ def burmester(R, *, imag_tol=1e-9):
         error, u, w = _polished(R, K, K0, u0, w, close)
         if error <= imag_tol and arc_between(u, w) > 0.0:
             found.append((u, w, error))
+    # near a complex pair of nearly equal solutions the equations nearly vanish at its real
+    # part (by the square of the pair's imaginary part: 1e-10 for pairs 1e-5 of the arcs
+    # apart), so such points pass the verification above, from several starts; the quadratic
+    # model along the equations' null direction tells them from real cranks (at a real
+    # crank it has a real root, at the real part of a complex pair none); a point between
+    # two real cranks close together is moved onto the nearer one (`_snapped`)
+    found = [f for f in (_snapped(R, K0, u, w) for u, w, _ in found) if f is not None and f[0] <= imag_tol]
     # one crank reached from several starts (or its antipode) is one solution
     # (two cranks are one when they differ by 1e-6 of their arcs: near the planar limit all
     # of them lie within a small cap, and only their own size measures them)
     keep = []
-    for u, w, error in sorted(found, key=lambda f: f[2]):
+    for error, u, w in sorted(found, key=lambda f: f[0]):
         if not any(min(np.linalg.norm(u - k * a) + np.linalg.norm(w - k * b) for k in (1.0, -1.0))
                    <= 1e-6 * (arc_between(u, w) + arc_between(a, b)) for a, b, _ in keep):
             keep.append((u, w, error))
@@ -654,7 +698,10 @@ def _common_point(Ma, Mb, P, e1, e2, x):
     (h1,), (h2,), (h3,) = _cubic_on_circles(Ma, P, vv[None])
     (k1,), (k2,), (k3,) = _cubic_on_circles(Mb, P, vv[None])
     w = (h2 * k3 - h3 * k2) * P - (h1 * k3 - h3 * k1) * vv
-    return w / np.linalg.norm(w)
+    size = np.linalg.norm(w)
+    # both coefficients vanish (orientations 1e-200 apart): no point here; P is a start that
+    # verification refuses, as any other wrong one
+    return w / size if size > 0.0 else P
 
 
 def slider_dyads(R, *, imag_tol=1e-7):

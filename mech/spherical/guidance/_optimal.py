@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mech._geometry import unit_rows as _unit
-from mech._validate import InputTypeError, _show, finite_array, nonnegative_number, option
+from mech._validate import MAX_ANGLE, InputTypeError, _show, finite_array, nonnegative_number, option
 from mech.spherical._fourbar import SphericalFourBar
 from mech.spherical._types import classify
 from mech.spherical.guidance._dyads import SphericalDyad, arc_between
@@ -294,6 +294,10 @@ def optimal_guidance(R, start=None, *, objective="orientation", theta_input=None
         steps = finite_array("theta_input", theta_input)
         if steps.shape != (n,):
             raise ValueError(f"Expected `theta_input` of shape ({n},), got shape {steps.shape}")
+        if not np.max(np.abs(steps)) < MAX_ANGLE:
+            # beyond 2**52 rad float64 names no direction (and the search ran for minutes)
+            raise ValueError(f"Expected `theta_input` of angles below 2**52 ~ 4.5e15 rad in size, got "
+                             f"{_show(theta_input)}")
         if objective != "orientation":
             raise ValueError(f"Expected `theta_input` only with objective 'orientation', got {objective!r}")
     start = _start_from(R, start)

@@ -198,8 +198,9 @@ def _exact_task(R, theta, crank_pivot, rtol, sweep):
     if not (np.all(np.diff(theta) > 0) and theta[-1] - theta[0] < _TWO_PI):
         raise ValueError(f"Expected `theta` strictly increasing and spanning less than a turn, got {theta.tolist()!r}")
     A = finite_array("crank_pivot", crank_pivot)
-    if A.shape != (3,) or not np.linalg.norm(A) > 0:
+    if A.shape != (3,) or not np.any(A != 0.0):
         raise ValueError(f"Expected `crank_pivot` a non-zero 3-vector, got {_show(crank_pivot)}")
+    A = A / np.max(np.abs(A))                  # only its direction counts: 1e-200 and 1e200 too
     A = A / np.linalg.norm(A)
     rtol = nonnegative_number("rtol", rtol)
     sweep = integer("sweep", sweep, minimum=2)

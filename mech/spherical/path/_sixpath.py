@@ -26,7 +26,7 @@ import time
 import numpy as np
 
 from mech._generated import spherical_linkage as _g
-from mech._validate import branch_sign, finite_array, option, real_number
+from mech._validate import MAX_ANGLE, branch_sign, finite_array, option, real_number
 from mech.spherical.path._synthesis import (_FIFTEEN, _bounds, _design, _residual_vectors, _sixbar, _task, _tol,
                                             path_verify)
 
@@ -99,6 +99,10 @@ def _starts(start):
         x = x[None]
     if x.ndim != 2 or x.shape[1] != 15 or x.shape[0] < 1:
         raise ValueError(f"Expected `start` of shape (15,) or (k, 15), got shape {x.shape}")
+    # its entries are angles and arcs: beyond 2**52 rad float64 names no direction
+    if x.size and not np.max(np.abs(x)) < MAX_ANGLE:
+        raise ValueError(f"Expected `start` of angles below 2**52 ~ 4.5e15 rad in size, got an entry "
+                         f"{float(x.flat[np.argmax(np.abs(x))])!r}")
     return x
 
 

@@ -27,7 +27,7 @@ import numpy as np
 
 from mech._geometry import unit_rows
 from mech._task import precision_points
-from mech._validate import branch_sign, finite_array, option, real_array, real_number
+from mech._validate import MAX_ANGLE, branch_sign, finite_array, option, real_array, real_number
 from mech.spherical._fourbar import SphericalFourBar, ground_frame
 
 __all__ = ["SphericalPathDesign", "path_fourbar", "path_verify"]
@@ -119,6 +119,10 @@ def _start(start, size):
     x = finite_array("start", start)
     if x.shape != (size,):
         raise ValueError(f"Expected `start` of shape ({size},), got shape {x.shape}")
+    # its entries are angles and arcs: beyond 2**52 rad float64 names no direction
+    if x.size and not np.max(np.abs(x)) < MAX_ANGLE:
+        raise ValueError(f"Expected `start` of angles below 2**52 ~ 4.5e15 rad in size, got an entry "
+                         f"{float(x.flat[np.argmax(np.abs(x))])!r}")
     return x
 
 

@@ -130,3 +130,49 @@ def test_two_hundred_random_sets_near_the_planar_limit():
 def test_fifty_near_degenerate_sets_near_the_planar_limit():
     wrong = _sweep(_near_degenerate_sets(50, seed=24))
     assert not wrong, wrong
+
+
+# Three planar pose sets (random, seeds 1 to 3) with pose 5 moved along `move`: at
+# ``t = T_MERGE`` two real planar cranks merge (found by bisection of the planar count to one
+# float64 step). Carried onto caps of 1e-5 to 1e-7, sets 1e-9 to 1e-11 either side of the
+# merge have two real or complex solutions about 1e-5 of the arcs apart; verification alone
+# took the real parts of such a complex pair for cranks (6 dyads where the 60-digit solve
+# finds 2), and a start stopped between two real cranks for a third one.
+NEAR_DOUBLE = {
+    1: ([0.03546487410077015, 1.351391088977806, -1.067521161841099, 1.3459483414117317, -0.5645056439685436],
+        [0.4463745723640113 + 0.02842224131579679j, -0.5369532353602852 + 0.5467129866124469j,
+         0.5811181041963531 - 0.7364540870016669j, 0.36457239618607573 - 0.16290994799305278j,
+         0.294132496655526 - 0.48211931267997826j],
+        0.5988462126346276 + 0.03972210748165899j, 0.06863130322789565),
+    2: ([-0.7151635972520508, -0.6045265697576301, 0.9426772217828407, -1.2242521735947092, 0.300301577896962],
+        [1.1441658720372287 + 0.9775674511260357j, -0.32542283686782436 - 0.31055654665915255j,
+         0.7738065867276614 - 0.3288239040579627j, 0.28121066979764925 - 0.7921467553588982j,
+         -0.5538228364240524 + 0.45495807124085547j],
+        -0.09919805171738795 + 0.5452887139646817j, -0.8692088077529806),
+    3: ([0.5952790348412806, -0.6240641520364469, 1.1134174493807674, -0.6738768691557687, 0.18542915619266975],
+        [0.22915390521326254 + 0.06135350983817159j, -2.4938942784579905 - 0.9640996635412404j,
+         0.690124770162812 + 0.7572210447581504j, 0.4913682607449912 - 2.034167273443428j,
+         -1.6388571438904884 - 0.9144945379945887j],
+        0.7095799877420675 + 1.156401048432157j, 0.6820106519407746),
+}
+
+
+def _near_double(key, offset, scale):
+    theta, d, move, t_merge = NEAR_DOUBLE[key]
+    return planar_orientations(theta, np.array(d) + np.r_[0, 0, 0, 0, (t_merge + offset) * move], scale)
+
+
+def test_real_part_of_a_close_complex_pair_is_not_a_crank():
+    R = _near_double(2, 1e-10, 1e-5)
+    assert not _check(R)
+    assert len(burmester(R).dyads) == 2
+
+
+# about five minutes: 54 sets, each with a 60-digit solve
+@pytest.mark.exhaustive
+@pytest.mark.parametrize("key", sorted(NEAR_DOUBLE))
+def test_solutions_about_1e_5_apart_counted_as_the_60_digit_solve(key):
+    sets = (_near_double(key, sign * gap, scale) for gap in (1e-9, 1e-10, 1e-11) for sign in (1.0, -1.0)
+            for scale in (1e-5, 1e-6, 1e-7))
+    wrong = _sweep(sets)
+    assert not wrong, wrong
