@@ -8,7 +8,6 @@ rolling mill's geometry, cos(phi) = (D + a - h)/D with tan(phi) = mu.
 
 import math
 import re
-import time
 
 import mpmath
 import pytest
@@ -154,12 +153,10 @@ def test_sheet_command_one_file_per_student(tmp_path, capsys):
 def test_sheet_simulated_exercises_thirty_students(number):
     """The exercises that simulate a linkage (and root-solve 2-7's crank) make a 30-student
     sheet too: 45 s for 2-7 before the multisection refinement and the shared solve, about
-    5 s after on a loaded machine; the bound here is generous. The key is the solution of
+    5 s after on a loaded machine (timed in benchmarks/bench_sheet.py, not here). The key is the solution of
     each student's variant (the solve that accepted the variant is the one keyed), and 2-7's
     tool stroke is 2 AD to rounding."""
-    start = time.perf_counter()
     sheet, key = make_sheet([number], students=30, seed=2026)
-    assert time.perf_counter() - start < 90.0        # 56 s for 2-7 with eight test runs on two cores
     assert sheet.count("## Student ") == 30 and key.count("### Exercise ") == 30
     ex = get(number)
     for s in student_seeds(2026, 30)[:2]:

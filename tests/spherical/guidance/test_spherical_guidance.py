@@ -7,7 +7,6 @@ at 50 digits, all six solutions); numpy's eigenvectors for poles; mpmath for the
 and the planar guidance functions of `mech.planar.synthesis` for the limit of small arcs.
 """
 
-import time
 
 import mpmath
 import numpy as np
@@ -272,16 +271,6 @@ def test_guidance_fourbars_planar_example_on_sphere():
     arcs = np.array([best.linkage.a, best.linkage.b, best.linkage.c, best.linkage.d]) / 1e-3
     lengths = np.array([planar.linkage.a, planar.linkage.b, planar.linkage.c, planar.linkage.d])
     assert np.max(np.abs(arcs - lengths) / lengths) < 0.02
-
-
-def test_burmester_benchmark_under_100_ms():
-    rng = np.random.default_rng(7)
-    R = _random_set(rng, 5)
-    burmester(R)
-    start = time.perf_counter()
-    for _ in range(5):
-        burmester(R)
-    assert (time.perf_counter() - start) / 5 < 0.1
 
 
 def test_bad_orientations():

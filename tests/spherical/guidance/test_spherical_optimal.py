@@ -8,7 +8,6 @@ output angle of `SphericalFourBar.solve` (not the generator's own simulation), w
 extrema found by sign segments written here.
 """
 
-import time
 
 import mpmath
 import numpy as np
@@ -89,23 +88,17 @@ def test_exact_task_recovers_the_linkage(objective):
 
 
 def test_noisy_task_both_objectives_compared():
-    """Orientation error against constant length (§3.7): result and speed, checked by analysis."""
+    """Orientation error against constant length (§3.7), each fit checked by analysis (which
+    objective is cheaper is measured in benchmarks/bench_spherical_optimal.py, not here)."""
     R = _task(noise=0.01)
-    timing, fits = {}, {}
+    fits = {}
     for objective in ("orientation", "constant_length"):
-        optimal_guidance(R, objective=objective)                   # warm (imports)
-        runs = []
-        for _ in range(2):                                         # best of two: the machine is shared
-            t = time.perf_counter()
-            fits[objective] = optimal_guidance(R, objective=objective, rtol=0.02)
-            runs.append(time.perf_counter() - t)
-        timing[objective] = min(runs)
+        fits[objective] = optimal_guidance(R, objective=objective, rtol=0.02)
         assert fits[objective].design.passes
         _check_by_analysis(fits[objective], R)
-    # the orientation objective is the better fit of what it measures; constant length is cheaper
+    # the orientation objective is the better fit of what it measures
     assert fits["orientation"].rms_error <= fits["constant_length"].rms_error * 1.001
     assert fits["constant_length"].rms_error < 2.0 * fits["orientation"].rms_error
-    assert timing["constant_length"] < timing["orientation"]
 
 
 def test_prescribed_input_angles_are_kept():
