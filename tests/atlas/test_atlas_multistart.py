@@ -86,8 +86,8 @@ def test_rocker_crank_is_relabelled_with_the_motor_at_its_turning_link():
     """The relabelled linkage, driven at its new crank by the planar solver, traces the closed
     curve of the rocker-crank's circuit (the atlas's curve: the rocking input over both
     branches), and the other branch does not."""
-    from mech.atlas._constraints import motor_at_crank
-    from mech.atlas._sampling import coupler_points, describe
+    from mech.atlas._planar._constraints import motor_at_crank
+    from mech.atlas._planar._sampling import coupler_points, describe
 
     a, b, c, d, p, q = 2.4, 2.0, 0.7, 2.2, 0.8, 0.5           # c shortest: a rocks, c turns
     for branch in (1, -1):

@@ -14,8 +14,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from mech._validate import bool_flag, instance, integer, planar_points, real_number
-from mech.atlas._signature import _close_arc, _curves, _resample_rows, _samples, normal_form
-from mech.atlas._store import Atlas
+from mech.atlas._planar._signature import _close_arc, _curves, _resample_rows, normal_form
+from mech.atlas._planar._store import Atlas
 from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["Match", "PlacedLinkage", "PlacedSliderCrank", "query"]
@@ -448,7 +448,7 @@ def _nearest(atlas, candidates, m):
 
 def _query_arc(atlas, z, k, shortlist, span, starts):
     """`query` for an open arc `z` (1, m): window signatures, then alignment of both ends."""
-    from mech.atlas._arcs import align_arcs
+    from mech.atlas._planar._arcs import align_arcs
 
     n = atlas.samples
     t = _resample_rows(z, n // 2 + 1, False)
@@ -486,7 +486,7 @@ def _arc_shortlist(atlas, closed, base, span, starts, m, second=False):
     each (with the fraction of a step towards the next) and the signature distance. With
     `second`, each row comes twice: from its best start and from its best start an eighth
     of a cycle or more away (`window_distances`)."""
-    from mech.atlas._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
+    from mech.atlas._planar._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
 
     form = normal_form(closed, atlas.harmonics, base)
     sigs, norms, gaps = arc_signatures(atlas, span, starts, base)

@@ -15,10 +15,10 @@ from collections import namedtuple
 import numpy as np
 
 from mech._validate import instance, integer, nonnegative_number
-from mech.atlas._constraints import Constraints, motor_at_crank
-from mech.atlas._refine import _placed_ok, _refine_closed, _unit
-from mech.atlas._search import query
-from mech.atlas._signature import _curves, _resample_rows, _samples
+from mech.atlas._planar._constraints import Constraints, motor_at_crank
+from mech.atlas._planar._refine import _placed_ok, _refine_closed, _unit
+from mech.atlas._planar._search import query
+from mech.atlas._planar._signature import _curves, _resample_rows, _samples
 
 __all__ = ["find_linkages"]
 
