@@ -187,6 +187,19 @@ def _done_parts(folder, settings, build, resume, read_settings, check_settings):
     return last, rows
 
 
+def _fingerprint(atlas):
+    """A digest of the rows of `atlas` (count, settings, a sample of signatures and seeds): an
+    index stored beside the Parquet parts belongs to this atlas only if the digests agree."""
+    import hashlib
+
+    n = len(atlas)
+    step = max(1, n // 65536)
+    digest = hashlib.sha256(json.dumps([n, atlas.settings], sort_keys=True).encode())
+    for part in (atlas.signatures[::step], atlas.signatures[-1:], atlas.seeds[::step]):
+        digest.update(np.ascontiguousarray(part).tobytes())
+    return digest.hexdigest()
+
+
 class _NoBar:
     def __enter__(self):
         return self

@@ -21,6 +21,8 @@ from mech.planar.kinematics._fourbar import FourBar
 __all__ = ["Match", "PlacedLinkage", "PlacedSliderCrank", "query"]
 
 _BLOCK = 1 << 15
+#: The index is used when the short list is below this fraction (1/_ANN_SHARE) of the atlas.
+_ANN_SHARE = 64
 _UPSAMPLE = 16
 _DENSE = 4
 _REFINE = 8
@@ -424,8 +426,12 @@ def _query_closed(atlas, z, k, shortlist, resampled):
             for rank, j in enumerate(np.argsort(np.where(np.isnan(w), np.inf, err), kind="stable")[:k])]
 
 
-def _nearest(atlas, candidates, m):
+def _nearest(atlas, candidates, m, exact=None):
     """Rows of the `m` signatures nearest any of the `candidates` (4, D), in no order.
+
+    Through the atlas's approximate index when one is stored with it (`exact` None) and the
+    short list is small beside the atlas; ``exact=True`` always streams every signature,
+    ``exact=False`` always uses the index (the recall measurements).
 
     The four normal forms of a curve have the same norm, so the nearest of them to a row is
     the one with the largest dot product: ``d^2 = |s|^2 + |c|^2 - 2 max_k s . c_k``. The
@@ -435,6 +441,14 @@ def _nearest(atlas, candidates, m):
     """
     sig, norms = atlas._signatures32
     c = np.ascontiguousarray(candidates, dtype=np.float32)
+    index = None if exact else atlas._ann
+    if index is not None and (exact is False or m < len(atlas) // _ANN_SHARE):
+        # the graph index gives the rows near any normal form; they are ranked exactly
+        rows = index.search(c, m)
+        if rows.size <= m:
+            return rows
+        score = norms[rows] - 2.0 * np.max(sig[rows] @ c.T, axis=1)
+        return rows[np.argpartition(score, m - 1)[:m]]
     score = np.empty(len(atlas), dtype=np.float32)
     for start in range(0, len(atlas), _BLOCK):
         block = slice(start, start + _BLOCK)

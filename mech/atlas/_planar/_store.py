@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from mech._validate import integer
-from mech.atlas._parts import _CHUNK_KEY, _next_part, _read_parts, _table_columns
+from mech.atlas._parts import _CHUNK_KEY, _fingerprint, _next_part, _read_parts, _table_columns
 from mech.atlas._planar._sampling import FourBarSamples, coupler_curves
 
 __all__ = ["ATLAS_VERSION", "Atlas"]
@@ -105,6 +105,19 @@ class Atlas:
         """The signatures in float32 (C order) and their squared norms, for the brute force."""
         sig = np.ascontiguousarray(self.signatures, dtype=np.float32)
         return sig, np.einsum("ij,ij->i", sig, sig)
+
+    @cached_property
+    def _ann(self):
+        """The approximate nearest-neighbour index stored with the atlas, or None (loaded on
+        first use; `query` then searches the signatures through it)."""
+        from mech.atlas._planar._ann import load_index
+
+        return load_index(self)
+
+    @cached_property
+    def _driven_cache(self):
+        """The rows that satisfy a set of constraints, as a smaller atlas, by constraints (filled by `find_linkages`)."""
+        return {}
 
     @cached_property
     def _arc_cache(self):
@@ -212,19 +225,6 @@ def _check_settings(have, new, where):
 
 #: Folder, inside an atlas folder, of the stored open-arc indexes (window signatures).
 ARC_FOLDER = "arcs"
-
-
-def _fingerprint(atlas):
-    """A digest of the rows of `atlas` (count, settings, a sample of signatures and seeds): an
-    index stored beside the Parquet parts belongs to this atlas only if the digests agree."""
-    import hashlib
-
-    n = len(atlas)
-    step = max(1, n // 65536)
-    digest = hashlib.sha256(json.dumps([n, atlas.settings], sort_keys=True).encode())
-    for part in (atlas.signatures[::step], atlas.signatures[-1:], atlas.seeds[::step]):
-        digest.update(np.ascontiguousarray(part).tobytes())
-    return digest.hexdigest()
 
 
 def _arc_file(atlas, key):
