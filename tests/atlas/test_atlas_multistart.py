@@ -114,6 +114,32 @@ def test_no_rocker_crank_returned(atlas):
     assert all(m.kind in ("crank-rocker", "double-crank") for m in found)
 
 
+def test_feasible_rows_are_those_a_motor_drives(atlas):
+    """The rows searched apart for starts: checked row by row by simulation of the linkage
+    (motor at the crank, or at the rocker for a rocker-crank), not by the closed forms."""
+    from mech.atlas._planar._multistart import _feasible
+
+    sub, rows = _feasible(atlas, Constraints())
+    assert len(sub) == rows.size and 0 < rows.size < len(atlas)
+    np.testing.assert_array_equal(sub.signatures, atlas.signatures[rows])
+    L = atlas.linkages
+    theta = np.linspace(0.0, 2 * np.pi, 2001)
+
+    def driven(a, b, c, d):
+        pose = FourBar(a, b, c, d).solve(theta)
+        if not np.all(pose.valid):
+            return False
+        delta = np.abs(np.angle((pose.B - pose.C) / (d - pose.C)))
+        return np.minimum(delta, np.pi - delta).min() >= math.radians(30) - 1e-6
+
+    feasible = set(rows.tolist())
+    for i in np.random.default_rng(1).choice(len(atlas), 150, replace=False):
+        a, b, c, d = (float(getattr(L, k)[i]) for k in "abcd")
+        ok = (driven(a, b, c, d) or driven(c, b, a, d)) and max(a, b, c, d) <= 10 * min(a, b, c, d)
+        assert (int(i) in feasible) == ok, (i, a, b, c, d)
+    assert _feasible(atlas, Constraints()) is _feasible(atlas, Constraints())     # kept with the atlas
+
+
 def test_pivot_box_keeps_the_fixed_pivots_inside(atlas):
     target = _example_2_1_curve()
     free = find_linkages(atlas, target, starts=3)

@@ -90,7 +90,9 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
     """Find four-bars tracing a closed target curve: query an atlas, then refine from several starts.
 
     The best matches of `query` and their cognates give the starts, those satisfying the
-    constraints first (a rocker-crank relabelled with the motor at its fully turning link);
+    constraints first (a rocker-crank relabelled with the motor at its fully turning link),
+    with the best matches among the atlas rows that satisfy the constraints (searched apart,
+    so that a target whose nearest rows are all rockers still gets starts a motor drives);
     each of `starts` of them is refined by SLSQP under the constraints (`refine`). Then the
     best match and its cognates are refined without constraints, and the two best results,
     with their cognates, start constrained refinements too (the constrained optimum often
