@@ -22,6 +22,9 @@ Layers, each usable alone:
   within a ratio of 10);
 - builds in blocks (`build_atlas`), on a Dask cluster if asked, written part by part to a
   folder and resumable; the index of open-arc windows is stored in that folder on first use;
+- an approximate nearest-neighbour index of the signatures (faiss's HNSW graph, optional),
+  built by ``python -m mech.atlas index ATLAS_DIR`` and stored in the folder; a new process
+  that loads the atlas loads it and searches through it, else the search is exact;
 - on the sphere: `sphere_signature` (invariant to rotations of the sphere, start and
   direction; :ref:`deriv-sphere-signature`), `sample_sphere_fourbars` (full-turn and
   rocking inputs, type, branch, minimum transmission angle), `build_sphere_atlas` (blocks,
