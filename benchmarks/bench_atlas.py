@@ -58,7 +58,7 @@ from bench_coupler_curve import machine, versions  # noqa: E402
 
 from mech.atlas import (build_atlas, build_sphere_atlas, curve_signature, find_linkages, query,  # noqa: E402
                         query_sphere, resample, sample_fourbars)
-from mech.atlas._sampling import coupler_curves, coupler_points  # noqa: E402
+from mech.atlas._planar._sampling import coupler_curves, coupler_points  # noqa: E402
 from mech.planar import FourBar, cognates  # noqa: E402
 
 GOAL_QUERY_S = 0.050
@@ -126,7 +126,7 @@ def _open_arcs(atlas, trials, rng):
     first five); a miss whose first match fits the target within the noise (relative error
     at most `NOISE_FIT` times the 1e-3 noise) is counted apart, as an equivalent fit.
     """
-    from mech.atlas._arcs import arc_signatures
+    from mech.atlas._planar._arcs import arc_signatures
 
     t, c = time.perf_counter(), time.process_time()
     query(atlas, _arc_target(atlas, 0, rng), closed=False)            # the window signatures
@@ -270,7 +270,7 @@ def _dask_build(n, single):
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster, \
             Client(cluster) as client:
         start_s = time.perf_counter() - t
-        client.run(lambda: __import__("mech.atlas._build"))     # warm the workers (imports)
+        client.run(lambda: __import__("mech.atlas._planar._build"))     # warm the workers (imports)
         build_atlas(20_000, seed=1, client=client)
         t = time.perf_counter()
         atlas = build_atlas(n, seed=0, client=client)

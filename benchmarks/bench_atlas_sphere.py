@@ -40,7 +40,7 @@ from bench_coupler_curve import machine, versions  # noqa: E402
 
 from mech.atlas import (build_sphere_atlas, find_sphere_linkages, query_sphere, refine_sphere,  # noqa: E402
                         sample_sphere_fourbars)
-from mech.atlas._sphere_sampling import sphere_points  # noqa: E402
+from mech.atlas._sphere._sampling import sphere_points  # noqa: E402
 
 OUTPUT = HERE / "results" / "atlas_sphere.json"
 NOISE = 1e-3

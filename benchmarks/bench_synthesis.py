@@ -13,7 +13,10 @@ The targets are files in ``benchmarks/targets/``, each with its source in its he
   linkage and seed are in each header (``--write-targets`` writes them again, identically).
 
 For each target: `query` on a four-bar atlas (closed curves, or open arcs against parts of
-curves), then, for a closed target, `find_linkages` (several refined starts). Recorded: the
+curves), then, for a closed target, `find_linkages` (several refined starts) with its default
+constraints (a crank that turns fully, a transmission angle of at least 30 degrees, links
+within a ratio of 10) and again without any (``Constraints.none()``), and the ratio of the
+two errors. Recorded: the
 relative RMS error of the first match and of the refined best (`Match.relative_error`),
 the wall time of each step, and the answer as a designer would build it
 (`mech.planar.export.design_of`): its Grashof type, where the motor goes and whether that
@@ -50,7 +53,7 @@ sys.path.insert(0, str(HERE.parent))
 
 from bench_coupler_curve import machine, versions  # noqa: E402
 
-from mech.atlas import Atlas, build_atlas, find_linkages, query, read_target, refine, resample  # noqa: E402
+from mech.atlas import Atlas, Constraints, build_atlas, find_linkages, query, read_target, refine, resample  # noqa: E402
 from mech.planar import FourBar, grashof  # noqa: E402
 from mech.planar.export import design_of  # noqa: E402
 
@@ -235,6 +238,14 @@ def run_target(atlas, name, source, closed, z, starts, iterations, refine_open=F
         row["refine_s"] = round(time.perf_counter() - t0, 2)
         row["refined_error"] = float(best.relative_error)
         row["answer"] = _answer(best)
+        # the same search without constraints (any four-bar, triple-rockers included): the
+        # error a motor-driven answer is compared with
+        t0 = time.perf_counter()
+        free = find_linkages(atlas, z, starts=starts, iterations=iterations, constraints=Constraints.none())[0]
+        row["free_s"] = round(time.perf_counter() - t0, 2)
+        row["free_error"] = float(free.relative_error)
+        row["free_kind"] = free.kind
+        row["driven_over_free"] = round(row["refined_error"] / row["free_error"], 3)
     elif refine_open:
         t0 = time.perf_counter()
         best = refine(first, z)
@@ -276,6 +287,8 @@ def main(argv=None):
         print(f"{name:18s} {'closed' if closed else 'open  '} query {100 * row['query_error']:6.2f} % "
               f"{row['query_ms']:7.1f} ms" + (f"  refined {100 * row['refined_error']:6.2f} % {row['refine_s']:6.1f} s"
                                               if "refined_error" in row else " " * 28)
+              + (f"  free {100 * row['free_error']:6.2f} % ({row['free_kind']})  x{row['driven_over_free']:.2f}"
+                 if "free_error" in row else "")
               + f"  {a['kind']:14s} motor {a['motor']} {'turns' if a['full_turn'] else 'rocks'}  "
               f"gamma_min {a['gamma_min_deg']:5.1f} deg  ratio {a['link_ratio']}", flush=True)
         rows.append(row)
@@ -292,6 +305,7 @@ def main(argv=None):
         "closed_answers_that_turn": sum(r["answer"]["full_turn"] for r in closed_rows),
         "closed_answers_gamma_30_ratio_10": sum(r["answer"]["full_turn"] and r["answer"]["gamma_min_deg"] >= 30
                                                 and r["answer"]["link_ratio"] <= 10 for r in closed_rows),
+        "closed_driven_within_1_5_free": sum(r["driven_over_free"] <= 1.5 for r in closed_rows),
         "open_query_error_median": float(np.median([r["query_error"] for r in rows if not r["closed"]]))
         if len(rows) > len(closed_rows) else None,
     }

@@ -22,32 +22,40 @@ Layers, each usable alone:
   within a ratio of 10);
 - builds in blocks (`build_atlas`), on a Dask cluster if asked, written part by part to a
   folder and resumable; the index of open-arc windows is stored in that folder on first use;
+- an approximate nearest-neighbour index of the signatures (faiss's HNSW graph, optional),
+  built by ``python -m mech.atlas index ATLAS_DIR`` and stored in the folder; a new process
+  that loads the atlas loads it and searches through it, else the search is exact;
 - on the sphere: `sphere_signature` (invariant to rotations of the sphere, start and
   direction; :ref:`deriv-sphere-signature`), `sample_sphere_fourbars` (full-turn and
   rocking inputs, type, branch, minimum transmission angle), `build_sphere_atlas` (blocks,
   Dask, Parquet, resumable), `SphereAtlas`, `query_sphere` (closed curves and open arcs),
   `refine_sphere` and `find_sphere_linkages`.
 
+The code is grouped by subject: ``mech/atlas/_planar/`` holds the planar atlas (sampling,
+signatures, store, build, search, open arcs, constraints, refinement, multistart),
+``mech/atlas/_sphere/`` the spherical one, and the two modules they share sit beside them
+(``_records``: the sample records; ``_parts``: blocks, seeds and Parquet parts of a build).
+
 ``import mech.atlas`` loads NumPy only: pyarrow is imported when an atlas is saved or
 loaded, tqdm when a build shows a progress bar, Dask only by the code that makes a client.
 """
 
-from mech.atlas._signature import curve_signature, read_points, resample
+from mech.atlas._planar._signature import curve_signature, read_points, resample
 from mech.atlas._target import read_svg, read_target
-from mech.atlas._sampling import FourBarSamples, sample_fourbars
-from mech.atlas._store import ATLAS_VERSION, Atlas
-from mech.atlas._build import build_atlas
-from mech.atlas._search import Match, PlacedLinkage, PlacedSliderCrank, query
-from mech.atlas._constraints import Constraints
-from mech.atlas._refine import refine
-from mech.atlas._slider import SliderCrankSamples, sample_slider_cranks
-from mech.atlas._multistart import find_linkages
-from mech.atlas._sphere_signature import sphere_signature
-from mech.atlas._sphere_sampling import SphereSamples, sample_sphere_fourbars
-from mech.atlas._sphere_store import SPHERE_ATLAS_VERSION, SphereAtlas
-from mech.atlas._sphere_build import build_sphere_atlas
-from mech.atlas._sphere_fit import SphereMatch
-from mech.atlas._sphere_search import find_sphere_linkages, query_sphere, refine_sphere
+from mech.atlas._planar._sampling import FourBarSamples, sample_fourbars
+from mech.atlas._planar._store import ATLAS_VERSION, Atlas
+from mech.atlas._planar._build import build_atlas
+from mech.atlas._planar._search import Match, PlacedLinkage, PlacedSliderCrank, query
+from mech.atlas._planar._constraints import Constraints
+from mech.atlas._planar._refine import refine
+from mech.atlas._planar._slider import SliderCrankSamples, sample_slider_cranks
+from mech.atlas._planar._multistart import find_linkages
+from mech.atlas._sphere._signature import sphere_signature
+from mech.atlas._sphere._sampling import SphereSamples, sample_sphere_fourbars
+from mech.atlas._sphere._store import SPHERE_ATLAS_VERSION, SphereAtlas
+from mech.atlas._sphere._build import build_sphere_atlas
+from mech.atlas._sphere._fit import SphereMatch
+from mech.atlas._sphere._search import find_sphere_linkages, query_sphere, refine_sphere
 
 __all__ = [
     "ATLAS_VERSION",

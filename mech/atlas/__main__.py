@@ -3,6 +3,7 @@
     python -m mech.atlas build ATLAS_DIR -n 10000 [--seed 0] [--min-transmission DEG]
                                           [--resume | --append] [--dask local:2 | --dask tcp://host:8786]
                                           [--mechanism four-bar | --mechanism slider-crank]
+    python -m mech.atlas index ATLAS_DIR
     python -m mech.atlas query ATLAS_DIR points.csv [-k 5] [--open] [--plot out.png]
     python -m mech.atlas query ATLAS_DIR --target drawing.svg|points.csv [--json d.json] [--svg d.svg]
                                           [--dxf d.dxf] [--units mm] [--link-width W] [--hole H]
@@ -17,7 +18,11 @@ with ``--open``) from a CSV file of ``x, y`` rows, or from the one path of an SV
 with their cognates, the motor's place and the smallest transmission angle; ``--plot``
 draws them over the target (Matplotlib); ``--json``, ``--svg`` and ``--dxf`` write the best
 one as files a maker uses (`mech.planar.export`). The first open query of an atlas
-stores its index of windows in ``ATLAS_DIR/arcs/``; later queries load it.
+stores its index of windows in ``ATLAS_DIR/arcs/``; later queries load it. ``index``
+builds the approximate nearest-neighbour index of the signatures (faiss's HNSW graph) and
+stores it in ``ATLAS_DIR/ann/``: every later query of that atlas loads it and searches
+through it (worth it from about 10^6 linkages; without it, or without faiss, the search is
+exact).
 """
 
 import argparse
@@ -55,6 +60,16 @@ def _build(args):
             where = f"to {args.atlas}"
     total = len(Atlas.from_parquet(args.atlas))
     print(f"wrote {len(atlas)} linkages {where} in {time.perf_counter() - started:.2f} s (atlas now {total})")
+
+
+def _index(args):
+    from mech.atlas import Atlas
+    from mech.atlas._planar._ann import build_index
+
+    started = time.perf_counter()
+    atlas = Atlas.from_parquet(args.atlas)
+    build_index(atlas)
+    print(f"indexed {len(atlas)} signatures in {time.perf_counter() - started:.2f} s (stored in {args.atlas}/ann)")
 
 
 @contextlib.contextmanager
@@ -203,6 +218,8 @@ def main(argv=None):
                    help="compute the blocks on Dask: local:N for a local cluster of N workers, "
                         "or a scheduler address such as tcp://host:8786")
     b.add_argument("--quiet", action="store_true", help="no progress bar")
+    x = sub.add_parser("index", help="build and store the approximate nearest-neighbour index of an atlas (faiss)")
+    x.add_argument("atlas")
     q = sub.add_parser("query", help="find linkages for a curve (closed, or open with --open) given as a CSV of x, y rows")
     q.add_argument("atlas")
     q.add_argument("points", nargs="?", help="the target: a CSV of x, y rows (or give --target)")
@@ -218,7 +235,7 @@ def main(argv=None):
     q.add_argument("--plot", help="draw the matches over the target into this image file")
     args = parser.parse_args(argv)
     try:
-        (_build if args.command == "build" else _query)(args)
+        {"build": _build, "index": _index, "query": _query}[args.command](args)
     except (ValueError, TypeError, OSError, ImportError) as exc:
         # a bad value, an unreadable or unwritable path, a missing optional package: one line
         print(f"error: {exc}", file=sys.stderr)

@@ -12,7 +12,7 @@ import numpy as np
 
 from mech._errors import InputTypeError
 from mech._validate import _show, integer
-from mech.atlas._signature import read_points
+from mech.atlas._planar._signature import read_points
 
 __all__ = ["read_svg", "read_target"]
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from mech.atlas import build_atlas, query
-from mech.atlas._sampling import coupler_points
+from mech.atlas._planar._sampling import coupler_points
 from mech.planar import FourBar, cognates
 
 
@@ -53,7 +53,7 @@ def test_query_open_arc_exact(atlas):
 def test_query_open_arc_caches_window_signatures(atlas):
     """Window signatures: float16, four harmonics per side, 65 windows (the first again at
     the end, so the path of signatures closes), about 2 kB per linkage at 64 starts."""
-    from mech.atlas._arcs import ARC_HARMONICS
+    from mech.atlas._planar._arcs import ARC_HARMONICS
 
     query(atlas, [0, 1, 1 + 1j, 2 + 1j], closed=False, k=1)
     sigs, norms, gaps = atlas._arc_cache[(0.5, 64)]
@@ -75,8 +75,8 @@ def test_window_segments_rank_half_step_targets_first(atlas):
     Targets whose first harmonic is small (|c_1| < 0.1 of the RMS radius, where the
     normalisation of the signature is ill-conditioned and the windows' signatures jump as
     their start moves) are left out and counted."""
-    from mech.atlas._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
-    from mech.atlas._signature import _close_arc, _resample_rows, normal_form
+    from mech.atlas._planar._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
+    from mech.atlas._planar._signature import _close_arc, _resample_rows, normal_form
 
     sigs, norms, gaps = arc_signatures(atlas, 0.5, 64)
     wide = sigs.astype(np.float64)
@@ -135,8 +135,8 @@ def test_align_arcs_rocking_input_from_offset_ends(atlas):
     """Noise-free half cycles of rocking inputs, the search started a half sub-arc step off:
     moving the ends in arc length reaches the true ends (the steps in u stalled where the
     coupler point is slow at one end and fast at the other)."""
-    from mech.atlas._arcs import align_arcs
-    from mech.atlas._signature import _resample_rows
+    from mech.atlas._planar._arcs import align_arcs
+    from mech.atlas._planar._signature import _resample_rows
 
     rng = np.random.default_rng(1)
     rows = np.flatnonzero(atlas.linkages.kind == "triple-rocker")[:12]
@@ -244,7 +244,7 @@ def test_open_arc_index_is_stored_with_the_atlas_and_loaded(tmp_path, monkeypatc
     """Issue 28: the window signatures were built again in every process (minutes at 10^5).
     An atlas read from a folder stores them there; a new reading loads them (building them
     is made to fail here), and an appended part makes them be built anew."""
-    import mech.atlas._arcs as arcs
+    import mech.atlas._planar._arcs as arcs
     from mech.atlas import Atlas
 
     build_atlas(300, seed=4).to_parquet(tmp_path)

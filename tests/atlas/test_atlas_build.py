@@ -4,7 +4,7 @@ import pytest
 
 pytest.importorskip("pyarrow")
 
-import mech.atlas._build as build_module  # noqa: E402
+import mech.atlas._planar._build as build_module  # noqa: E402
 from mech.atlas import Atlas, build_atlas  # noqa: E402
 
 SETTINGS = {"seed": 11, "block": 128, "harmonics": 6, "samples": 64}

@@ -56,7 +56,7 @@ def test_cli_build_resume_and_dask(tmp_path, capsys):
 def test_cli_query_open_arc(tmp_path, capsys):
     folder = tmp_path / "atlas"
     assert main(["build", str(folder), "-n", "300", "--seed", "4", "--quiet"]) == 0
-    from mech.atlas._sampling import coupler_points
+    from mech.atlas._planar._sampling import coupler_points
 
     atlas = Atlas.from_parquet(folder)
     row = int(np.flatnonzero(atlas.linkages.full_turn)[0])

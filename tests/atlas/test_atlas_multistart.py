@@ -86,8 +86,8 @@ def test_rocker_crank_is_relabelled_with_the_motor_at_its_turning_link():
     """The relabelled linkage, driven at its new crank by the planar solver, traces the closed
     curve of the rocker-crank's circuit (the atlas's curve: the rocking input over both
     branches), and the other branch does not."""
-    from mech.atlas._constraints import motor_at_crank
-    from mech.atlas._sampling import coupler_points, describe
+    from mech.atlas._planar._constraints import motor_at_crank
+    from mech.atlas._planar._sampling import coupler_points, describe
 
     a, b, c, d, p, q = 2.4, 2.0, 0.7, 2.2, 0.8, 0.5           # c shortest: a rocks, c turns
     for branch in (1, -1):
@@ -112,6 +112,32 @@ def test_no_rocker_crank_returned(atlas):
     found = find_linkages(atlas, target, starts=2)
     assert found[0].relative_error < 1e-3
     assert all(m.kind in ("crank-rocker", "double-crank") for m in found)
+
+
+def test_feasible_rows_are_those_a_motor_drives(atlas):
+    """The rows searched apart for starts: checked row by row by simulation of the linkage
+    (motor at the crank, or at the rocker for a rocker-crank), not by the closed forms."""
+    from mech.atlas._planar._multistart import _feasible
+
+    sub, rows = _feasible(atlas, Constraints())
+    assert len(sub) == rows.size and 0 < rows.size < len(atlas)
+    np.testing.assert_array_equal(sub.signatures, atlas.signatures[rows])
+    L = atlas.linkages
+    theta = np.linspace(0.0, 2 * np.pi, 2001)
+
+    def driven(a, b, c, d):
+        pose = FourBar(a, b, c, d).solve(theta)
+        if not np.all(pose.valid):
+            return False
+        delta = np.abs(np.angle((pose.B - pose.C) / (d - pose.C)))
+        return np.minimum(delta, np.pi - delta).min() >= math.radians(30) - 1e-6
+
+    feasible = set(rows.tolist())
+    for i in np.random.default_rng(1).choice(len(atlas), 150, replace=False):
+        a, b, c, d = (float(getattr(L, k)[i]) for k in "abcd")
+        ok = (driven(a, b, c, d) or driven(c, b, a, d)) and max(a, b, c, d) <= 10 * min(a, b, c, d)
+        assert (int(i) in feasible) == ok, (i, a, b, c, d)
+    assert _feasible(atlas, Constraints()) is _feasible(atlas, Constraints())     # kept with the atlas
 
 
 def test_pivot_box_keeps_the_fixed_pivots_inside(atlas):

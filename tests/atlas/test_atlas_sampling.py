@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from mech.atlas import FourBarSamples, sample_fourbars
-from mech.atlas._sampling import describe
+from mech.atlas._planar._sampling import describe
 from mech.planar import FourBar, grashof
 
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from mech.atlas import Match, build_atlas, query
-from mech.atlas._sampling import coupler_curves
+from mech.atlas._planar._sampling import coupler_curves
 from mech.planar import FourBar, cognates
 
 

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import assume, given, settings, strategies as st
 
 from mech.atlas import curve_signature, read_points, resample
-from mech.atlas._signature import normal_form
+from mech.atlas._planar._signature import normal_form
 
 N, DEGREE = 64, 6
 _coef = st.floats(-1.0, 1.0, allow_nan=False, allow_infinity=False)

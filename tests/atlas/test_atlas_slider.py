@@ -1,6 +1,6 @@
 """The slider-crank atlas: design space, store and search (``mechanism="slider-crank"``).
 
-References are independent of the vectorised code in ``mech.atlas._slider``: coupler points
+References are independent of the vectorised code in ``mech.atlas._planar._slider``: coupler points
 from ``mech.planar.Linkage`` (a crank and an RRP group with a point on the rod), the
 minimum transmission angle from ``mech.planar.forces.slider_crank_min_transmission_angle``
 (F57) and from a dense scan of the rod's angle to the guide's normal taken from
@@ -184,7 +184,7 @@ def test_cli_builds_and_queries_a_slider_crank_atlas(tmp_path, capsys):
 
 
 def test_open_half_turn_arcs_of_slider_cranks_found(atlas):
-    from mech.atlas._sampling import coupler_points
+    from mech.atlas._planar._sampling import coupler_points
 
     rng = np.random.default_rng(31)
     rows = rng.choice(np.flatnonzero(atlas.linkages.full_turn), 20, replace=False)

@@ -16,15 +16,15 @@ from pathlib import Path
 
 import numpy as np
 
-from mech._validate import _show, bool_flag, integer
-from mech.atlas._sampling import FourBarSamples, coupler_curves
+from mech._validate import integer
+from mech.atlas._parts import _CHUNK_KEY, _fingerprint, _next_part, _read_parts, _table_columns
+from mech.atlas._planar._sampling import FourBarSamples, coupler_curves
 
 __all__ = ["ATLAS_VERSION", "Atlas"]
 
 #: Format version of a stored atlas; a different version is refused on loading.
 ATLAS_VERSION = 1
 _META_KEY = b"mech.atlas"
-_CHUNK_KEY = b"mech.atlas.chunk"
 _COLUMNS = ("a", "b", "c", "d", "p", "q", "branch", "kind", "full_turn", "theta_lo", "theta_hi",
             "gamma_min", "movable", "usable")
 _SLIDER_COLUMNS = ("a", "b", "e", "p", "q", "branch", "kind", "full_turn", "theta_lo", "theta_hi",
@@ -39,7 +39,7 @@ def mechanism_of(settings):
 def columns_of(mechanism):
     """The linkage columns and their record class for a mechanism."""
     if mechanism == "slider-crank":
-        from mech.atlas._slider import SliderCrankSamples
+        from mech.atlas._planar._slider import SliderCrankSamples
 
         return _SLIDER_COLUMNS, SliderCrankSamples
     return _COLUMNS, FourBarSamples
@@ -105,6 +105,19 @@ class Atlas:
         """The signatures in float32 (C order) and their squared norms, for the brute force."""
         sig = np.ascontiguousarray(self.signatures, dtype=np.float32)
         return sig, np.einsum("ij,ij->i", sig, sig)
+
+    @cached_property
+    def _ann(self):
+        """The approximate nearest-neighbour index stored with the atlas, or None (loaded on
+        first use; `query` then searches the signatures through it)."""
+        from mech.atlas._planar._ann import load_index
+
+        return load_index(self)
+
+    @cached_property
+    def _driven_cache(self):
+        """The rows that satisfy a set of constraints, as a smaller atlas, by constraints (filled by `find_linkages`)."""
+        return {}
 
     @cached_property
     def _arc_cache(self):
@@ -193,99 +206,6 @@ def write_part(target, linkages, signatures, seeds, settings, chunk=None):
     os.replace(scratch, target)
 
 
-def read_chunk(part):
-    """The chunk record of a part written by a chunked build, or None."""
-    import pyarrow.parquet as pq
-
-    meta = pq.read_schema(part).metadata or {}
-    return json.loads(meta[_CHUNK_KEY]) if _CHUNK_KEY in meta else None
-
-
-def _folder(path):
-    if not isinstance(path, (str, os.PathLike)) or isinstance(path, bytes):
-        raise TypeError(f"Expected `path` to be a folder name, got {_show(path)}")
-    return Path(path)
-
-
-def _read_parts(path, what, version, read_settings, check_settings):
-    """The settings and Parquet tables of the atlas folder `path` (planar and spherical `from_parquet`).
-
-    `what` names the atlas in the messages ("an atlas"); `version` is the format version
-    expected; every part must have the first part's settings.
-    """
-    import pyarrow.parquet as pq
-
-    folder = _folder(path)
-    parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
-    if not parts:
-        raise ValueError(f"Expected `path` to be a folder holding {what}, got {str(path)!r}")
-    settings = read_settings(parts[0])
-    if settings.get("version") != version:
-        raise ValueError(f"Expected {what} of format version {version}, got version "
-                         f"{settings.get('version')!r} in {str(path)!r}")
-    tables = []
-    for part in parts:
-        check_settings(settings, read_settings(part), str(part))
-        tables.append(pq.read_table(part))
-    return settings, tables
-
-
-def _table_columns(tables, names):
-    """The sample columns `names` (kind as str, branch as int8), flat signatures and seeds of `tables`."""
-    cols = {name: np.concatenate([t.column(name).to_numpy() for t in tables]) for name in names}
-    cols["kind"] = cols["kind"].astype(str)
-    cols["branch"] = cols["branch"].astype(np.int8)
-    sig = np.concatenate([t.column("signature").combine_chunks().flatten().to_numpy() for t in tables])
-    seeds = np.concatenate([t.column("seed").to_numpy() for t in tables])
-    return cols, sig, seeds
-
-
-def _next_part(path, append, settings, read_settings, check_settings):
-    """The path of a new part of the atlas folder `path` (planar and spherical `to_parquet`).
-
-    Checks `append` and, when the folder holds parts, that the first has `settings` (read and
-    compared with the store's `read_settings` and `check_settings`); creates the folder.
-    """
-    append = bool_flag("append", append)
-    folder = _folder(path)
-    parts = sorted(folder.glob("part-*.parquet")) if folder.exists() else []
-    if parts and not append:
-        raise ValueError(f"Expected `path` without an atlas (or append=True), got {str(path)!r} "
-                         f"holding {len(parts)} part(s)")
-    if parts:
-        check_settings(read_settings(parts[0]), settings, str(path))
-    folder.mkdir(parents=True, exist_ok=True)
-    # after the last part (a chunked build may leave gaps in the numbers)
-    number = max((int(p.stem.split("-")[1]) for p in parts if p.stem.split("-")[1].isdigit()), default=-1) + 1
-    return folder / f"part-{number:05d}.parquet"
-
-
-def _done_parts(folder, settings, build, resume, read_settings, check_settings):
-    """The last block index on disk and the rows there, checking that they belong to `build`.
-
-    Shared by the planar and spherical builds; `read_settings` and `check_settings` are the
-    store's own.
-    """
-    parts = sorted(folder.glob("part-*.parquet")) if folder.is_dir() else []
-    if not parts:
-        return -1, 0
-    if not resume:
-        raise ValueError(f"Expected `path` without an atlas (or resume=True), got {str(folder)!r} "
-                         f"holding {len(parts)} part(s)")
-    import pyarrow.parquet as pq
-
-    last, rows = -1, 0
-    for part in parts:
-        check_settings(read_settings(part), settings, str(part))
-        chunk = read_chunk(part)
-        if chunk is None or any(chunk.get(k) != v for k, v in build.items()):
-            raise ValueError(f"Expected the parts of a build of {build} in `path` to resume, got "
-                             f"{chunk!r} in {str(part)!r}")
-        last = max(last, int(chunk["index"]))
-        rows += pq.read_metadata(part).num_rows
-    return last, rows
-
-
 def _read_settings(part):
     import pyarrow.parquet as pq
 
@@ -305,19 +225,6 @@ def _check_settings(have, new, where):
 
 #: Folder, inside an atlas folder, of the stored open-arc indexes (window signatures).
 ARC_FOLDER = "arcs"
-
-
-def _fingerprint(atlas):
-    """A digest of the rows of `atlas` (count, settings, a sample of signatures and seeds): an
-    index stored beside the Parquet parts belongs to this atlas only if the digests agree."""
-    import hashlib
-
-    n = len(atlas)
-    step = max(1, n // 65536)
-    digest = hashlib.sha256(json.dumps([n, atlas.settings], sort_keys=True).encode())
-    for part in (atlas.signatures[::step], atlas.signatures[-1:], atlas.seeds[::step]):
-        digest.update(np.ascontiguousarray(part).tobytes())
-    return digest.hexdigest()
 
 
 def _arc_file(atlas, key):

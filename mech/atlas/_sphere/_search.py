@@ -5,7 +5,7 @@ target's; the alignment stage takes a short list and finds, for every start and 
 directions, the best rotation of the sphere (the SVD solution of the orthogonal Procrustes
 problem, Kabsch's method), with all starts at once through FFT cross-correlations.
 
-Open arcs are searched by `mech.atlas._sphere_arcs` (called from `query_sphere`).
+Open arcs are searched by `mech.atlas._sphere._arcs` (called from `query_sphere`).
 
 `refine_sphere` improves a match by optimisation (SciPy's Nelder-Mead, imported when called)
 of the four arcs and the coupler point on the real curve error; `find_sphere_linkages`
@@ -17,11 +17,11 @@ import dataclasses
 import numpy as np
 
 from mech._validate import _show, bool_flag, instance, integer, nonnegative_number, real_number
-from mech.atlas._sphere_arcs import query_arc
-from mech.atlas._sphere_fit import SphereMatch, _kabsch, _kabsch_all_starts, _match, _radius
-from mech.atlas._sphere_sampling import describe_sphere, sphere_curves
-from mech.atlas._sphere_signature import _resample_closed, _signature_rows, _sphere_curves
-from mech.atlas._sphere_store import SphereAtlas, spectra
+from mech.atlas._sphere._arcs import query_arc
+from mech.atlas._sphere._fit import SphereMatch, _kabsch, _kabsch_all_starts, _match, _radius
+from mech.atlas._sphere._sampling import describe_sphere, sphere_curves
+from mech.atlas._sphere._signature import _resample_closed, _signature_rows, _sphere_curves
+from mech.atlas._sphere._store import SphereAtlas, spectra
 
 __all__ = ["find_sphere_linkages", "query_sphere", "refine_sphere"]
 

@@ -7,7 +7,7 @@ import pytest
 
 from mech.atlas import (SphereAtlas, build_sphere_atlas, find_sphere_linkages, query_sphere, refine_sphere,
                         sample_sphere_fourbars, sphere_signature)
-from mech.atlas._sphere_sampling import sphere_points
+from mech.atlas._sphere._sampling import sphere_points
 from mech.spherical import SphericalFourBar
 
 #: Relative noise added to every target (of the RMS distance of its points from their mean).
@@ -202,7 +202,7 @@ def test_sphere_signature_derivation_checks_pass():
 def test_rotation_spectrum_needs_no_frame():
     """The spectra the search adds to its short list, ``|C_k|`` over the three coordinates, read
     from the signature, equal the DFT of the raw coordinates (no principal frame), turned or not."""
-    from mech.atlas._sphere_store import spectra
+    from mech.atlas._sphere._store import spectra
 
     rng = np.random.default_rng(8)
     x = _curve(rng, 256)

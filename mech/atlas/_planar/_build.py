@@ -13,35 +13,26 @@ blocks already on disk are skipped. Dask and tqdm are imported only when asked f
 """
 
 import time
-from contextlib import closing
 
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
+from mech.atlas._parts import _blocks, _done_parts, _folder, _take_blocks, block_seed
 from mech.atlas._records import _MAX_SEED, _box
-from mech.atlas._sampling import COUPLER, LENGTHS, coupler_curves, sample_fourbars
-from mech.atlas._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
-from mech.atlas._slider import OFFSETS, RODS, check_mechanism, sample_slider_cranks
-from mech.atlas._store import (
-    ATLAS_VERSION, Atlas, _check_settings, _done_parts, _folder, _read_settings, columns_of, write_part,
+from mech.atlas._planar._sampling import COUPLER, LENGTHS, coupler_curves, sample_fourbars
+from mech.atlas._planar._signature import HARMONICS, SAMPLES, _resample_rows, _samples, normal_form
+from mech.atlas._planar._slider import OFFSETS, RODS, check_mechanism, sample_slider_cranks
+from mech.atlas._planar._store import (
+    ATLAS_VERSION, Atlas, _check_settings, _read_settings, columns_of, write_part,
 )
 
 __all__ = ["build_atlas"]
-
-#: Blocks kept in flight per worker thread of a Dask cluster.
-_AHEAD = 2
-
 
 def signatures_of(linkages, harmonics, samples):
     """Signatures (n, 4K) of the closed coupler curves of `linkages` (and their normal forms)."""
     curves = coupler_curves(linkages.columns(), samples)
     form = normal_form(_resample_rows(curves, samples, True), harmonics)
     return form.signature, form
-
-
-def block_seed(seed, index):
-    """The seed of block `index` of a build with `seed` (NumPy's SeedSequence of the pair)."""
-    return int(np.random.SeedSequence([seed, index]).generate_state(1, dtype=np.uint64)[0] >> 1)
 
 
 def build_block(seed, index, block, harmonics, samples, lengths, coupler, min_transmission, mechanism="four-bar",
@@ -63,41 +54,6 @@ def build_block(seed, index, block, harmonics, samples, lengths, coupler, min_tr
         sig, _ = signatures_of(good, harmonics, samples)
     finite = np.all(np.isfinite(sig), axis=1)          # a pose that did not assemble
     return good.take(finite).columns(), sig[finite]
-
-
-def _blocks(start, work, client, build=None, key=None):
-    """Yield ``(index, columns, signatures)`` for blocks start, start + 1, ... in order.
-
-    Without a client each block is computed here when asked for; with one, a window of
-    blocks ahead is kept running on the cluster and the results are taken in order.
-    `build` computes a block (`build_block` by default, `build_sphere_block` for the sphere)
-    and `key(j)` names block j's task (``mech-atlas-block-j`` by default).
-    """
-    build = build_block if build is None else build
-    key = (lambda j: f"mech-atlas-block-{j}") if key is None else key
-    if client is None:
-        index = start
-        while True:
-            yield (index, *build(*work(index)))
-            index += 1
-    ahead = max(1, _AHEAD * sum(client.nthreads().values()))
-    pending = {}
-    index = start
-    try:
-        while True:
-            for j in range(index, index + ahead):
-                if j not in pending:
-                    pending[j] = client.submit(build, *work(j), pure=False, key=key(j))
-            cols, sig = pending.pop(index).result()
-            yield index, cols, sig
-            index += 1
-    finally:
-        # blocks not needed: let those in flight end before releasing them (a task
-        # cancelled while it runs makes the worker log a warning)
-        from distributed import wait
-
-        wait(list(pending.values()))
-        pending.clear()
 
 
 def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None, coupler=COUPLER,
@@ -214,7 +170,7 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
 
     started = time.perf_counter()
     kept, sigs, total = _take_blocks(
-        _blocks(done + 1, work, client), n, total, seed, build, settings, folder, record, write_part, progress,
+        _blocks(done + 1, work, client, build_block), n, total, seed, build, settings, folder, record, write_part, progress,
         lambda index: (f"Expected `lengths`, `coupler` and `min_transmission` of a design space with "
                        f"movable linkages, got lengths={lengths!r}, coupler={coupler!r}, "
                        f"min_transmission={min_transmission!r}: none in {index} blocks"))
@@ -225,55 +181,8 @@ def build_atlas(n, *, seed=0, harmonics=HARMONICS, samples=SAMPLES, lengths=None
     return Atlas(record(**cols), np.concatenate(sigs), np.full(total, seed, dtype=np.int64), settings)
 
 
-def _take_blocks(blocks, n, total, seed, build, settings, folder, record, write, progress, none_message):
-    """Take the blocks of a build in order until `n` rows are kept (the planar and spherical loop).
-
-    `blocks` yields ``(index, columns, signatures)``; `total` rows are already on disk. With a
-    `folder` each block's rows are written as a Parquet part by `write` (the
-    store's `write_part`), otherwise they are kept. Returns
-    ``(kept, sigs, total)``: the kept row records, their signatures and the rows taken in all.
-    `none_message(index)` is the ValueError's text when 1000 blocks gave no usable linkage.
-    """
-    kept, sigs = [], []
-    with _bar(progress, n, total) as bar, closing(blocks) as blocks:
-        for index, cols, sig in (blocks if total < n else ()):
-            take = min(len(sig), n - total)
-            rows = record(**{k: v[:take] for k, v in cols.items()})
-            if folder is not None and take:
-                folder.mkdir(parents=True, exist_ok=True)
-                write(folder / f"part-{index:05d}.parquet", rows, sig[:take], np.full(take, seed), settings,
-                      chunk={**build, "index": index})
-            else:
-                kept.append(rows)
-                sigs.append(sig[:take])
-            total += take
-            bar.update(take)
-            if total >= n:
-                break
-            if index > 1000 and total == 0:
-                raise ValueError(none_message(index))
-    return kept, sigs, total
-
-
 def _done_blocks(folder, settings, build, resume):
     """The last block index on disk and the rows there, checking that they belong to `build`."""
     return _done_parts(folder, settings, build, resume, _read_settings, _check_settings)
 
 
-class _NoBar:
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return False
-
-    def update(self, n=1):
-        pass
-
-
-def _bar(progress, total, initial=0):
-    if not progress:
-        return _NoBar()
-    from tqdm.auto import tqdm
-
-    return tqdm(total=total, initial=initial, desc="atlas", unit="linkage")

@@ -33,8 +33,8 @@ kinematics is solved inside the search).
 
 import numpy as np
 
-from mech.atlas._sampling import coupler_points
-from mech.atlas._signature import _close_arc, _resample_rows, normal_form
+from mech.atlas._planar._sampling import coupler_points
+from mech.atlas._planar._signature import _close_arc, _resample_rows, normal_form
 
 __all__ = []
 
@@ -138,7 +138,7 @@ def arc_signatures(atlas, span, starts, base=1):
     key = (float(span), int(starts)) if base == 1 else (float(span), int(starts), int(base))
     if key in cache:
         return cache[key]
-    from mech.atlas._store import load_arc_index, save_arc_index
+    from mech.atlas._planar._store import load_arc_index, save_arc_index
 
     stored = load_arc_index(atlas, key)
     if stored is not None:

@@ -15,10 +15,11 @@ from collections import namedtuple
 import numpy as np
 
 from mech._validate import instance, integer, nonnegative_number
-from mech.atlas._constraints import Constraints, motor_at_crank
-from mech.atlas._refine import _placed_ok, _refine_closed, _unit
-from mech.atlas._search import query
-from mech.atlas._signature import _curves, _resample_rows, _samples
+from mech.atlas._planar._constraints import Constraints, motor_at_crank, transmission_margins
+from mech.atlas._planar._refine import _placed_ok, _refine_closed, _unit
+from mech.atlas._planar._search import query
+from mech.atlas._planar._store import Atlas, mechanism_of
+from mech.atlas._planar._signature import _curves, _resample_rows, _samples
 
 __all__ = ["find_linkages"]
 
@@ -33,6 +34,37 @@ _FREE = 2
 #: A relative error at which the second stage (free refinements, then constrained ones from
 #: their results) is skipped: the target is then a driven four-bar's curve, found already.
 _CLOSE = 1e-4
+
+
+def _feasible(atlas, constraints):
+    """The rows of a four-bar atlas that satisfy `constraints` as they are or relabelled with the
+    motor at the rocker (pivot box aside), as an atlas of their own with their row numbers;
+    None when there are none or the atlas holds slider-cranks. Kept with the atlas.
+
+    A row is feasible when its crank, or its rocker taken as the crank, turns fully with a
+    transmission angle of at least ``mu`` ((C2) of `mech.atlas._planar._constraints`) and its
+    longest link is at most `max_ratio` times its shortest.
+    """
+    if mechanism_of(atlas.settings) != "four-bar":
+        return None
+    key = (constraints.driven, constraints.min_transmission, constraints.max_ratio)
+    cache = atlas._driven_cache
+    if key not in cache:
+        L = atlas.linkages
+        ok = np.ones(len(atlas), dtype=bool)
+        if constraints.driven:
+            mu = max(constraints.min_transmission, 1e-3)
+            ok = np.zeros(len(atlas), dtype=bool)
+            for crank, rocker in ((L.a, L.c), (L.c, L.a)):
+                g0, gpi = transmission_margins(crank, L.b, rocker, L.d, mu)
+                ok |= (g0 >= 0.0) & (gpi >= 0.0)
+        if constraints.max_ratio is not None:
+            links = np.stack([L.a, L.b, L.c, L.d])
+            ok &= links.max(axis=0) <= constraints.max_ratio * links.min(axis=0)
+        rows = np.flatnonzero(ok & L.movable)
+        cache[key] = None if rows.size == 0 else (
+            Atlas(L.take(rows), atlas.signatures[rows], atlas.seeds[rows], atlas.settings), rows)
+    return cache[key]
 
 
 def _candidates(matches, constraints):
@@ -58,7 +90,9 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
     """Find four-bars tracing a closed target curve: query an atlas, then refine from several starts.
 
     The best matches of `query` and their cognates give the starts, those satisfying the
-    constraints first (a rocker-crank relabelled with the motor at its fully turning link);
+    constraints first (a rocker-crank relabelled with the motor at its fully turning link),
+    with the best matches among the atlas rows that satisfy the constraints (searched apart,
+    so that a target whose nearest rows are all rockers still gets starts a motor drives);
     each of `starts` of them is refined by SLSQP under the constraints (`refine`). Then the
     best match and its cognates are refined without constraints, and the two best results,
     with their cognates, start constrained refinements too (the constrained optimum often
@@ -123,7 +157,18 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
     iterations = integer("iterations", iterations, minimum=1, maximum=10**6)
     constraints = Constraints() if constraints is None else constraints
     instance("constraints", constraints, Constraints)
-    matches = query(atlas, target, k=min(2 * starts, 64), shortlist=max(64, 2 * starts))
+    k, shortlist = min(2 * starts, 64), max(64, 2 * starts)
+    matches = query(atlas, target, k=k, shortlist=shortlist)
+    ranked = matches
+    if constraints != Constraints.none():
+        # the best matches are often rockers far from any linkage a motor drives: the rows
+        # that satisfy the constraints are searched on their own too, and give the first starts
+        feasible = _feasible(atlas, constraints)
+        if feasible is not None:
+            sub, rows = feasible
+            near = [dataclasses.replace(m, index=int(rows[m.index]))
+                    for m in query(sub, target, k=min(k, len(sub)), shortlist=min(shortlist, len(sub)))]
+            ranked = sorted([*near, *matches], key=lambda m: m.relative_error)
     z, _, scale = _curves(target, True, "target", scaled=True)
     t = _resample_rows(z, samples, True)[0]
     s = float(scale[0])
@@ -134,7 +179,7 @@ def find_linkages(atlas, target, *, starts=4, goal=None, samples=128, iterations
                    if r is not None and _placed_ok(r, rules)]
         return min(results, key=lambda r: r.relative_error) if results else None
 
-    for tried, (unit, m) in enumerate(_candidates(matches, constraints)):
+    for tried, (unit, m) in enumerate(_candidates(ranked, constraints)):
         if tried >= starts and (out or tried >= _TRIES * starts):
             break
         found = run(unit, m, constraints)

@@ -8,7 +8,7 @@ fractions of the length. Given `x`, the best similarity (place, turn, scale) of 
 the target is a linear least-squares problem solved in closed form, so the objective, the
 relative RMS error squared, is a smooth function of `x` evaluated for many `x` at once
 (vectorised over rows). SLSQP (SciPy) minimises it under the `Constraints`: the transmission
-inequalities (C2) of `mech.atlas._constraints`, the bound on the link ratio as linear
+inequalities (C2) of `mech.atlas._planar._constraints`, the bound on the link ratio as linear
 inequalities on the logarithms, and the pivot box on the placed pivots; its gradient is a
 forward difference of all coordinates in one vectorised evaluation.
 """
@@ -16,10 +16,10 @@ forward difference of all coordinates in one vectorised evaluation.
 import numpy as np
 
 from mech._validate import instance, integer
-from mech.atlas._constraints import Constraints, motor_at_crank, transmission_margins
-from mech.atlas._sampling import coupler_curves, describe
-from mech.atlas._search import Match, PlacedLinkage, _align, _fit, _match, _rescaled
-from mech.atlas._signature import _curves, _resample_rows, _samples
+from mech.atlas._planar._constraints import Constraints, motor_at_crank, transmission_margins
+from mech.atlas._planar._sampling import coupler_curves, describe
+from mech.atlas._planar._search import Match, PlacedLinkage, _align, _fit, _match, _rescaled
+from mech.atlas._planar._signature import _curves, _resample_rows, _samples
 
 __all__ = ["refine"]
 
@@ -52,7 +52,7 @@ def _rows(X, branch):
 def _columns(X, branch):
     """The columns `coupler_points` reads, and the movable rows, for rows of x (the inner loop:
     `describe` without the Grashof type and transmission angle, which it does not need)."""
-    from mech.atlas._sampling import _input_ranges
+    from mech.atlas._planar._sampling import _input_ranges
 
     a, b, c = np.exp(X[:, 0]), np.exp(X[:, 1]), np.exp(X[:, 2])
     one = np.ones_like(a)
@@ -88,7 +88,7 @@ def _closed_evaluator(t, branch, direction, dense_samples):
 
 def _open_evaluator(t, branch, direction, size):
     """Relative RMS error and placed pivots for rows of x = (log a, log b, log c, u, v, s_0, s_1)."""
-    from mech.atlas._arcs import _fit_tables, curve_tables
+    from mech.atlas._planar._arcs import _fit_tables, curve_tables
 
     centre = t.mean()
     tc = t - centre
@@ -241,7 +241,7 @@ def _refine_closed(unit, t, s, constraints, samples, iterations, rank, index, di
 def _open_start(match, unit, relabelled, size):
     """Direction and the two ends (fractions of the length) of the sub-arc of `unit`'s curve
     that the open `match` covers, from its placed points (nearest points of the table)."""
-    from mech.atlas._arcs import curve_tables
+    from mech.atlas._planar._arcs import curve_tables
 
     a, b, c, d, p, q, branch = unit
     row = describe([a], [b], [c], [d], [p], [q], [branch])
@@ -259,7 +259,7 @@ def _open_start(match, unit, relabelled, size):
 
 def _refine_open(match, t, s, constraints, iterations):
     """Refine an open match on the scaled open target `t` as an open arc (its ends free)."""
-    from mech.atlas._arcs import _TABLE, _fit_tables, _lerp, curve_tables
+    from mech.atlas._planar._arcs import _TABLE, _fit_tables, _lerp, curve_tables
 
     unit = _unit(match.linkage.fourbar)
     relabelled = False

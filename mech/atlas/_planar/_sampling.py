@@ -18,7 +18,7 @@ from mech._generated.grashof import grashof_margins
 from mech._generated.transmission_angle import fourbar_crank_angle_at_diagonal, fourbar_transmission
 from mech._validate import _show, branch_sign, integer, nonnegative_number
 from mech.atlas._records import _MAX_RATIO, _MAX_SEED, _box, _check_sizes, _Samples  # noqa: F401
-from mech.atlas._slider import slider_points
+from mech.atlas._planar._slider import slider_points
 from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["FourBarSamples", "sample_fourbars"]
@@ -139,7 +139,7 @@ def coupler_points(cols, u):
 
     ``u`` runs over [0, 2 pi) once around each closed curve: the input angle for a full
     turn, ``theta = mid + half * sin(u)`` on ``branch * sign(cos u)`` for a rocking input.
-    Columns with an offset ``e`` are slider-cranks (`mech.atlas._slider.slider_points`).
+    Columns with an offset ``e`` are slider-cranks (`mech.atlas._planar._slider.slider_points`).
     """
     if "e" in cols:
         return slider_points(cols, u)

@@ -14,13 +14,15 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from mech._validate import bool_flag, instance, integer, planar_points, real_number
-from mech.atlas._signature import _close_arc, _curves, _resample_rows, _samples, normal_form
-from mech.atlas._store import Atlas
+from mech.atlas._planar._signature import _close_arc, _curves, _resample_rows, normal_form
+from mech.atlas._planar._store import Atlas
 from mech.planar.kinematics._fourbar import FourBar
 
 __all__ = ["Match", "PlacedLinkage", "PlacedSliderCrank", "query"]
 
 _BLOCK = 1 << 15
+#: The index is used when the short list is below this fraction (1/_ANN_SHARE) of the atlas.
+_ANN_SHARE = 64
 _UPSAMPLE = 16
 _DENSE = 4
 _REFINE = 8
@@ -424,8 +426,12 @@ def _query_closed(atlas, z, k, shortlist, resampled):
             for rank, j in enumerate(np.argsort(np.where(np.isnan(w), np.inf, err), kind="stable")[:k])]
 
 
-def _nearest(atlas, candidates, m):
+def _nearest(atlas, candidates, m, exact=None):
     """Rows of the `m` signatures nearest any of the `candidates` (4, D), in no order.
+
+    Through the atlas's approximate index when one is stored with it (`exact` None) and the
+    short list is small beside the atlas; ``exact=True`` always streams every signature,
+    ``exact=False`` always uses the index (the recall measurements).
 
     The four normal forms of a curve have the same norm, so the nearest of them to a row is
     the one with the largest dot product: ``d^2 = |s|^2 + |c|^2 - 2 max_k s . c_k``. The
@@ -435,6 +441,14 @@ def _nearest(atlas, candidates, m):
     """
     sig, norms = atlas._signatures32
     c = np.ascontiguousarray(candidates, dtype=np.float32)
+    index = None if exact else atlas._ann
+    if index is not None and (exact is False or m < len(atlas) // _ANN_SHARE):
+        # the graph index gives the rows near any normal form; they are ranked exactly
+        rows = index.search(c, m)
+        if rows.size <= m:
+            return rows
+        score = norms[rows] - 2.0 * np.max(sig[rows] @ c.T, axis=1)
+        return rows[np.argpartition(score, m - 1)[:m]]
     score = np.empty(len(atlas), dtype=np.float32)
     for start in range(0, len(atlas), _BLOCK):
         block = slice(start, start + _BLOCK)
@@ -448,7 +462,7 @@ def _nearest(atlas, candidates, m):
 
 def _query_arc(atlas, z, k, shortlist, span, starts):
     """`query` for an open arc `z` (1, m): window signatures, then alignment of both ends."""
-    from mech.atlas._arcs import align_arcs
+    from mech.atlas._planar._arcs import align_arcs
 
     n = atlas.samples
     t = _resample_rows(z, n // 2 + 1, False)
@@ -486,7 +500,7 @@ def _arc_shortlist(atlas, closed, base, span, starts, m, second=False):
     each (with the fraction of a step towards the next) and the signature distance. With
     `second`, each row comes twice: from its best start and from its best start an eighth
     of a cycle or more away (`window_distances`)."""
-    from mech.atlas._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
+    from mech.atlas._planar._arcs import _WINDOW_TABLE, _truncate, arc_signatures, window_distances
 
     form = normal_form(closed, atlas.harmonics, base)
     sigs, norms, gaps = arc_signatures(atlas, span, starts, base)

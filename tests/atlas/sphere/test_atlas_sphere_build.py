@@ -8,7 +8,7 @@ import pytest
 pa = pytest.importorskip("pyarrow")
 import pyarrow.parquet as pq  # noqa: E402
 
-import mech.atlas._sphere_build as build_module  # noqa: E402
+import mech.atlas._sphere._build as build_module  # noqa: E402
 from mech.atlas import SPHERE_ATLAS_VERSION, SphereAtlas, build_atlas, build_sphere_atlas, sphere_signature  # noqa: E402
 
 SETTINGS = {"seed": 13, "block": 128, "harmonics": 6, "samples": 64}

@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 
 from mech._validate import integer
-from mech.atlas._sphere_sampling import SphereSamples, sphere_curves
-from mech.atlas._store import _CHUNK_KEY, _done_parts, _folder, _next_part, _read_parts, _table_columns
+from mech.atlas._parts import _CHUNK_KEY, _done_parts, _next_part, _read_parts, _table_columns
+from mech.atlas._sphere._sampling import SphereSamples, sphere_curves
 
 __all__ = ["SPHERE_ATLAS_VERSION", "SphereAtlas"]
 

@@ -19,7 +19,7 @@ from mech._generated.spherical_fourbar import spherical_fourbar_limit_theta, sph
 from mech._generated.spherical_types import spherical_type_slacks
 from mech._validate import _show, branch_sign, integer, nonnegative_number, real_tuple
 from mech.atlas._records import _MAX_SEED, _Samples
-from mech.atlas._sampling import KINDS
+from mech.atlas._planar._sampling import KINDS
 
 __all__ = ["SphereSamples", "sample_sphere_fourbars"]
 

@@ -9,9 +9,9 @@ directions of travel.
 
 import numpy as np
 
-from mech.atlas._sphere_sampling import sphere_points
-from mech.atlas._sphere_fit import _kabsch, _match, _radius, _rotation_gain
-from mech.atlas._sphere_signature import _interpolate, _resample_open, _signature_rows, _there_and_back
+from mech.atlas._sphere._sampling import sphere_points
+from mech.atlas._sphere._fit import _kabsch, _match, _radius, _rotation_gain
+from mech.atlas._sphere._signature import _interpolate, _resample_open, _signature_rows, _there_and_back
 
 __all__ = ["arc_signatures", "query_arc"]
 

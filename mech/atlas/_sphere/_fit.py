@@ -1,7 +1,7 @@
 """Fitting spherical coupler curves onto a target by a rotation of the sphere, and the match record.
 
-The closed-curve search (`mech.atlas._sphere_search`) and the open-arc search
-(`mech.atlas._sphere_arcs`) both turn curves onto the target with the rotations of this
+The closed-curve search (`mech.atlas._sphere._search`) and the open-arc search
+(`mech.atlas._sphere._arcs`) both turn curves onto the target with the rotations of this
 module (Kabsch's SVD solution of the orthogonal Procrustes problem, and Theobald's
 quaternion bound for many candidate starts at once) and report their results as
 `SphereMatch` records.

@@ -158,7 +158,7 @@ def motor_at_crank(a, b, c, d, p, q, branch):
     frame the new crank pivot is the old D, so the placement turns by pi about the ground's
     midpoint (``z' = d - z``). Any other linkage comes back as given, with False.
     """
-    from mech.atlas._sampling import _input_ranges
+    from mech.atlas._planar._sampling import _input_ranges
     from mech.planar.kinematics._fourbar import FourBar
 
     full_a = bool(_input_ranges(*(np.array([x]) for x in (a, b, c, d)), np.array([branch]))[0][0])

@@ -13,13 +13,13 @@ import uuid
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, nonnegative_number
-from mech.atlas._build import _blocks, _take_blocks, block_seed
+from mech.atlas._parts import _blocks, _folder, _take_blocks, block_seed
 from mech.atlas._records import _MAX_SEED
-from mech.atlas._signature import HARMONICS, SAMPLES
-from mech.atlas._sphere_sampling import ARCS, COUPLER_ARC, SphereSamples, sample_sphere_fourbars, sphere_curves
-from mech.atlas._sphere_signature import _resample_closed, _signature_rows
-from mech.atlas._sphere_store import (
-    _COLUMNS, SPHERE_ATLAS_VERSION, SphereAtlas, _folder, done_blocks, write_part,
+from mech.atlas._planar._signature import HARMONICS, SAMPLES
+from mech.atlas._sphere._sampling import ARCS, COUPLER_ARC, SphereSamples, sample_sphere_fourbars, sphere_curves
+from mech.atlas._sphere._signature import _resample_closed, _signature_rows
+from mech.atlas._sphere._store import (
+    _COLUMNS, SPHERE_ATLAS_VERSION, SphereAtlas, done_blocks, write_part,
 )
 
 __all__ = ["build_sphere_atlas"]

@@ -12,7 +12,7 @@ An open arc gets the signature of the closed curve that runs along it and back.
 import numpy as np
 
 from mech._validate import _show, bool_flag, integer, real_array
-from mech.atlas._signature import HARMONICS, SAMPLES
+from mech.atlas._planar._signature import HARMONICS, SAMPLES
 
 __all__ = ["sphere_signature"]
 
