@@ -299,7 +299,8 @@ class RSSR:
         strict = bool_flag("strict", strict)
         order, shape, (phi01, *rates) = motion_inputs("phi01", phi01, order, omega, alpha)
         if self._change is None and _backend.use_numba(phi01.size, _COMPILED_MIN_SIZE):
-            return RSSRPose(order, self._compiled_fields(phi01, rates, order, strict))
+            fields, spoiled = self._compiled_fields(phi01, rates, order, strict)
+            return RSSRPose(order, fields, finite=not spoiled)
         if phi01.size <= _BLOCK:
             return RSSRPose(order, self._solve_fields(phi01, rates, order, strict))
         # cache-sized blocks, each solved and checked whole, copied into outputs allocated
@@ -325,13 +326,13 @@ class RSSR:
         """The fields of `solve` by the compiled loop (`_rssr_compiled`): no change points."""
         from mech.spatial import _rssr_compiled     # imports numba: only when a solve uses it
 
-        fields = _rssr_compiled.solve_fields(self, phi01, rates, order)
+        fields, spoiled = _rssr_compiled.solve_fields(self, phi01, rates, order)
         if strict and not np.all(fields["valid"]):
             bad = float(np.asarray(phi01)[~np.asarray(fields["valid"])].ravel()[0])
             raise AssemblyError(f"Cannot assemble {self!r} at phi01 = {bad!r}")
         if order >= 1:
             mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
-        return fields
+        return fields, spoiled
 
     def _solve_fields(self, phi01, rates, order, strict):
         """The fields of `solve` at crank angles `phi01` (any shape), rates and masks done."""

@@ -38,7 +38,9 @@ _abc_accel = _jit(_abc.abc_accel)
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _loop(dims, coupler, sigma, scale, order, phi01, omega, alpha, phi03, valid, dead, pts, rates):
+def _loop(dims, coupler, sigma, scale, order, phi01, omega, alpha, phi03, valid, dead, pts, rates, w3s, a3s):
+    # `spoiled`: an assembled pose with a field that is not finite (overflow), for `Pose`'s check
+    spoiled = False
     l1, l2, l3, s0, s3, h0, lam = dims[0], dims[1], dims[2], dims[3], dims[4], dims[5], dims[6]
     p, q, u = coupler[0], coupler[1], coupler[2]
     straight = q == 0.0 and u == 0.0
@@ -63,30 +65,41 @@ def _loop(dims, coupler, sigma, scale, order, phi01, omega, alpha, phi03, valid,
             Px, Py, Pz = Bx + ratio * (Cx - Bx), By + ratio * (Cy - By), Bz + ratio * (Cz - Bz)
         else:
             Px, Py, Pz = _rssr_coupler_point(Bx, By, Bz, Cx, Cy, Cz, l2, lam, p, q, u)
-        pts[0, t], pts[1, t], pts[2, t] = Bx * scale, By * scale, Bz * scale
-        pts[3, t], pts[4, t], pts[5, t] = Cx * scale, Cy * scale, Cz * scale
-        pts[6, t], pts[7, t], pts[8, t] = Px * scale, Py * scale, Pz * scale
+        pts[0, t, 0], pts[0, t, 1], pts[0, t, 2] = Bx * scale, By * scale, Bz * scale
+        pts[1, t, 0], pts[1, t, 1], pts[1, t, 2] = Cx * scale, Cy * scale, Cz * scale
+        pts[2, t, 0], pts[2, t, 1], pts[2, t, 2] = Px * scale, Py * scale, Pz * scale
+        if ok and not spoiled:
+            for k in range(3):
+                spoiled |= not (np.isfinite(pts[0, t, k]) and np.isfinite(pts[1, t, k]) and np.isfinite(pts[2, t, k]))
         if order >= 1:
             w = omega[t]
             a = alpha[t] if order >= 2 else 0.0
             dA, dB, dC, ddA, ddB, ddC = _rssr_abc_rates(l1, l2, l3, s0, s3, h0, lam, phi, w, a)
             w3 = _abc_rate(dA, dB, dC, psi, root, sigma) if ok and not isdead else np.nan
-            rates[0, t] = w3
+            w3s[t] = w3
             v0, v1, v2, v3, v4, v5 = _rssr_velocity(l1, l3, lam, phi, psi, w, w3)
-            rates[1, t], rates[2, t], rates[3, t] = v0 * scale, v1 * scale, v2 * scale
-            rates[4, t], rates[5, t], rates[6, t] = v3 * scale, v4 * scale, v5 * scale
+            rates[0, t, 0], rates[0, t, 1], rates[0, t, 2] = v0 * scale, v1 * scale, v2 * scale
+            if ok and not spoiled:      # the crank pin's rates are not masked: check them here
+                spoiled |= not (np.isfinite(rates[0, t, 0]) and np.isfinite(rates[0, t, 1]))
+            rates[1, t, 0], rates[1, t, 1], rates[1, t, 2] = v3 * scale, v4 * scale, v5 * scale
             if order >= 2:
                 a3 = _abc_accel(C, dA, dB, ddA, ddB, ddC, psi, w3, root, sigma) if ok and not isdead else np.nan
-                rates[7, t] = a3
+                a3s[t] = a3
                 c0, c1, c2, c3, c4, c5 = _rssr_acceleration(l1, l3, lam, phi, psi, w, w3, a, a3)
-                rates[8, t], rates[9, t], rates[10, t] = c0 * scale, c1 * scale, c2 * scale
-                rates[11, t], rates[12, t], rates[13, t] = c3 * scale, c4 * scale, c5 * scale
+                rates[2, t, 0], rates[2, t, 1], rates[2, t, 2] = c0 * scale, c1 * scale, c2 * scale
+                if ok and not spoiled:
+                    spoiled |= not (np.isfinite(rates[2, t, 0]) and np.isfinite(rates[2, t, 1]))
+                rates[3, t, 0], rates[3, t, 1], rates[3, t, 2] = c3 * scale, c4 * scale, c5 * scale
+    return spoiled
 
 
 def solve_fields(rssr, phi01, rates, order):
-    """The fields of `RSSR._solve_fields` (before scaling checks and masks) by the loop.
+    """The fields of `RSSR._solve_fields` by the loop, before the masks of the rates.
 
-    Returns the fields dict with points and linear rates already in the user's unit.
+    Points and linear rates are in the user's unit. Also returns True if an assembled pose
+    has a position or a crank-pin rate that is not finite (a value beyond the float range):
+    only then must `mech._pose.Pose` look for such values (the rocker's rates are checked by
+    `mask_singular_rates`).
     """
     shape = phi01.shape
     n = phi01.size
@@ -94,20 +107,18 @@ def solve_fields(rssr, phi01, rates, order):
     w = np.ascontiguousarray(np.broadcast_to(rates[0], shape), dtype=float).reshape(n) if order >= 1 else flat
     a = np.ascontiguousarray(np.broadcast_to(rates[1], shape), dtype=float).reshape(n) if order >= 2 else flat
     phi03, valid, dead = np.empty(n), np.empty(n, bool), np.empty(n, bool)
-    pts = np.empty((9, n))
-    out_rates = np.empty((14 if order >= 2 else 7 if order >= 1 else 0, n))
-    _loop(np.array(rssr._unit, dtype=float), np.array(rssr._unit_coupler, dtype=float), float(rssr._branch),
-          float(rssr._scale), order, flat, w, a, phi03, valid, dead, pts, out_rates)
-
-    def vec(rows, first):
-        return np.ascontiguousarray(rows[first:first + 3].T).reshape(shape + (3,))
-
+    pts = np.empty((3, n, 3))
+    out_rates = np.empty((2 * order, n, 3))
+    w3, a3 = np.empty(n if order >= 1 else 0), np.empty(n if order >= 2 else 0)
+    spoiled = _loop(np.array(rssr._unit, dtype=float), np.array(rssr._unit_coupler, dtype=float), float(rssr._branch),
+          float(rssr._scale), order, flat, w, a, phi03, valid, dead, pts, out_rates, w3, a3)
+    vectors = shape + (3,)
     fields = {"phi01": phi01[()], "phi03": phi03.reshape(shape)[()], "valid": valid.reshape(shape)[()],
-              "B": vec(pts, 0), "C": vec(pts, 3), "P": vec(pts, 6)}
+              "B": pts[0].reshape(vectors), "C": pts[1].reshape(vectors), "P": pts[2].reshape(vectors)}
     if order >= 1:
-        fields["omega_output"] = out_rates[0].reshape(shape)[()]
-        fields["vB"], fields["vC"] = vec(out_rates, 1), vec(out_rates, 4)
+        fields["omega_output"] = w3.reshape(shape)[()]
+        fields["vB"], fields["vC"] = out_rates[0].reshape(vectors), out_rates[1].reshape(vectors)
     if order >= 2:
-        fields["alpha_output"] = out_rates[7].reshape(shape)[()]
-        fields["aB"], fields["aC"] = vec(out_rates, 8), vec(out_rates, 11)
-    return fields
+        fields["alpha_output"] = a3.reshape(shape)[()]
+        fields["aB"], fields["aC"] = out_rates[2].reshape(vectors), out_rates[3].reshape(vectors)
+    return fields, spoiled

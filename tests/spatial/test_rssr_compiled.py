@@ -120,3 +120,12 @@ def test_auto_uses_the_loop_from_its_threshold(backend, monkeypatch):
     assert not calls
     rssr.solve(np.zeros(5000))
     assert calls
+
+
+def test_rates_beyond_the_float_range_agree(backend):
+    """A crank rate of 1e300 on lengths near 1: the pin velocities overflow, as on NumPy."""
+    rssr = RSSR(1.0, 4.0, 2.0, 0.5, 0.8, 3.0, 1.0)
+    theta = np.linspace(-3.0, 3.0, 5000)
+    omega = np.where(np.arange(5000) % 7 == 0, 1e300, 1.0)
+    got = _agree(rssr, theta, 2, backend, omega=omega, alpha=1e300)
+    assert got.assembled.all() and not got.valid.all() and got.valid.any()
