@@ -87,14 +87,14 @@ def _loop(par, cols, order, q, qd, qdd, point, M, P, R):
         P[t, 0], P[t, 1], P[t, 2] = T[0, 3] + dx, T[1, 3] + dy, T[2, 3] + dz
         if order >= 1:
             cx, cy, cz = _cross(wx, wy, wz, dx, dy, dz)
-            R[t, 0], R[t, 1], R[t, 2] = vx + cx, vy + cy, vz + cz
-            R[t, 3], R[t, 4], R[t, 5] = wx, wy, wz
+            R[0, t, 0], R[0, t, 1], R[0, t, 2] = vx + cx, vy + cy, vz + cz
+            R[1, t, 0], R[1, t, 1], R[1, t, 2] = wx, wy, wz
         if order >= 2:
             cx, cy, cz = _cross(ex, ey, ez, dx, dy, dz)
             fx, fy, fz = _cross(wx, wy, wz, dx, dy, dz)
             gx, gy, gz = _cross(wx, wy, wz, fx, fy, fz)
-            R[t, 6], R[t, 7], R[t, 8] = ax + cx + gx, ay + cy + gy, az + cz + gz
-            R[t, 9], R[t, 10], R[t, 11] = ex, ey, ez
+            R[2, t, 0], R[2, t, 1], R[2, t, 2] = ax + cx + gx, ay + cy + gy, az + cz + gz
+            R[3, t, 0], R[3, t, 1], R[3, t, 2] = ex, ey, ez
 
 
 def _tables(chain):
@@ -126,12 +126,12 @@ def solve_fields(chain, q, qd, qdd, order, point, shape):
     qdf = flat(qd) if order >= 1 else qf
     qddf = flat(qdd) if order >= 2 else qf
     M, P = np.empty((n, 4, 4)), np.empty((n, 3))
-    R = np.empty((n, 12 if order >= 2 else 6 if order >= 1 else 0))
+    R = np.empty((2 * order, n, 3))
     _loop(tables[0], tables[1], order, qf, qdf, qddf, np.ascontiguousarray(point, dtype=float), M, P, R)
     M = M.reshape(shape + (4, 4))
     fields = {"M": M, "P": P.reshape(shape + (3,)),
               "e1": M[..., :3, 0], "e2": M[..., :3, 1], "e3": M[..., :3, 2]}
     names = ("vP", "omega", "aP", "alpha")[: 2 * order]
     for i, name in enumerate(names):
-        fields[name] = np.ascontiguousarray(R[:, 3 * i:3 * i + 3]).reshape(shape + (3,))
+        fields[name] = R[i].reshape(shape + (3,))
     return fields
