@@ -364,6 +364,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--only", choices=("linkage", "batch", "spatial"), help="measure one part")
+    parser.add_argument("--sizes", type=int, nargs="+", help="numbers of poses (default 10^3, 10^4, 10^6)")
     parser.add_argument("--rounds", type=int, default=ROUNDS)
     parser.add_argument("--calls", type=int, default=CALLS)
     parser.add_argument("--worker", nargs=3, help=argparse.SUPPRESS)
@@ -373,7 +374,7 @@ def main(argv=None):
         return 0
     log = lambda s: print(s, flush=True)  # noqa: E731
     log(f"load average at start: {os.getloadavg()}")
-    sizes = (10**3, 10**4) if args.quick else (10**3, 10**4, 10**6)
+    sizes = tuple(args.sizes) if args.sizes else (10**3, 10**4) if args.quick else (10**3, 10**4, 10**6)
     batch = 10**4 if args.quick else BATCH[0]
     planar = args.only in (None, "linkage")
     spatial = args.only in (None, "spatial")

@@ -27,8 +27,9 @@ _KINDS = {"R": 1, "P": 1, "C": 2, "H": 1}
 #: in cache (measured in benchmarks/bench_speed_linkage.py).
 _BLOCK = 4096
 #: The smallest solve that the backend ``"auto"`` hands to the compiled loop
-#: (`mech.spatial._chain_compiled`).
-_COMPILED_MIN_SIZE = 4096
+#: (`mech.spatial._chain_compiled`), as for the planar `Linkage`: at 10^3 poses the NumPy
+#: path cost 9 times a plain compiled loop (benchmarks/bench_compiled.py), the loop far less.
+_COMPILED_MIN_SIZE = 512
 
 
 @dataclass(frozen=True)

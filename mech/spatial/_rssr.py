@@ -28,9 +28,9 @@ _SOLVED_RATES = ("omega_output", "vC", "alpha_output", "aC")
 #: benchmarks/bench_speed_linkage.py).
 _BLOCK = 16384
 #: The smallest solve that the backend ``"auto"`` hands to the compiled loop
-#: (`mech.spatial._rssr_compiled`): the NumPy path makes about a hundred array operations
-#: per block, so the loop pays back numba's loading at a few thousand angles.
-_COMPILED_MIN_SIZE = 4096
+#: (`mech.spatial._rssr_compiled`), as for the planar `Linkage`: at 10^3 angles the NumPy
+#: path cost 6 times a plain compiled loop (benchmarks/bench_compiled.py), the loop far less.
+_COMPILED_MIN_SIZE = 512
 
 
 def _stack(*components):
