@@ -194,7 +194,9 @@ class OpenChain:
         Notes
         -----
         More than 4096 poses are solved in blocks of that many, each while its 4 x 4
-        products stay in the cache, with the same results.
+        products stay in the cache, with the same results. With numba installed, the backend
+        ``"auto"`` (from 512 poses) or ``"numba"`` solves them instead in one compiled loop
+        (`mech.spatial._chain_compiled`), within a few ulp of the NumPy path.
 
         Examples
         --------

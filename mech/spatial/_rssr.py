@@ -287,7 +287,9 @@ class RSSR:
         formulas run on the lengths and offsets divided by a power of two near the
         largest (`mech._scaling`): angles do not depend on the unit of length, and points
         and linear rates scale exactly with it. More than 16384 crank angles are solved in
-        blocks of that many, with the same results.
+        blocks of that many, with the same results. With numba installed, the backend
+        ``"auto"`` (from 512 angles) or ``"numba"`` solves a linkage without change points in
+        one compiled loop (`mech.spatial._rssr_compiled`), within a few ulp of NumPy.
 
         Examples
         --------
