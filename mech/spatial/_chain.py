@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mech import _backend
 from mech._errors import InputTypeError
 from mech._generated import open_chains as _gen
 from mech._pose import Pose
@@ -25,6 +26,10 @@ _KINDS = {"R": 1, "P": 1, "C": 2, "H": 1}
 #: Poses per block of a large solve: the block's 4 x 4 products and their temporaries stay
 #: in cache (measured in benchmarks/bench_speed_linkage.py).
 _BLOCK = 4096
+#: The smallest solve that the backend ``"auto"`` hands to the compiled loop
+#: (`mech.spatial._chain_compiled`), as for the planar `Linkage`: at 10^3 poses the NumPy
+#: path cost 9 times a plain compiled loop (benchmarks/bench_compiled.py), the loop far less.
+_COMPILED_MIN_SIZE = 512
 
 
 @dataclass(frozen=True)
@@ -189,7 +194,9 @@ class OpenChain:
         Notes
         -----
         More than 4096 poses are solved in blocks of that many, each while its 4 x 4
-        products stay in the cache, with the same results.
+        products stay in the cache, with the same results. With numba installed, the backend
+        ``"auto"`` (from 512 poses) or ``"numba"`` solves them instead in one compiled loop
+        (`mech.spatial._chain_compiled`), within a few ulp of the NumPy path.
 
         Examples
         --------
@@ -214,6 +221,10 @@ class OpenChain:
         if point.shape != (3,):
             raise ValueError(f"Expected `point` of shape (3,), got {point.shape}")
         size = math.prod(shape)
+        if _backend.use_numba(size, _COMPILED_MIN_SIZE):
+            from mech.spatial import _chain_compiled     # imports numba: only when a solve uses it
+
+            return ChainPose(order, _chain_compiled.solve_fields(self, q, qd, qdd, order, point, shape))
         if size <= _BLOCK:
             return ChainPose(order, self._solve_fields(q, qd, qdd, order, point, shape))
         # cache-sized blocks, each solved whole and copied into outputs allocated once: no

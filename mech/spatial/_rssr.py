@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from mech import _backend
 from mech._errors import AssemblyError
 from mech._generated import one_equation as _abc
 from mech._generated import rssr as _gen
@@ -26,6 +27,10 @@ _SOLVED_RATES = ("omega_output", "vC", "alpha_output", "aC")
 #: this length) stay in cache, and Python's cost per block vanishes (measured with
 #: benchmarks/bench_speed_linkage.py).
 _BLOCK = 16384
+#: The smallest solve that the backend ``"auto"`` hands to the compiled loop
+#: (`mech.spatial._rssr_compiled`), as for the planar `Linkage`: at 10^3 angles the NumPy
+#: path cost 6 times a plain compiled loop (benchmarks/bench_compiled.py), the loop far less.
+_COMPILED_MIN_SIZE = 512
 
 
 def _stack(*components):
@@ -282,7 +287,9 @@ class RSSR:
         formulas run on the lengths and offsets divided by a power of two near the
         largest (`mech._scaling`): angles do not depend on the unit of length, and points
         and linear rates scale exactly with it. More than 16384 crank angles are solved in
-        blocks of that many, with the same results.
+        blocks of that many, with the same results. With numba installed, the backend
+        ``"auto"`` (from 512 angles) or ``"numba"`` solves a linkage without change points in
+        one compiled loop (`mech.spatial._rssr_compiled`), within a few ulp of NumPy.
 
         Examples
         --------
@@ -293,6 +300,9 @@ class RSSR:
         """
         strict = bool_flag("strict", strict)
         order, shape, (phi01, *rates) = motion_inputs("phi01", phi01, order, omega, alpha)
+        if self._change is None and _backend.use_numba(phi01.size, _COMPILED_MIN_SIZE):
+            fields, spoiled = self._compiled_fields(phi01, rates, order, strict)
+            return RSSRPose(order, fields, finite=not spoiled)
         if phi01.size <= _BLOCK:
             return RSSRPose(order, self._solve_fields(phi01, rates, order, strict))
         # cache-sized blocks, each solved and checked whole, copied into outputs allocated
@@ -313,6 +323,18 @@ class RSSR:
             del out["assembled"]            # equal to `valid`, as one solve over all inputs reports it
         fields = {"phi01": phi01[()], **{name: value.reshape(shape + value.shape[1:]) for name, value in out.items()}}
         return RSSRPose(order, fields, finite=True)
+
+    def _compiled_fields(self, phi01, rates, order, strict):
+        """The fields of `solve` by the compiled loop (`_rssr_compiled`): no change points."""
+        from mech.spatial import _rssr_compiled     # imports numba: only when a solve uses it
+
+        fields, spoiled = _rssr_compiled.solve_fields(self, phi01, rates, order)
+        if strict and not np.all(fields["valid"]):
+            bad = float(np.asarray(phi01)[~np.asarray(fields["valid"])].ravel()[0])
+            raise AssemblyError(f"Cannot assemble {self!r} at phi01 = {bad!r}")
+        if order >= 1:
+            mask_singular_rates(fields, _SOLVED_RATES[: 2 * order])
+        return fields, spoiled
 
     def _solve_fields(self, phi01, rates, order, strict):
         """The fields of `solve` at crank angles `phi01` (any shape), rates and masks done."""

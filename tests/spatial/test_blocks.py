@@ -11,6 +11,7 @@ import math
 import numpy as np
 import pytest
 
+import mech
 from mech.spatial import _chain, _rssr
 from mech.spatial._chain import Joint, OpenChain, example_2_25_manipulator, example_2_25_pose
 from mech.spatial._rssr import RSSR
@@ -22,6 +23,10 @@ BLOCK = 1000
 def small_blocks(monkeypatch):
     monkeypatch.setattr(_rssr, "_BLOCK", BLOCK)
     monkeypatch.setattr(_chain, "_BLOCK", BLOCK)
+    # blocks belong to the NumPy path (the compiled loops solve every input in one pass)
+    previous = mech.set_backend("numpy")
+    yield
+    mech.set_backend(previous)
 
 
 def _assert_identical(got, want):
