@@ -69,7 +69,7 @@ def trig_zero(expr):
         p = sm.Poly(poly_expr, *gens)
     except sm.PolynomialError:
         return False
-    if not (p.domain.is_ZZ or p.domain.is_QQ):   # a coefficient that is not a rational number
+    if p.domain not in (sm.ZZ, sm.QQ, sm.ZZ_I, sm.QQ_I):   # exact rational or Gaussian coefficients only
         return False
     circles = [sm.Poly(ci**2 + si**2 - 1, *gens) for ci, si in zip(c, s)]
     _, rem = sm.reduced(p, circles, *gens, order="lex")

@@ -17,6 +17,7 @@ x, y, a = sm.symbols("x y a", real=True)
     1 / sm.cos(a) - sm.cos(a) - sm.sin(a) * sm.tan(a),
     sm.tan(x) ** 2 + 1 - sm.sec(x) ** 2,
     (sm.cos(x) ** 4 - sm.sin(x) ** 4) - sm.cos(2 * x),
+    sm.expand_complex(sm.exp(sm.I * x) * sm.exp(sm.I * y) - sm.exp(sm.I * (x + y))),
     sm.cos(a) / (sm.sin(x) ** 2 + sm.cos(a) ** 2 * sm.cos(x) ** 2)
     - sm.cos(a) / (1 - sm.sin(a) ** 2 * sm.cos(x) ** 2),
 ])
@@ -29,6 +30,7 @@ def test_true_identities_are_proved_by_the_cheap_route(expr):
     sm.sin(x) ** 2 + sm.cos(x) ** 2 - 1 + sm.Rational(1, 10**30),
     sm.sin(2 * x) - 2 * sm.sin(x) * sm.cos(y),
     sm.tan(x) - sm.sin(x),
+    sm.expand_complex(sm.exp(sm.I * x) - sm.cos(x) + sm.I * sm.sin(x)),
     sm.cos(x / 2) ** 2 - (1 + sm.cos(x)) / 2 + x,
     1.0000001 * (sm.sin(x) ** 2 + sm.cos(x) ** 2) - 1,
 ])
