@@ -15,8 +15,10 @@ checkout passed on the same code, generator, generated modules and imported proj
 
 Each notebook's code cells are run in order in a fresh namespace, without a Jupyter kernel;
 the notebook's own asserts (its proofs) and its final ``_codegen.write`` call do the work.
-A full run takes about 20 minutes on a quiet two-core machine: name the notebooks you
-changed to regenerate only those.
+A full run costs about four minutes of CPU time (each notebook alone, measured under load:
+the 34 notebooks measured before and after the cheaper identity proofs of ``_zero.py`` went
+from 309 to about 230 CPU seconds), so about that long on a quiet machine: name the notebooks
+you changed to regenerate only those.
 """
 
 import argparse

@@ -61,8 +61,8 @@ def _code_hash(path):
     return _sha("\n\x00\n".join(code_cells(path)).encode())
 
 
-# the runner and this bookkeeping do not shape what a notebook writes
-NOT_GENERATOR = ("__main__.py", "_manifest.py")
+# the runner, this bookkeeping and the proof helper do not shape what a notebook writes
+NOT_GENERATOR = ("__main__.py", "_manifest.py", "_zero.py")
 
 
 def _generator_hash():
