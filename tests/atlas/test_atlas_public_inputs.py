@@ -14,10 +14,14 @@ CASES = {}
 RECORDS = {}
 
 
+# The small atlases (and their folders) are built once per process: every bad value of
+# every slot called a fresh build (seeded, so the same atlas), most of this walk's time.
+@functools.lru_cache(maxsize=None)
 def _small_atlas():
     return at.build_atlas(40, seed=1)
 
 
+@functools.lru_cache(maxsize=None)
 def _atlas_dir():
     import tempfile
 
@@ -55,10 +59,12 @@ _SQUARE = [0, 1, 1 + 1j, 1j]
 _SPHERE_CURVE = [[0.6, 0.0, 0.8], [0.0, 0.6, 0.8], [-0.6, 0.0, 0.8], [0.0, -0.5, 0.8], [0.3, -0.3, 0.9]]
 
 
+@functools.lru_cache(maxsize=None)
 def _small_slider_atlas():
     return at.build_atlas(40, seed=1, mechanism="slider-crank")
 
 
+@functools.lru_cache(maxsize=None)
 def _small_sphere_atlas():
     return at.build_sphere_atlas(8, seed=1, harmonics=3, samples=16)
 
@@ -67,6 +73,7 @@ def _sphere_match():
     return at.query_sphere(_small_sphere_atlas(), _SPHERE_CURVE, k=1, shortlist=4)[0]
 
 
+@functools.lru_cache(maxsize=None)
 def _sphere_atlas_dir():
     import tempfile
 

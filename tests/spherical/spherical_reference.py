@@ -95,8 +95,15 @@ def rates(lk, theta, omega, alpha):
         th0, w, al = (mpmath.mpf(float(x)) for x in (theta, omega, alpha))
         psi0 = _points(lk, th0)["psi"]
 
+        # mpmath.diff asks for the same few steps (at its own working precision) once per
+        # component differentiated: each pose is built once and shared
+        poses = {}
+
         def at(t):
-            return _points(lk, th0 + w * t + al * t * t / 2)
+            key = (t, mpmath.mp.prec)
+            if key not in poses:
+                poses[key] = _points(lk, th0 + w * t + al * t * t / 2)
+            return poses[key]
 
         def psi(t):                       # unwrapped about psi0
             return psi0 + mpmath.atan2(mpmath.sin(at(t)["psi"] - psi0), mpmath.cos(at(t)["psi"] - psi0))

@@ -131,6 +131,17 @@ def _sx_start():
     return [d for d in sph.guidance_watt2(R, theta, [0.3, -0.2, 0.93], sweep=41) if d.passes][1]
 
 
+_KEPT = {}
+
+
+def _kept(build):
+    """The design built by `build`, built once per process (keyed by its code: each factory
+    below builds one fixed design, and rebuilding it for every bad value took most of the walk)."""
+    if build.__code__ not in _KEPT:
+        _KEPT[build.__code__] = build()
+    return _KEPT[build.__code__]
+
+
 CASES.update({
     "spherical.sixbar_orientations": E(lambda: sph.sixbar_orientations, {"linkage": "instance", "theta": "real"},
                                        linkage=_sx_watt2()[0], theta=[0.1, 0.4]),
@@ -140,15 +151,15 @@ CASES.update({
                                   R=sph.sixbar_orientations(*_sx_watt2()), theta=_sx_watt2()[1],
                                   crank_pivot=[0.0, 0.0, 1.0], dyads=None, crank_tip=None, rtol=1e-9, sweep=41),
     "spherical.SphericalGuidanceSixBar.guided_orientations": E(
-        lambda: sph.guidance_watt2(sph.sixbar_orientations(*_sx_watt2()), _sx_watt2()[1],
-                                   [0.0, 0.0, 1.0], sweep=41)[0].guided_orientations,
+        lambda: _kept(lambda: sph.guidance_watt2(sph.sixbar_orientations(*_sx_watt2()), _sx_watt2()[1],
+                                                 [0.0, 0.0, 1.0], sweep=41)[0]).guided_orientations,
         {"theta": "real"}, theta=[0.2, 0.5]),
     "spherical.optimal_guidance_watt2": E(lambda: sph.optimal_guidance_watt2,
                                           {"R": "matrix", "theta": "real", "start": "instance", "rtol": "scalar",
                                            "sweep": "count"},
                                           R=_sx_nine()[0], theta=_sx_nine()[1], start=_sx_start(), rtol=1e-2, sweep=41),
     "spherical.SphericalOptimalSixBar.guided_orientations": E(
-        lambda: sph.optimal_guidance_watt2(*_sx_nine(), _sx_start(), sweep=41).guided_orientations,
+        lambda: _kept(lambda: sph.optimal_guidance_watt2(*_sx_nine(), _sx_start(), sweep=41)).guided_orientations,
         {"theta": "real"}, theta=[0.2, 0.5]),
 })
 
@@ -233,7 +244,8 @@ CASES.update({
                                                 R=_s3_task()[0], theta=_s3_task()[1], start=_s3_start(), rtol=1e-2,
                                                 sweep=41),
     "spherical.SphericalOptimalStephenson3.guided_orientations": E(
-        lambda: sph.optimal_guidance_stephenson3(*_s3_task(), _s3_start(), sweep=41).guided_orientations,
+        lambda: _kept(lambda: sph.optimal_guidance_stephenson3(*_s3_task(), _s3_start(), sweep=41))
+        .guided_orientations,
         {"theta": "real"}, theta=[0.2, 0.5]),
 })
 RECORDS["spherical.SphericalOptimalStephenson3"] = "result record built by the package"
