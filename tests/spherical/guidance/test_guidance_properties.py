@@ -255,7 +255,9 @@ def test_real_count_matches_high_precision_solve():
     assert not _count_sweep(12, 8, seed=2024)
 
 
-@pytest.mark.slow
+# an acceptance sweep of many minutes (403 s under load): `make test-exhaustive` runs it;
+# `make test` keeps the 20 sets of the test above
+@pytest.mark.exhaustive
 def test_real_count_matches_high_precision_solve_sweep():
     wrong = _count_sweep(200, 50, seed=24)
     assert not wrong, wrong
