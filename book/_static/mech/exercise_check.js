@@ -29,6 +29,8 @@ export function parseAnswer(rules, text, unit) {
   if (!m) return bad;
   if (m[2] !== "" && "0123456789.,+-\u2212".includes(m[2][0])) return bad;
   const value = Number(m[1].replace("\u2212", "-"));
+  // "1e400" reads as Infinity: refused, as check refuses it
+  if (!Number.isFinite(value)) return { why: `Expected \`text\` to be a finite number, got ${pyRepr(text)}` };
   const spelt = unitKey(rules.units, m[2]);
   if (spelt === null) {
     return { why: "Expected `text` in a known unit (deg, rad, mm, m, N, N m, N mm, m/s, m/s^2, rad/s, rpm ...), " +
