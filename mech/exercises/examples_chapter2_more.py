@@ -58,7 +58,7 @@ def _off_axis(rng):
 def _near(name, z, scale):
     """``z`` (complex), or ValueError when the centre is at infinity or nearly so."""
     if z is None or not math.isfinite(abs(z)) or abs(z) > _FAR * scale:
-        raise ValueError(f"Expected the instant centre {name} at a finite place, got it at or near infinity")
+        raise ValueError(f"Expected the givens to place the instant centre `{name}` at a finite point, got it at or near infinity")
     return z
 
 
@@ -196,8 +196,8 @@ def _solve_e2_14(p):
     lo, hi = 1e-6 * l, (1.0 - 1e-6) * l
     ends = locked(np.array([lo, hi]))
     if not ends[0] or ends[1]:
-        raise ValueError(f"Expected slider 3 to lock near x = 0 and run near x = l, got l={l!r}, r={r!r}, "
-                         f"mu0={mu0!r}, mu={mu!r}")
+        raise ValueError(f"Expected slider 3 to lock near x = 0 and run near x = l, got `l` = {l!r}, `r` = {r!r}, "
+                         f"`mu0` = {mu0!r}, `mu` = {mu!r}")
     for _ in range(8):                     # 64 solves at once per round: the bracket shrinks 64-fold
         x = np.linspace(lo, hi, 65)
         k = int(np.flatnonzero(locked(x))[-1])     # the verdict flips once, from locked to free
