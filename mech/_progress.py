@@ -1,10 +1,11 @@
 """The progress bar of a long run: tqdm when asked for, a stand-in that does nothing otherwise.
 
 tqdm is imported only when a bar is asked for, so a search or an atlas build runs without it.
-The bar is written to standard output, never standard error (with ``-W`` any standard error
-of a page fails the book build). In a terminal the bar is redrawn in place and removed at the
-end; in a Jupyter kernel (a book page) every redraw stays in the cell's output, so there it is
-redrawn at most once a second and its final state is kept.
+In a terminal the bar goes to standard error, as a command line's bars do (standard output
+stays for results), is redrawn in place and removed at the end. In a Jupyter kernel (a book
+page) it goes to standard output, since any standard error of a page fails the strict book
+build, and every redraw stays in the cell's output: there it is redrawn at most once a second
+and its final state is kept.
 """
 
 import sys
@@ -36,5 +37,6 @@ def progress_bar(enabled, total, initial=0, desc=None, unit="it"):
     from tqdm import tqdm
 
     in_kernel = "ipykernel" in sys.modules
-    return tqdm(total=total, initial=initial, desc=desc, unit=unit, file=sys.stdout, leave=in_kernel,
+    return tqdm(total=total, initial=initial, desc=desc, unit=unit, leave=in_kernel,
+                file=sys.stdout if in_kernel else sys.stderr,
                 mininterval=1.0 if in_kernel else 0.1)

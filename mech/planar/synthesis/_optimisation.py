@@ -12,7 +12,7 @@ Three solvers work on it side by side:
 
 The two searches of this module can save their state to a checkpoint file (``.npz``) and
 resume from it with the same result as an uninterrupted run; they show a progress bar (tqdm,
-written to standard output) on request.
+written by `mech._progress`) on request.
 """
 
 import os
@@ -256,7 +256,8 @@ def grid_search(model, *, points=11, levels=40, shrink=0.5, max_points=1_000_000
     max_points : int
         Largest allowed ``points ** n``.
     progress : bool
-        Show a progress bar over the levels (on standard output).
+        Show a progress bar over the levels (`mech._progress`: standard error in a terminal,
+        standard output in a Jupyter kernel).
     checkpoint : str or path, optional
         File (``.npz``) for the search state, written after every ``every`` levels. If it
         exists, the search resumes from it; the result is the same as without interruption.
