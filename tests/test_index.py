@@ -298,21 +298,43 @@ def test_cli_bare_number():
     assert "book/_build/html/forces/friction.html" in done.stdout
 
 
-def test_cli_kinds_and_errors():
-    done = _cli("exercise", "2-27")
+@pytest.fixture
+def cli(index, monkeypatch, capsys):
+    """The command line run in this process on the module's index (each `python -m mech.index`
+    harvests the repository again, about 5 s; `test_cli_bare_number` runs the real command)."""
+    import types
+
+    from mech.index import __main__ as command
+
+    real = command.build_index
+    monkeypatch.setattr(command, "build_index", lambda root=None: index if root is None else real(root))
+
+    def run(*args):
+        try:
+            code = command.main(list(args))
+        except SystemExit as exit_:                 # argparse's own errors
+            code = exit_.code
+        out, err = capsys.readouterr()
+        return types.SimpleNamespace(returncode=code, stdout=out, stderr=err)
+
+    return run
+
+
+def test_cli_kinds_and_errors(cli):
+    done = cli("exercise", "2-27")
     assert done.returncode == 0 and 'mech.exercises.get("2-27")' in done.stdout
-    done = _cli("fig", "2-124")
+    done = cli("fig", "2-124")
     assert "not yet covered" in done.stdout and "why:" in done.stdout
-    done = _cli("fig", "2-999")
+    done = cli("fig", "2-999")
     assert done.returncode == 1 and "No entry" in done.stderr
-    done = _cli("bolt", "2-3")
+    done = cli("bolt", "2-3")
     assert done.returncode == 2 and "to name a kind" in done.stderr
-    done = _cli("2-19", "--root", "/")
+    done = cli("2-19", "--root", "/")
     assert done.returncode == 2 and "installed wheel" in done.stderr
 
 
-def test_cli_summary_and_missing():
-    done = _cli("--summary", "--missing")
+def test_cli_summary_and_missing(cli):
+    done = cli("--summary", "--missing")
     assert done.returncode == 0, done.stderr
     assert "NO REASON GIVEN" not in done.stdout
     lines = done.stdout.splitlines()

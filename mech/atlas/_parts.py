@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from mech._progress import progress_bar
 from mech._validate import _show, bool_flag
 
 __all__ = []
@@ -200,20 +201,6 @@ def _fingerprint(atlas):
     return digest.hexdigest()
 
 
-class _NoBar:
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return False
-
-    def update(self, n=1):
-        pass
-
-
 def _bar(progress, total, initial=0):
-    if not progress:
-        return _NoBar()
-    from tqdm.auto import tqdm
-
-    return tqdm(total=total, initial=initial, desc="atlas", unit="linkage")
+    """A bar of the linkages built (`mech._progress.progress_bar`)."""
+    return progress_bar(progress, total, initial, desc="atlas", unit="linkage")

@@ -12,15 +12,15 @@ Three solvers work on it side by side:
 
 The two searches of this module can save their state to a checkpoint file (``.npz``) and
 resume from it with the same result as an uninterrupted run; they show a progress bar (tqdm,
-written to standard output) on request.
+written by `mech._progress`) on request.
 """
 
 import os
-import sys
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from mech._progress import progress_bar
 from mech._validate import bool_flag, finite_array, nonnegative_int, real_number
 
 __all__ = ["DesignModel", "OptimisationResult", "grid_search", "scipy_minimize"]
@@ -202,32 +202,9 @@ def _result(model, x, evaluations, history, method, message):
                               np.array(history, dtype=float).reshape(-1, 2), method, message, model.names)
 
 
-class _NoBar:
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return False
-
-    def update(self, n=1):
-        pass
-
-
 def _bar(progress, total, initial, desc):
-    """A tqdm bar on standard output (never standard error, which fails a book build).
-
-    tqdm is imported only when a bar is asked for, so the searches run without it. In a
-    terminal the bar is redrawn in place and removed at the end. In a Jupyter kernel (a book
-    page) every redraw is kept in the cell's output, so the bar is redrawn at most once a
-    second and its final state is left in place.
-    """
-    if not progress:
-        return _NoBar()
-    from tqdm import tqdm
-
-    in_kernel = "ipykernel" in sys.modules
-    return tqdm(total=total, initial=initial, desc=desc, file=sys.stdout, leave=in_kernel,
-                mininterval=1.0 if in_kernel else 0.1)
+    """A bar of the search's steps (`mech._progress.progress_bar`)."""
+    return progress_bar(progress, total, initial, desc)
 
 
 def _load(checkpoint, kind, fingerprint):
@@ -279,7 +256,8 @@ def grid_search(model, *, points=11, levels=40, shrink=0.5, max_points=1_000_000
     max_points : int
         Largest allowed ``points ** n``.
     progress : bool
-        Show a progress bar over the levels (on standard output).
+        Show a progress bar over the levels (`mech._progress`: standard error in a terminal,
+        standard output in a Jupyter kernel).
     checkpoint : str or path, optional
         File (``.npz``) for the search state, written after every ``every`` levels. If it
         exists, the search resumes from it; the result is the same as without interruption.

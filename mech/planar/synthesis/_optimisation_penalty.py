@@ -83,7 +83,8 @@ def penalty_method(model, x0, *, r0=None, factor=0.3, stages=12, iterations=2000
         A stage ends when the simplex values differ by at most ``ftol * (1 + |phi|)`` and its
         vertices by at most ``xtol`` times the box width (the text's stopping tests, F41).
     progress : bool
-        Progress bar over the iterations (on standard output).
+        Progress bar over the iterations (`mech._progress`: standard error in a terminal,
+        standard output in a Jupyter kernel).
     checkpoint : str or path, optional
         File (``.npz``) for the search state, written every ``every`` iterations and at the
         end of every stage; an existing file is resumed, with the same result as an
