@@ -99,6 +99,23 @@ def _is_int(value):
     return isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_, *_TIME))
 
 
+def _scalar_int(value):
+    """A 0-d integer array as the integer it holds (NumPy itself takes one as a count:
+    ``np.zeros(np.array(3))``, ``range(np.array(3))``); any other value unchanged."""
+    if (isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iu"
+            and not np.ma.is_masked(value)):
+        return value.item()
+    return value
+
+
+def _int_text(value):
+    """The value for an integer's error message; a 0-d array is said to be one, so that
+    ``np.array(2.0)`` does not read as the float ``2.0``."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        return f"a 0-d array {_show(value)}"
+    return _show(value)
+
+
 def _has_masked(value):
     """True if ``value``, or an array inside nested lists and tuples, has a masked entry."""
     if isinstance(value, np.ma.MaskedArray):
@@ -353,9 +370,10 @@ def branch_sign(value, name="branch"):
 
 
 def nonnegative_int(name, value, maximum):
-    """Return ``value`` as an int in ``[0, maximum]``."""
+    """Return ``value`` as an int in ``[0, maximum]`` (a 0-d integer array counts as its integer)."""
+    value = _scalar_int(value)
     if not _is_int(value):
-        raise InputTypeError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
+        raise InputTypeError(f"Expected `{name}` to be an integer in [0, {maximum}], got {_int_text(value)}")
     if not 0 <= value <= maximum:
         raise ValueError(f"Expected `{name}` to be an integer in [0, {maximum}], got {value!r}")
     return int(value)
@@ -371,14 +389,16 @@ def bool_flag(name, value):
 def integer(name, value, *, minimum=None, maximum=None):
     """Return ``value`` as an int after checking its type and the bounds given.
 
-    Accepts Python and NumPy integers only: booleans, floats (even ``2.0``), strings and
-    other objects raise :class:`~mech.InputTypeError`; a value out of bounds raises
-    ``ValueError``.
+    Accepts Python and NumPy integers only, and a 0-d integer array as the integer it holds
+    (as NumPy does for a count: ``np.zeros(np.array(3))``): booleans, floats (even ``2.0``),
+    strings and other objects raise :class:`~mech.InputTypeError`; a value out of bounds
+    raises ``ValueError``.
     """
+    value = _scalar_int(value)
     bounds = {(None, None): "", (None, maximum): f" <= {maximum}", (minimum, None): f" >= {minimum}"}.get(
         (minimum, maximum), f" in [{minimum}, {maximum}]")
     if not _is_int(value):
-        raise InputTypeError(f"Expected `{name}` to be an integer{bounds}, got {_show(value)}")
+        raise InputTypeError(f"Expected `{name}` to be an integer{bounds}, got {_int_text(value)}")
     if (minimum is not None and value < minimum) or (maximum is not None and value > maximum):
         raise ValueError(f"Expected `{name}` to be an integer{bounds}, got {value!r}")
     return int(value)

@@ -207,6 +207,32 @@ def test_integer_message_shows_the_users_entries():
         sph.chebyshev_spacing(0.0, 1.0, [1.0, 2j])
 
 
+def test_zero_d_integer_array_is_a_count():
+    """A 0-d integer array is taken as its integer, as NumPy takes ``np.zeros(np.array(3))``
+    (issue 24); a 0-d array of any other type is refused and said to be one, so that
+    ``np.array(16.0)`` is not shown as if the float 16.0 had been passed."""
+    from mech._validate import integer, nonnegative_int
+
+    assert np.zeros(np.array(3)).shape == (3,)                       # NumPy's own rule
+    for count in (np.array(16), np.array(16, dtype=np.uint8), np.array(16, dtype=np.int32)):
+        assert integer("samples", count, minimum=2) == 16 and type(integer("samples", count)) is int
+        assert nonnegative_int("samples", count, 100) == 16
+    by_int = sy.crank_rocker_family(1.25, 1, 0.5, samples=16)
+    by_array = sy.crank_rocker_family(1.25, 1, 0.5, samples=np.array(16))
+    np.testing.assert_array_equal(by_array.intervals, by_int.intervals)
+    np.testing.assert_array_equal(by_array.min_transmission, by_int.min_transmission)
+    for bad, shown in ((np.array(16.0), "a 0-d array 16.0"), (np.array(True), "a 0-d array True"),
+                       (np.ma.array(16, mask=True), "a 0-d array")):
+        with pytest.raises(mech.InputTypeError, match=f"Expected `samples` to be an integer.*got {shown}"):
+            integer("samples", bad, minimum=2)
+        with pytest.raises(mech.InputTypeError, match=f"got {shown}"):
+            nonnegative_int("samples", bad, 100)
+    with pytest.raises(ValueError, match=r"Expected `samples` to be an integer >= 2, got 1$"):
+        integer("samples", np.array(1), minimum=2)
+    with pytest.raises(mech.InputTypeError, match=r"got \[16\]"):   # one entry is not a count
+        integer("samples", np.array([16]))
+
+
 def _motion_calls():
     """Solvers of a driver angle with rates, each as ``call(theta, omega, alpha)``."""
     fb = pl.FourBar(10, 40, 30, 35)

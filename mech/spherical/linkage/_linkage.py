@@ -514,9 +514,14 @@ class SphericalLinkage:
             m = int(round(2048 * period / (2 * np.pi)))
             grid = np.arange(m) * (period / m)
             rho = self._radicand_of(grid, (period, points), k)
+            # the radicand scales with the arcs (about their fourth power on a small cap):
+            # a change point is a zero relative to its own size over the turn, so a small
+            # linkage whose branches never meet is not given change points
+            size = float(np.nanmax(np.abs(rho))) if np.any(np.isfinite(rho)) else 1.0
+            size = size if size > 0.0 else 1.0
             left, right = np.roll(rho, 1), np.roll(rho, -1)
             candidates = np.flatnonzero((rho <= left) & (rho <= right) & (left > 0) & (right > 0)
-                                        & (rho >= -_CHANGE_TOL) & (rho < 1e-2))
+                                        & (rho >= -_CHANGE_TOL * size) & (rho < 1e-2 * size))
             found = []
             for i in candidates:
                 lo, hi = grid[i] - period / m, grid[i] + period / m
@@ -533,7 +538,7 @@ class SphericalLinkage:
                         x2 = lo + golden * (hi - lo)
                         f2 = f(x2)
                 t, v = (x1, f1) if f1 <= f2 else (x2, f2)
-                if abs(v) <= _CHANGE_TOL:
+                if abs(v) <= _CHANGE_TOL * size:
                     # the minimum of rho is flat (rho ~ c (t - t0)^2); the signed root
                     # +-sqrt(rho) is smooth through t0, so fit it across and take its zero
                     x = np.array([-3.0, -2.0, -1.0, 1.0, 2.0, 3.0]) * 1e-3

@@ -267,3 +267,18 @@ def test_no_jump_through_change_points_at_1e5_steps(arcs):
     th = np.linspace(-2 * np.pi, 2 * np.pi, 100_001)
     pose = lk.solve(th, order=1)
     _assert_no_jump(pose, th)
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-2, 1e-3])
+def test_change_points_do_not_depend_on_the_cap(scale):
+    """A small linkage keeps the change points of its shape (issue 24): the radicand of a
+    dyad shrinks with about the fourth power of the arcs, and an absolute threshold gave a
+    crank-rocker on a 1e-3 cap change points at 0 and pi, so the solver jumped branches."""
+    def fourbar(a, b, c, d):
+        A, D = np.array([0.0, 0.0, 1.0]), np.array([np.sin(d), 0.0, np.cos(d)])
+        return (SphericalLinkage({"A": A, "D": D}).crank("AB", pivot="A", tip="B", arc=a, reference="D")
+                .rrr(("BC", "DC"), pins=("B", "D"), joint="C", arcs=(b, c)))
+    rocker = fourbar(*(scale * np.array([0.3, 0.9, 0.7, 1.0])))
+    assert rocker.change_points[1][0].size == 0
+    isogram = fourbar(*(scale * np.array([0.3, 1.0, 0.3, 1.0])))          # s + l = p + q: two per turn
+    assert isogram.change_points[1][0].size == 2
