@@ -289,8 +289,18 @@ def _sweep(kind, n_random, n_near, seed):
     return passing, wrong
 
 
+# Open defects of issue 24, found by this sweep and not yet fixed: kept visible as expected
+# failures, so that `make test-exhaustive` reports them and reports a fix (XPASS).
+_OPEN = {
+    "watt2": "random set 104: design 18 passes, but its lengths rebuild E and G 7e-7 from its first pose",
+    "stephenson3": "random set 7 does not close at a crank turn of 0.836 (a missed dead point?); "
+                   "near-planar set 3 misses H by 1.13e-8 of its displacement (an absolute 1e-9 rad pass test)",
+}
+
+
 @pytest.mark.exhaustive
-@pytest.mark.parametrize("kind", list(DESIGN))
+@pytest.mark.parametrize("kind", [pytest.param(k, marks=pytest.mark.xfail(reason=_OPEN[k], strict=False))
+                                  if k in _OPEN else k for k in DESIGN])
 def test_sixbar_guidance_sweep(kind):
     passing, wrong = _sweep(kind, 200, 50, seed=24)
     assert passing >= 200
