@@ -24,6 +24,13 @@ class _NoBar:
         pass
 
 
+def _in_kernel():
+    """Whether this code runs in a Jupyter kernel: ipykernel loaded and an IPython shell active
+    (a test run may have imported ipykernel without being a kernel)."""
+    ipython = sys.modules.get("IPython")
+    return "ipykernel" in sys.modules and ipython is not None and ipython.get_ipython() is not None
+
+
 def progress_bar(enabled, total, initial=0, desc=None, unit="it"):
     """A context manager with ``update(n)``: a tqdm bar of `total` steps if `enabled`.
 
@@ -36,7 +43,7 @@ def progress_bar(enabled, total, initial=0, desc=None, unit="it"):
         return _NoBar()
     from tqdm import tqdm
 
-    in_kernel = "ipykernel" in sys.modules
+    in_kernel = _in_kernel()
     return tqdm(total=total, initial=initial, desc=desc, unit=unit, leave=in_kernel,
                 file=sys.stdout if in_kernel else sys.stderr,
                 mininterval=1.0 if in_kernel else 0.1)
